@@ -1,0 +1,28 @@
+//! The categories, one module per family. `ALL` is the registry, in a stable order.
+
+mod containers;
+mod furniture;
+mod industrial;
+mod kit;
+mod robot_bases;
+mod storage;
+
+use crate::Category;
+
+pub(crate) static ALL: &[Category] = &[
+    furniture::TABLE,
+    containers::CARDBOARD_BOX,
+    furniture::WORKBENCH,
+    storage::SHELF,
+    storage::PALLET_RACK,
+    containers::CRATE,
+    containers::BIN,
+    containers::PALLET,
+    industrial::CONVEYOR,
+    storage::CABINET,
+    industrial::ELECTRICAL_PANEL,
+    furniture::CHAIR,
+    industrial::MACHINE,
+    robot_bases::PEDESTAL,
+    robot_bases::MOBILE_CART,
+];

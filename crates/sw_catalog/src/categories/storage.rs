@@ -1,0 +1,269 @@
+//! Shelving, racking and cabinets: tall fixtures against a wall that hold other things.
+
+use sw_geom::{AssetBuilder, PlacementKind, Rng};
+
+use super::kit::{
+    Axis, DARK, FRAME_PAINT, INK, LABEL_WHITE, OFFICE_PAINT, RACK_BLUE, RACK_ORANGE, SAFETY_YELLOW, STEEL, WOOD,
+    decal_between, fit, ordered, pick, shade, slab, strut,
+};
+use crate::{Category, ParamDef, Params};
+
+pub(crate) const SHELF: Category = Category {
+    name: "shelf",
+    display: "shelf",
+    synonyms: &[
+        "shelving unit",
+        "shelving",
+        "shelf unit",
+        "storage shelf",
+        "storage shelving",
+        "metal shelf",
+        "steel shelf",
+        "wire shelf",
+        "bookshelf",
+        "bookcase",
+        "shelving rack",
+    ],
+    tags: &["storage", "tall", "warehouse", "office", "lab", "kitchen", "retail", "furniture"],
+    placement: PlacementKind::AgainstWall,
+    params: &[
+        ParamDef::new("width", 1.0, 0.5, 2.0, 0.12, "along X"),
+        ParamDef::new("depth", 0.45, 0.25, 0.8, 0.12, "along Y"),
+        ParamDef::new("height", 1.8, 0.8, 2.5, 0.08, "floor to the top level"),
+        ParamDef::new("levels", 4.0, 3.0, 6.0, 0.25, "number of shelf levels, the top included"),
+        ParamDef::new("post", 0.035, 0.025, 0.06, 0.15, "corner post section"),
+        ParamDef::new("deck_thickness", 0.025, 0.015, 0.05, 0.15, "thickness of each level"),
+        ParamDef::new("bottom_height", 0.12, 0.03, 0.4, 0.3, "floor to the top of the lowest level"),
+    ],
+    movable: false,
+    vary_per_instance: false,
+    build: build_shelf,
+};
+
+/// Four corner posts and evenly spaced decks between them; the top deck is flush with
+/// the posts. Each deck is a surface whose clearance reaches the underside of the next.
+fn build_shelf(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
+    let n = p.count("levels").clamp(3, 6);
+    let post = fit(b, "shelf post", p.get("post"), 0.0, w * 0.08);
+    let t = p.get("deck_thickness");
+    let bottom = fit(b, "shelf bottom_height", p.get("bottom_height"), t, h / (n as f64 + 1.0));
+
+    // Painted steel, all wood, or a painted frame with chipboard decks.
+    let style = rng.below(3);
+    let (frame_rgba, deck_rgba) = match style {
+        0 => {
+            let c = pick(rng, STEEL);
+            (c, shade(c, 1.05))
+        }
+        1 => {
+            let c = pick(rng, WOOD);
+            (c, c)
+        }
+        _ => (pick(rng, FRAME_PAINT), pick(rng, WOOD)),
+    };
+    let frame = b.material("frame", frame_rgba, true);
+    let decks = b.material("decks", deck_rgba, style == 1);
+
+    let (hw, hd) = (w / 2.0, d / 2.0);
+    for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)] {
+        let (x0, x1) = ordered(sx * hw, sx * (hw - post));
+        let (y0, y1) = ordered(sy * hd, sy * (hd - post));
+        slab(b, [x0, y0, 0.0], [x1, y1, h], frame);
+    }
+    let ix = hw - post;
+    let step = (h - bottom) / (n - 1) as f64;
+    let tops: Vec<f64> = (0..n)
+        .map(|i| {
+            let z = if i + 1 == n { h } else { bottom + step * i as f64 };
+            slab(b, [-ix, -hd, z - t], [ix, hd, z], decks)
+        })
+        .collect();
+    for (i, &z) in tops.iter().enumerate() {
+        let clearance = tops.get(i + 1).map(|next| (next - t) - z);
+        b.surface(&format!("level_{}", i + 1), z, [-ix, -hd], [ix, hd], clearance);
+    }
+    // Steel shelving is braced with a cross of flat straps across the back.
+    if style != 1 && rng.chance(0.6) {
+        let (y, z0, z1) = (-hd - 0.001, bottom, h - t);
+        for (xa, xb) in [(-ix, ix), (ix, -ix)] {
+            strut(b, [xa, y, z0], [xb, y, z1], [0.025, 0.002], Axis::Y, frame, false);
+        }
+    }
+    0.0
+}
+
+pub(crate) const PALLET_RACK: Category = Category {
+    name: "pallet_rack",
+    display: "pallet rack",
+    synonyms: &[
+        "pallet racking",
+        "racking",
+        "warehouse rack",
+        "warehouse racking",
+        "industrial rack",
+        "selective rack",
+        "selective pallet rack",
+        "high bay rack",
+        "heavy duty rack",
+    ],
+    tags: &["warehouse", "industrial", "logistics", "storage", "tall", "heavy"],
+    placement: PlacementKind::AgainstWall,
+    params: &[
+        ParamDef::new("width", 2.7, 1.8, 3.9, 0.05, "one bay, uprights included, along X"),
+        ParamDef::new("depth", 1.1, 0.6, 1.5, 0.05, "frame depth along Y"),
+        ParamDef::new("height", 4.5, 3.0, 6.0, 0.15, "floor to the top of the uprights"),
+        ParamDef::new("levels", 3.0, 2.0, 4.0, 0.34, "beam levels with a deck"),
+        ParamDef::new("upright", 0.09, 0.07, 0.12, 0.1, "upright face width along X"),
+        ParamDef::new("beam_height", 0.12, 0.08, 0.18, 0.15, "beam section height"),
+    ],
+    movable: false,
+    vary_per_instance: false,
+    build: build_pallet_rack,
+};
+
+/// Two braced upright frames (blue), a pair of step beams per level (orange) and a deck
+/// on each pair. The floor under the first level is storage too, but not part of the
+/// asset.
+fn build_pallet_rack(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
+    let n = p.count("levels").clamp(2, 4);
+    let u = p.get("upright");
+    let bh = p.get("beam_height");
+    let ud = 0.07; // upright section along Y
+    let bt = 0.05; // beam section along Y
+    let dt = 0.03; // deck thickness
+    let uprights = b.material("uprights", pick(rng, RACK_BLUE), true);
+    let beams = b.material("beams", pick(rng, RACK_ORANGE), false);
+    let deck_rgba = if rng.chance(0.7) { [0.7, 0.72, 0.74, 1.0] } else { pick(rng, WOOD) };
+    let decks = b.material("decks", deck_rgba, false);
+
+    let (hw, hd) = (w / 2.0, d / 2.0);
+    let ix = hw - u;
+    for sx in [-1.0, 1.0] {
+        let (x0, x1) = ordered(sx * hw, sx * ix);
+        for sy in [-1.0, 1.0] {
+            let (y0, y1) = ordered(sy * hd, sy * (hd - ud));
+            slab(b, [x0, y0, 0.0], [x1, y1, h], uprights);
+        }
+        // Frame bracing: horizontals and alternating diagonals between the uprights.
+        let xc = sx * (hw - u / 2.0);
+        let (z_lo, z_hi) = (0.15, h - 0.3);
+        let panels = ((z_hi - z_lo) / 1.0).ceil().max(1.0) as usize;
+        let yi = hd - ud;
+        let mut z_prev = z_lo;
+        for k in 0..=panels {
+            let z = z_lo + (z_hi - z_lo) * k as f64 / panels as f64;
+            slab(b, [xc - 0.015, -yi, z - 0.015], [xc + 0.015, yi, z + 0.015], uprights);
+            if k > 0 {
+                let (ya, yb) = if k % 2 == 0 { (-yi, yi) } else { (yi, -yi) };
+                strut(b, [xc, ya, z_prev], [xc, yb, z], [0.03, 0.025], Axis::X, uprights, true);
+            }
+            z_prev = z;
+        }
+    }
+    // Beam levels evenly spaced, the top one a little below the upright tops.
+    let step = (h - (0.3f64).min(h * 0.1)) / n as f64;
+    let label = b.material("labels", LABEL_WHITE, false);
+    let mut tops = Vec::with_capacity(n);
+    for i in 1..=n {
+        let z = step * i as f64;
+        let beam_top = z - dt;
+        for sy in [-1.0, 1.0] {
+            let (y0, y1) = ordered(sy * hd, sy * (hd - bt));
+            slab(b, [-ix, y0, beam_top - bh], [ix, y1, beam_top], beams);
+        }
+        tops.push(slab(b, [-ix, -hd, beam_top], [ix, hd, z], decks));
+        // Location labels on the front beam.
+        for lx in [-ix * 0.5, ix * 0.5] {
+            let zc = beam_top - bh / 2.0;
+            decal_between(b, [lx - 0.05, hd - 0.001, zc - 0.025], [lx + 0.05, hd + 0.001, zc + 0.025], label);
+        }
+    }
+    for (i, &z) in tops.iter().enumerate() {
+        // Up to the underside of the next level's beams.
+        let clearance = tops.get(i + 1).map(|next| (next - dt - bh) - z);
+        b.surface(&format!("level_{}", i + 1), z, [-ix, -hd], [ix, hd], clearance);
+    }
+    // A load sign on the left front upright.
+    let sign = b.material("load_sign", SAFETY_YELLOW, false);
+    let (x0, x1) = (-hw + u * 0.15, -hw + u * 0.85);
+    decal_between(b, [x0, hd - 0.001, 1.4], [x1, hd + 0.002, 1.4 + (x1 - x0) * 1.4], sign);
+    0.0
+}
+
+pub(crate) const CABINET: Category = Category {
+    name: "cabinet",
+    display: "cabinet",
+    synonyms: &[
+        "storage cabinet",
+        "cupboard",
+        "supply cabinet",
+        "metal cabinet",
+        "steel cabinet",
+        "utility cabinet",
+        "office cabinet",
+        "lab cabinet",
+        "tool cabinet",
+    ],
+    tags: &["storage", "furniture", "tall", "office", "lab", "warehouse", "workshop", "kitchen"],
+    placement: PlacementKind::AgainstWall,
+    params: &[
+        ParamDef::new("width", 0.9, 0.4, 1.6, 0.15, "along X"),
+        ParamDef::new("depth", 0.45, 0.3, 0.8, 0.1, "along Y"),
+        ParamDef::new("height", 1.9, 0.6, 2.2, 0.08, "floor to top"),
+        ParamDef::new("plinth", 0.06, 0.02, 0.15, 0.2, "recessed base height"),
+    ],
+    movable: false,
+    vary_per_instance: false,
+    build: build_cabinet,
+};
+
+/// A closed carcass on a recessed plinth; the doors are drawn on the front (closed, not
+/// articulated), with bar handles.
+fn build_cabinet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
+    let pl = fit(b, "cabinet plinth", p.get("plinth"), 0.0, h * 0.1);
+    let paint = pick(rng, OFFICE_PAINT);
+    let body = b.material("body", paint, true);
+    let doors = b.material("doors", shade(paint, 0.96), true);
+    let plinth = b.material("plinth", pick(rng, DARK), false);
+    let handles = b.material("handles", if rng.chance(0.6) { pick(rng, STEEL) } else { pick(rng, DARK) }, false);
+    let (hw, hd) = (w / 2.0, d / 2.0);
+
+    slab(b, [-(hw - 0.02), -hd, 0.0], [hw - 0.02, hd - 0.04, pl], plinth);
+    let top = slab(b, [-hw, -hd, pl], [hw, hd, h], body);
+
+    let n_doors = if w < 0.6 { 1 } else { 2 };
+    let (edge, gap) = (0.006, 0.004);
+    let door_w = (w - 2.0 * edge - gap * (n_doors - 1) as f64) / n_doors as f64;
+    let (z0, z1) = (pl + edge, h - edge);
+    let handle_h = (0.15f64).min((z1 - z0) * 0.3);
+    let handle_z = (1.0f64).min(z1 - 0.12 - handle_h / 2.0).max(z0 + handle_h / 2.0 + 0.02);
+    for i in 0..n_doors {
+        let x0 = -hw + edge + i as f64 * (door_w + gap);
+        decal_between(b, [x0, hd - 0.001, z0], [x0 + door_w, hd + 0.002, z1], doors);
+        // The handle sits at the door's free edge: the right one of a single door.
+        let hx = if n_doors == 1 || i == 0 { x0 + door_w - 0.045 } else { x0 + 0.045 };
+        decal_between(
+            b,
+            [hx - 0.008, hd + 0.002, handle_z - handle_h / 2.0],
+            [hx + 0.008, hd + 0.0045, handle_z + handle_h / 2.0],
+            handles,
+        );
+    }
+    // Ventilation louvres low on the doors of some cabinets.
+    if rng.chance(0.35) && z1 - z0 > 0.5 {
+        let vents = b.material("vents", shade(INK, 3.0), false);
+        for i in 0..n_doors {
+            let xc = -hw + edge + i as f64 * (door_w + gap) + door_w / 2.0;
+            let lw = (door_w * 0.5).min(0.25);
+            for k in 0..4 {
+                let z = z0 + 0.08 + k as f64 * 0.025;
+                decal_between(b, [xc - lw / 2.0, hd + 0.002, z], [xc + lw / 2.0, hd + 0.003, z + 0.008], vents);
+            }
+        }
+    }
+    b.surface("top", top, [-hw, -hd], [hw, hd], None);
+    0.0
+}

@@ -1,0 +1,105 @@
+//! Named parameters: defaults, ranges, seeded variation, size words and clamping.
+
+use sw_geom::Rng;
+
+use crate::{AssetRequest, CatalogError, Category};
+
+/// One parameter of a category.
+#[derive(Debug, Clone, Copy)]
+pub struct ParamDef {
+    pub name: &'static str,
+    pub default: f64,
+    pub min: f64,
+    pub max: f64,
+    /// Relative seeded variation: the default is drawn from `default × (1 ± vary)`.
+    pub vary: f64,
+    pub doc: &'static str,
+}
+
+impl ParamDef {
+    pub const fn new(name: &'static str, default: f64, min: f64, max: f64, vary: f64, doc: &'static str) -> Self {
+        Self { name, default, min, max, vary, doc }
+    }
+}
+
+/// Resolved parameter values, in the category's declaration order.
+#[derive(Debug, Clone)]
+pub struct Params {
+    values: Vec<(String, f64)>,
+}
+
+impl Params {
+    /// The value of `name`; 0 for a name the category does not declare (a bug in the
+    /// generator, caught by the catalog's tests).
+    pub fn get(&self, name: &str) -> f64 {
+        self.values.iter().find(|(n, _)| n == name).map_or(0.0, |(_, v)| *v)
+    }
+
+    /// An integer parameter (counts of shelves, drawers …), rounded.
+    pub fn count(&self, name: &str) -> usize {
+        self.get(name).round().max(0.0) as usize
+    }
+
+    pub fn values(&self) -> &[(String, f64)] {
+        &self.values
+    }
+
+    /// Defaults, varied by the seed, scaled by size words, overridden by explicit values,
+    /// then clamped into range. Returns the values and a note for each clamp.
+    pub(crate) fn resolve(
+        cat: &Category,
+        req: &AssetRequest,
+        rng: &mut Rng,
+    ) -> Result<(Params, Vec<String>), CatalogError> {
+        for (name, value) in &req.overrides {
+            if cat.param(name).is_none() {
+                let known: Vec<&str> = cat.params.iter().map(|p| p.name).collect();
+                return Err(CatalogError::UnknownParam {
+                    category: cat.name.into(),
+                    param: name.clone(),
+                    known: known.join(", "),
+                });
+            }
+            if !value.is_finite() {
+                return Err(CatalogError::NotFinite { category: cat.name.into(), param: name.clone(), value: *value });
+            }
+        }
+        let mut notes = Vec::new();
+        let mut values = Vec::with_capacity(cat.params.len());
+        for def in cat.params {
+            // Always draw, so that overriding one parameter does not shift the others.
+            let jitter = rng.range(-1.0, 1.0);
+            let mut v = def.default * (1.0 + def.vary * jitter);
+            if let Some(scale) = req.scale {
+                match def.name {
+                    "width" => v *= scale[0],
+                    "depth" => v *= scale[1],
+                    "height" => v *= scale[2],
+                    _ => {}
+                }
+            }
+            if let Some((_, o)) = req.overrides.iter().find(|(n, _)| n == def.name) {
+                v = *o;
+            }
+            let clamped = v.clamp(def.min, def.max);
+            if (clamped - v).abs() > 1e-9 * v.abs().max(1.0) {
+                notes.push(format!(
+                    "{} {} {} is outside {}..{}; used {}",
+                    cat.display,
+                    def.name,
+                    trim(v),
+                    trim(def.min),
+                    trim(def.max),
+                    trim(clamped)
+                ));
+            }
+            values.push((def.name.to_string(), clamped));
+        }
+        Ok((Params { values }, notes))
+    }
+}
+
+fn trim(v: f64) -> String {
+    let s = format!("{v:.3}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}

@@ -1,0 +1,189 @@
+//! `bench scenes`: the prompt suite through the whole pipeline, with per-stage
+//! percentiles and validity counts.
+
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use clap::Subcommand;
+use serde::Serialize;
+use sw_pipeline::Options;
+use sw_plan::{Stage, Status};
+
+use crate::Failure;
+use crate::output::{print, print_json};
+
+/// The suite shipped with the binary (`bench/prompts.txt`).
+const SUITE: &str = include_str!("../../../bench/prompts.txt");
+
+#[derive(Debug, Subcommand)]
+pub(crate) enum BenchCommand {
+    /// Every prompt of the suite (or one prompt, repeated) through the pipeline.
+    Scenes {
+        /// A prompt file: one prompt per line, `#` comments (default: the built-in suite).
+        #[arg(long)]
+        suite: Option<PathBuf>,
+        /// Benchmark this prompt instead of a suite.
+        #[arg(long)]
+        prompt: Option<String>,
+        /// Seeds per prompt (0..N).
+        #[arg(long, default_value_t = 1)]
+        seeds: u64,
+        /// Runs per prompt and seed.
+        #[arg(long, default_value_t = 1)]
+        repeat: u32,
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+#[derive(Debug, Serialize)]
+struct Percentiles {
+    p50_ms: f64,
+    p95_ms: f64,
+    max_ms: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct Validity {
+    runs: usize,
+    rejected_as_bad_input: usize,
+    compiled: usize,
+    no_deep_contacts: usize,
+    settled_within_1cm: usize,
+    verified: usize,
+    objects_requested: u64,
+    objects_placed: u64,
+}
+
+#[derive(Debug, Serialize)]
+struct BenchResult {
+    prompts: usize,
+    seeds: u64,
+    repeat: u32,
+    stages: BTreeMap<String, Percentiles>,
+    total: Percentiles,
+    validity: Validity,
+    failures: Vec<String>,
+}
+
+pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
+    let BenchCommand::Scenes { suite, prompt, seeds, repeat, json } = c;
+    let prompts: Vec<String> = match (&prompt, &suite) {
+        (Some(p), _) => vec![p.clone()],
+        (None, Some(path)) => parse_suite(&fs_err::read_to_string(path).map_err(|e| Failure::input(e.to_string()))?),
+        (None, None) => parse_suite(SUITE),
+    };
+    if prompts.is_empty() {
+        return Err(Failure::input("the suite holds no prompts"));
+    }
+    let scratch = tempfile::tempdir().map_err(|e| Failure::internal(e.to_string()))?;
+    let mut stage_ms: BTreeMap<Stage, Vec<f64>> = BTreeMap::new();
+    let mut total = Vec::new();
+    let mut v = Validity {
+        runs: 0,
+        rejected_as_bad_input: 0,
+        compiled: 0,
+        no_deep_contacts: 0,
+        settled_within_1cm: 0,
+        verified: 0,
+        objects_requested: 0,
+        objects_placed: 0,
+    };
+    let mut failures = Vec::new();
+    let mut n = 0u64;
+    for (pi, p) in prompts.iter().enumerate() {
+        for seed in 0..seeds.max(1) {
+            for _ in 0..repeat.max(1) {
+                n += 1;
+                let out = scratch.path().join(format!("run{n}"));
+                let opts = Options { seed, ..Options::default() };
+                let t0 = Instant::now();
+                let result = sw_pipeline::generate(p, &out, &opts, &mut |_| {});
+                let ms = t0.elapsed().as_secs_f64() * 1000.0;
+                v.runs += 1;
+                match result {
+                    Err(e) if e.exit_code() == 2 => v.rejected_as_bad_input += 1,
+                    Err(e) => failures.push(format!("prompt {} seed {seed}: {e}", pi + 1)),
+                    Ok(o) => {
+                        total.push(ms);
+                        for s in &o.timings.stages {
+                            stage_ms.entry(s.stage).or_default().push(s.ms);
+                        }
+                        let r = &o.report;
+                        v.objects_requested += u64::from(r.summary.objects_requested);
+                        v.objects_placed += u64::from(r.summary.objects_placed);
+                        if let Some(ver) = &r.verification {
+                            v.compiled += usize::from(ver.compiled);
+                            v.no_deep_contacts +=
+                                usize::from(ver.initial_contacts.as_ref().is_some_and(|c| c.deep.is_empty()));
+                            v.settled_within_1cm +=
+                                usize::from(ver.settle.as_ref().is_some_and(|s| s.moved.is_empty() && !s.unstable));
+                        }
+                        if r.status == Status::Verified {
+                            v.verified += 1;
+                        } else {
+                            failures.push(format!(
+                                "prompt {} seed {seed}: {:?}: {}",
+                                pi + 1,
+                                r.status,
+                                r.verification.as_ref().map(|x| x.failures.join("; ")).unwrap_or_default()
+                            ));
+                        }
+                    }
+                }
+                let _ = std::fs::remove_dir_all(&out);
+            }
+        }
+    }
+    let result = BenchResult {
+        prompts: prompts.len(),
+        seeds: seeds.max(1),
+        repeat: repeat.max(1),
+        stages: stage_ms.iter().map(|(s, xs)| (format!("{s:?}").to_lowercase(), percentiles(xs))).collect(),
+        total: percentiles(&total),
+        validity: v,
+        failures,
+    };
+    if json {
+        print_json(&result);
+    } else {
+        let mut lines = vec![format!(
+            "{} prompt(s) × {} seed(s) × {} repeat(s) = {} runs",
+            result.prompts, result.seeds, result.repeat, result.validity.runs
+        )];
+        lines.push(format!("{:<10} {:>10} {:>10} {:>10}", "stage", "p50 ms", "p95 ms", "max ms"));
+        for (s, p) in &result.stages {
+            lines.push(format!("{:<10} {:>10.2} {:>10.2} {:>10.2}", s, p.p50_ms, p.p95_ms, p.max_ms));
+        }
+        lines.push(format!(
+            "{:<10} {:>10.2} {:>10.2} {:>10.2}",
+            "total", result.total.p50_ms, result.total.p95_ms, result.total.max_ms
+        ));
+        let x = &result.validity;
+        lines.push(format!(
+            "compiled {}/{} · no contact > 1 mm {}/{} · settled < 1 cm {}/{} · verified {}/{} · rejected as bad input {} · objects placed {}/{}",
+            x.compiled, x.runs, x.no_deep_contacts, x.runs, x.settled_within_1cm, x.runs, x.verified, x.runs, x.rejected_as_bad_input, x.objects_placed, x.objects_requested
+        ));
+        for f in &result.failures {
+            lines.push(format!("failure  {f}"));
+        }
+        print(&lines.join("\n"));
+    }
+    Ok(if result.failures.is_empty() { 0 } else { 1 })
+}
+
+fn parse_suite(text: &str) -> Vec<String> {
+    text.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#')).map(str::to_string).collect()
+}
+
+fn percentiles(xs: &[f64]) -> Percentiles {
+    if xs.is_empty() {
+        return Percentiles { p50_ms: 0.0, p95_ms: 0.0, max_ms: 0.0 };
+    }
+    let mut v = xs.to_vec();
+    v.sort_by(f64::total_cmp);
+    let at = |q: f64| v[((q * (v.len() - 1) as f64).round() as usize).min(v.len() - 1)];
+    let r = |x: f64| (x * 100.0).round() / 100.0;
+    Percentiles { p50_ms: r(at(0.5)), p95_ms: r(at(0.95)), max_ms: r(v[v.len() - 1]) }
+}

@@ -1,0 +1,207 @@
+//! `generate`, `validate` and `render`.
+
+use std::ffi::OsString;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use sw_pipeline::{Event, Options, Outcome};
+use sw_plan::{Report, Status, Verification};
+
+use crate::Failure;
+use crate::output::{print, print_json};
+
+#[derive(Debug, clap::Args)]
+pub(crate) struct GenerateArgs {
+    /// What the scene should hold, in plain English.
+    prompt: OsString,
+    /// Directory to write the package to (must not exist, or be empty).
+    #[arg(long)]
+    out: PathBuf,
+    /// Seed for the layout and the assets' variation.
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// Robots to use instead of the prompt's, e.g. `--robot ur5e,turtlebot3` (`none` for none).
+    #[arg(long, value_delimiter = ',')]
+    robot: Option<Vec<String>>,
+    /// Skip the MuJoCo verification.
+    #[arg(long)]
+    no_verify: bool,
+    /// Print one JSON document instead of progress and a summary.
+    #[arg(long)]
+    json: bool,
+}
+
+/// Progress output: spinners on a terminal, plain lines otherwise, nothing for --json.
+enum Progress {
+    Quiet,
+    Lines,
+    Bars(Option<ProgressBar>),
+}
+
+impl Progress {
+    fn new(json: bool) -> Self {
+        if json {
+            Progress::Quiet
+        } else if std::io::stderr().is_terminal() {
+            Progress::Bars(None)
+        } else {
+            Progress::Lines
+        }
+    }
+
+    fn event(&mut self, e: &Event) {
+        match (self, e) {
+            (Progress::Quiet, _) => {}
+            (Progress::Lines, Event::StageStarted { .. }) => {}
+            (Progress::Lines, Event::StageFinished { stage, ms, summary }) => {
+                eprintln!("{:<9} {:>8.1} ms  {summary}", stage.label(), ms);
+            }
+            (Progress::Lines, Event::Note { stage, message }) => {
+                eprintln!("{:<9}             {message}", stage.label())
+            }
+            (Progress::Bars(bar), Event::StageStarted { stage }) => {
+                let b = ProgressBar::new_spinner();
+                b.set_style(
+                    ProgressStyle::with_template("{spinner} {msg}")
+                        .unwrap_or_else(|_| ProgressStyle::default_spinner()),
+                );
+                b.set_message(format!("{} …", stage.label()));
+                b.enable_steady_tick(Duration::from_millis(80));
+                *bar = Some(b);
+            }
+            (Progress::Bars(bar), Event::StageFinished { stage, ms, summary }) => {
+                if let Some(b) = bar.take() {
+                    b.finish_and_clear();
+                }
+                eprintln!("✓ {:<9} {:>8.1} ms  {summary}", stage.label(), ms);
+            }
+            (Progress::Bars(bar), Event::Note { stage, message }) => match bar {
+                Some(b) => b.println(format!("  {:<9} {message}", stage.label())),
+                None => eprintln!("  {:<9}             {message}", stage.label()),
+            },
+        }
+    }
+}
+
+pub(crate) fn run(a: GenerateArgs) -> Result<u8, Failure> {
+    let prompt = a.prompt.to_str().ok_or_else(|| Failure::input("the prompt is not valid UTF-8 text"))?.to_string();
+    let opts = Options { seed: a.seed, verify: !a.no_verify, robots: a.robot.clone() };
+    let mut progress = Progress::new(a.json);
+    let outcome =
+        sw_pipeline::generate(&prompt, &a.out, &opts, &mut |e| progress.event(e)).map_err(|e| match e.exit_code() {
+            2 => Failure::input(e.to_string()),
+            _ => Failure::internal(e.to_string()),
+        })?;
+    let code = if sw_pipeline::succeeded(&outcome.report) { 0 } else { 1 };
+    if a.json {
+        print_json(&serde_json::json!({
+            "status": outcome.report.status,
+            "out_dir": outcome.out_dir,
+            "scene": outcome.out_dir.join("scene.xml"),
+            "report": outcome.report,
+            "timings": outcome.timings,
+        }));
+    } else {
+        print(&summary(&outcome));
+    }
+    if code != 0 && !a.json {
+        eprintln!("error: the scene failed verification; see {}", outcome.out_dir.join("report.json").display());
+    }
+    Ok(code)
+}
+
+fn summary(o: &Outcome) -> String {
+    let r = &o.report;
+    let s = &r.summary;
+    let mut lines = Vec::new();
+    lines.push(format!("scene    {}", o.out_dir.join("scene.xml").display()));
+    lines.push(format!(
+        "room     {} {} × {} × {} m · {} of {} objects placed{}",
+        s.room.replace('_', " "),
+        trim(s.room_size[0]),
+        trim(s.room_size[1]),
+        trim(s.room_size[2]),
+        s.objects_placed,
+        s.objects_requested,
+        if s.robots.is_empty() { String::new() } else { format!(" · robots: {}", s.robots.join(", ")) }
+    ));
+    lines.push(format!("verify   {}", verification_line(r)));
+    for a in &r.approximated {
+        lines.push(format!("approx   \"{}\" → {} ({})", a.text, a.became, a.reason));
+    }
+    for n in &r.not_understood {
+        lines.push(format!("ignored  \"{}\" ({})", n.text, n.reason));
+    }
+    for l in &r.left_out {
+        lines.push(format!("left out {} of {} {}: {}", l.requested - l.placed, l.requested, l.group, l.reason));
+    }
+    for w in &r.warnings {
+        lines.push(format!("warning  {}", w.message));
+    }
+    lines.push(format!("time     {:.0} ms", o.timings.total_ms));
+    lines.join("\n")
+}
+
+fn verification_line(r: &Report) -> String {
+    match (&r.status, &r.verification) {
+        (Status::Unverified, _) | (_, None) => "skipped (--no-verify)".into(),
+        (_, Some(v)) => describe(v),
+    }
+}
+
+fn describe(v: &Verification) -> String {
+    if !v.compiled {
+        return format!("FAILED: {}", v.failures.join("; "));
+    }
+    let deep = v.initial_contacts.as_ref().map_or(0, |c| c.deep.len());
+    let settle = v
+        .settle
+        .as_ref()
+        .map(|s| {
+            format!(
+                "largest drift in a {} s settle {:.2} mm{}",
+                s.duration_s,
+                s.max_displacement_m * 1000.0,
+                s.worst_body.as_ref().map(|b| format!(" ({b})")).unwrap_or_default()
+            )
+        })
+        .unwrap_or_default();
+    let head = if v.passed {
+        format!("passed in {}", v.engine)
+    } else {
+        format!("FAILED in {}: {}", v.engine, v.failures.join("; "))
+    };
+    format!("{head} · compiled · {deep} contacts deeper than 1 mm at t = 0 · {settle}")
+}
+
+pub(crate) fn validate(dir: &Path, json: bool) -> Result<u8, Failure> {
+    let v = sw_pipeline::validate_dir(dir).map_err(|e| Failure::input(e.to_string()))?;
+    if json {
+        print_json(&v);
+    } else {
+        print(&format!("verify   {}", describe(&v)));
+    }
+    Ok(if v.passed { 0 } else { 1 })
+}
+
+pub(crate) fn render(dir: &Path, out: &Path, width: u32, height: u32, collision: bool) -> Result<u8, Failure> {
+    let scene = if dir.is_file() { dir.to_path_buf() } else { dir.join("scene.xml") };
+    if !scene.is_file() {
+        return Err(Failure::input(format!("'{}' is not a scene package (no scene.xml)", dir.display())));
+    }
+    if !(16..=8192).contains(&width) || !(16..=8192).contains(&height) {
+        return Err(Failure::input("width and height must be between 16 and 8192 pixels"));
+    }
+    let groups: &[i32] = if collision { &[3] } else { &[2] };
+    let img = sw_sim::render_scene(&scene, width, height, groups).map_err(Failure::internal)?;
+    let file = fs_err::File::create(out).map_err(|e| Failure::input(e.to_string()))?;
+    img.write_png(std::io::BufWriter::new(file)).map_err(|e| Failure::internal(e.to_string()))?;
+    Ok(0)
+}
+
+fn trim(v: f64) -> String {
+    let s = format!("{v:.2}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}

@@ -1,0 +1,140 @@
+//! `scenewright`: plain-English descriptions in, verified MuJoCo scenes out.
+//!
+//! Exit codes: 0 success; 2 bad input (one line on stderr); 1 internal error or a scene
+//! that failed verification.
+
+mod cmd_assets;
+mod cmd_bench;
+mod cmd_generate;
+mod cmd_robots;
+mod output;
+
+use std::ffi::OsString;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Debug, Parser)]
+#[command(name = "scenewright", version, about = "Plain-English descriptions in, verified MuJoCo scenes out.")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Generate a scene package from a prompt.
+    Generate(cmd_generate::GenerateArgs),
+    /// Re-verify a package with MuJoCo and print the verification.
+    Validate {
+        dir: PathBuf,
+        /// Print one JSON document.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Render a package's scene.xml to a PNG (software renderer, no GPU needed).
+    Render {
+        dir: PathBuf,
+        #[arg(long)]
+        out: PathBuf,
+        #[arg(long, default_value_t = 1280)]
+        width: u32,
+        #[arg(long, default_value_t = 800)]
+        height: u32,
+        /// Draw collision geometry (group 3) instead of visual meshes.
+        #[arg(long)]
+        collision: bool,
+    },
+    /// The procedural asset catalog.
+    #[command(subcommand)]
+    Assets(cmd_assets::AssetsCommand),
+    /// The robot registry.
+    #[command(subcommand)]
+    Robots(cmd_robots::RobotsCommand),
+    /// Benchmarks that print numbers.
+    #[command(subcommand)]
+    Bench(cmd_bench::BenchCommand),
+    /// Write the JSON Schemas of plan.json, layout.json, report.json and timings.json.
+    Schema {
+        /// Directory to write into (default: print the plan schema).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+}
+
+/// A failure with its exit code. Messages are one line.
+#[derive(Debug)]
+pub(crate) struct Failure {
+    pub code: u8,
+    pub message: String,
+}
+
+impl Failure {
+    pub fn input(message: impl Into<String>) -> Self {
+        Self { code: 2, message: message.into() }
+    }
+
+    pub fn internal(message: impl Into<String>) -> Self {
+        Self { code: 1, message: message.into() }
+    }
+}
+
+impl From<anyhow::Error> for Failure {
+    fn from(e: anyhow::Error) -> Self {
+        Failure::internal(format!("{e:#}"))
+    }
+}
+
+fn main() -> ExitCode {
+    let filter = tracing_subscriber::EnvFilter::try_from_env("SCENEWRIGHT_LOG")
+        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("warn"));
+    tracing_subscriber::fmt().with_env_filter(filter).with_writer(std::io::stderr).with_target(false).init();
+
+    let args: Vec<OsString> = std::env::args_os().collect();
+    let cli = match Cli::try_parse_from(&args) {
+        Ok(c) => c,
+        Err(e) => {
+            // Help and version go to stdout with success; usage errors are bad input.
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    let result = match cli.command {
+        Command::Generate(a) => cmd_generate::run(a),
+        Command::Validate { dir, json } => cmd_generate::validate(&dir, json),
+        Command::Render { dir, out, width, height, collision } => {
+            cmd_generate::render(&dir, &out, width, height, collision)
+        }
+        Command::Assets(c) => cmd_assets::run(c),
+        Command::Robots(c) => cmd_robots::run(c),
+        Command::Bench(c) => cmd_bench::run(c),
+        Command::Schema { out } => schema(out),
+    };
+    match result {
+        Ok(code) => ExitCode::from(code),
+        Err(f) => {
+            let line = f.message.lines().collect::<Vec<_>>().join(" ");
+            eprintln!("error: {line}");
+            ExitCode::from(f.code)
+        }
+    }
+}
+
+fn schema(out: Option<PathBuf>) -> Result<u8, Failure> {
+    let schemas = sw_plan::schemas();
+    match out {
+        None => {
+            output::print(&schemas[0].json);
+            Ok(0)
+        }
+        Some(dir) => {
+            fs_err::create_dir_all(&dir).map_err(|e| Failure::input(e.to_string()))?;
+            for s in schemas {
+                fs_err::write(dir.join(s.file_name), s.json).map_err(|e| Failure::input(e.to_string()))?;
+            }
+            Ok(0)
+        }
+    }
+}

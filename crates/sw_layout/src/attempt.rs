@@ -1,0 +1,238 @@
+//! One layout attempt at a given room size: furniture, then robots, then items on
+//! surfaces, then small items on the floor.
+
+use std::collections::BTreeMap;
+
+use sw_geom::{Aabb, PlacementKind, Rng};
+use sw_plan::{
+    Dims, DoorLayout, LaidOutScene, LeftOut, PlacedObject, PlacedRobot, RelationKind, RoomKind, RoomLayout, Stage,
+    Support, Wall, Warning,
+};
+
+use crate::LayoutInput;
+use crate::floor;
+use crate::frames::Spot;
+use crate::robots;
+use crate::space::{Space, Zone};
+use crate::surface;
+
+pub(crate) const WALL_THICKNESS: f64 = 0.2;
+
+pub(crate) struct AttemptResult {
+    pub scene: LaidOutScene,
+    /// Floor objects that found no place (a bigger room may help).
+    pub floor_failures: usize,
+}
+
+/// Where an object ended up.
+#[derive(Debug, Clone)]
+pub(crate) struct Placement {
+    pub spot: Spot,
+    pub support: Support,
+}
+
+/// The state of one attempt.
+pub(crate) struct Ctx<'a> {
+    pub input: &'a LayoutInput<'a>,
+    pub space: Space,
+    pub rng: Rng,
+    pub door: DoorLayout,
+    /// Collision boxes of each object in its own frame.
+    pub local: Vec<Vec<Aabb>>,
+    pub bounds: Vec<Aabb>,
+    pub placed: Vec<Option<Placement>>,
+    /// Occupied rectangles (object frame, [x0, y0, x1, y1]) per object and surface.
+    pub surface_use: BTreeMap<usize, Vec<Vec<[f64; 4]>>>,
+    pub robots: Vec<Option<PlacedRobot>>,
+    pub warnings: Vec<Warning>,
+    pub reasons: BTreeMap<usize, String>,
+    pub floor_failures: usize,
+}
+
+impl<'a> Ctx<'a> {
+    pub fn relations(&self, group: &str) -> Vec<&'a RelationKind> {
+        self.input.plan.relations.iter().filter(|r| r.subject == group).map(|r| &r.kind).collect()
+    }
+
+    /// Indices of the objects of a plan group, in order.
+    pub fn instances(&self, group: &str) -> Vec<usize> {
+        self.input.objects.iter().enumerate().filter(|(_, o)| o.group == group).map(|(i, _)| i).collect()
+    }
+
+    /// Placed instances of a group.
+    pub fn placed_instances(&self, group: &str) -> Vec<(usize, Spot)> {
+        self.instances(group).into_iter().filter_map(|i| self.placed[i].as_ref().map(|p| (i, p.spot))).collect()
+    }
+
+    pub fn warn(&mut self, code: &str, message: String) {
+        if !self.warnings.iter().any(|w| w.message == message) {
+            self.warnings.push(Warning::new(Stage::Layout, code, message));
+        }
+    }
+
+    /// Records a placement and its occupied space.
+    pub fn commit(&mut self, idx: usize, spot: Spot, support: Support) {
+        let boxes = spot.boxes(&self.local[idx]);
+        let on_floor = matches!(support, Support::Floor);
+        let name = self.input.objects[idx].name.clone();
+        self.space.add(&name, boxes, on_floor);
+        if on_floor && let Some(zone) = floor::front_zone(self, idx, &spot) {
+            self.space.zones.push(Zone { owner: Some(name), area: zone });
+        }
+        self.placed[idx] = Some(Placement { spot, support });
+    }
+
+    /// The service depth kept clear in front of an object, m.
+    pub fn front_clearance(&self, idx: usize) -> f64 {
+        let o = &self.input.objects[idx];
+        if o.has_tag("electrical") {
+            // NEC 110.26(A)(1): 0.9 m working space for equipment up to 150 V to ground.
+            0.9
+        } else if o.has_tag("machine") || (o.has_tag("storage") && o.has_tag("tall")) {
+            0.9
+        } else if o.has_tag("conveyor") {
+            0.6
+        } else {
+            0.0
+        }
+    }
+}
+
+/// The door: a gap in the south wall (or the plan's wall), wide enough for the room kind.
+fn door_for(kind: RoomKind, wall: Wall, size: &Dims) -> DoorLayout {
+    let width: f64 = match kind {
+        RoomKind::Warehouse | RoomKind::LoadingDock | RoomKind::Factory | RoomKind::Garage => 3.0,
+        RoomKind::Closet => 0.8,
+        _ => 1.0,
+    };
+    let along = match wall {
+        Wall::North | Wall::South => size.width,
+        Wall::East | Wall::West => size.depth,
+    };
+    let width = width.min(along * 0.5).max(0.6);
+    DoorLayout { wall, offset: 0.0, width, height: (2.1f64).min(size.height - 0.1).max(1.0) }
+}
+
+/// The keep-clear rectangle in front of the doorway.
+fn door_zone(door: &DoorLayout, size: &Dims) -> Aabb {
+    let depth = 1.2f64.min(0.45 * size.depth.min(size.width));
+    let (hw, hd) = (size.width / 2.0, size.depth / 2.0);
+    let half = door.width / 2.0 + 0.2;
+    match door.wall {
+        Wall::South => {
+            Aabb { min: [door.offset - half, -hd, 0.0], max: [door.offset + half, -hd + depth, size.height] }
+        }
+        Wall::North => Aabb { min: [door.offset - half, hd - depth, 0.0], max: [door.offset + half, hd, size.height] },
+        Wall::East => Aabb { min: [hw - depth, door.offset - half, 0.0], max: [hw, door.offset + half, size.height] },
+        Wall::West => Aabb { min: [-hw, door.offset - half, 0.0], max: [-hw + depth, door.offset + half, size.height] },
+    }
+}
+
+/// Items that rest on other objects rather than the floor.
+pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
+    let o = &ctx.input.objects[idx];
+    ctx.relations(&o.group).iter().find_map(|r| match r {
+        RelationKind::On { target } => Some(target.clone()),
+        _ => None,
+    })
+}
+
+pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
+    let plan = input.plan;
+    let door = door_for(plan.room.kind, plan.room.door, &size);
+    let mut space = Space::new(size.width, size.depth, size.height);
+    space.zones.push(Zone { owner: None, area: door_zone(&door, &size) });
+    let local: Vec<Vec<Aabb>> = input.objects.iter().map(|o| o.asset.collision_aabbs()).collect();
+    let bounds: Vec<Aabb> = local.iter().map(|b| crate::space::union(b)).collect();
+    let mut ctx = Ctx {
+        input,
+        space,
+        rng: Rng::derive(input.seed, &format!("layout {:.3} {:.3}", size.width, size.depth)),
+        door: door.clone(),
+        local,
+        bounds,
+        placed: vec![None; input.objects.len()],
+        surface_use: BTreeMap::new(),
+        robots: vec![None; input.robots.len()],
+        warnings: Vec::new(),
+        reasons: BTreeMap::new(),
+        floor_failures: 0,
+    };
+
+    // 1. Furniture and fixtures on the floor, targets before the things related to them.
+    let is_small = |i: usize| input.objects[i].asset.placement == PlacementKind::OnSurface;
+    let furniture: Vec<usize> = (0..input.objects.len())
+        .filter(|&i| input.objects[i].carries_robot.is_none() && !is_small(i) && surface_target(&ctx, i).is_none())
+        .collect();
+    for idx in floor::order(&ctx, &furniture) {
+        floor::place(&mut ctx, idx);
+    }
+    // 2. Robots, with their pedestals and carts.
+    robots::place_all(&mut ctx);
+    // 3. Items on surfaces (and large objects said to be on something).
+    let on_surfaces: Vec<usize> = (0..input.objects.len())
+        .filter(|&i| input.objects[i].carries_robot.is_none() && surface_target(&ctx, i).is_some())
+        .collect();
+    surface::place_all(&mut ctx, &on_surfaces);
+    // 4. Small items with no support named: on work surfaces when they are tabletop
+    //    things, else on the floor.
+    let rest: Vec<usize> = (0..input.objects.len())
+        .filter(|&i| input.objects[i].carries_robot.is_none() && is_small(i) && surface_target(&ctx, i).is_none())
+        .collect();
+    surface::place_loose(&mut ctx, &rest);
+
+    finish(ctx, size, door)
+}
+
+fn finish(ctx: Ctx<'_>, size: Dims, door: DoorLayout) -> AttemptResult {
+    let input = ctx.input;
+    let mut scene = LaidOutScene::new(
+        input.seed,
+        RoomLayout { kind: input.plan.room.kind, size, wall_thickness: WALL_THICKNESS, door },
+    );
+    let mut per_group: BTreeMap<&str, (u32, u32, String)> = BTreeMap::new();
+    for (i, o) in input.objects.iter().enumerate() {
+        let entry = per_group.entry(o.group.as_str()).or_insert((0, 0, o.category.clone()));
+        entry.0 += 1;
+        let Some(p) = &ctx.placed[i] else { continue };
+        entry.1 += 1;
+        let b = ctx.bounds[i];
+        let size = b.size();
+        scene.objects.push(PlacedObject {
+            name: o.name.clone(),
+            group: o.group.clone(),
+            category: o.category.clone(),
+            label: o.label.clone(),
+            pos: [round(p.spot.x), round(p.spot.y), round(p.spot.z)],
+            yaw: p.spot.yaw,
+            size: [round(size[0]), round(size[1]), round(size[2])],
+            support: p.support.clone(),
+            movable: o.asset.is_free(),
+            mass: match o.asset.mass {
+                sw_geom::MassModel::Free { mass } => Some(round(mass)),
+                sw_geom::MassModel::Static => None,
+            },
+            asset_seed: o.asset.seed,
+        });
+    }
+    for (group, (requested, placed, category)) in per_group {
+        if placed < requested {
+            let reason = input
+                .objects
+                .iter()
+                .enumerate()
+                .filter(|(_, o)| o.group == group)
+                .find_map(|(i, _)| ctx.reasons.get(&i).cloned())
+                .unwrap_or_else(|| "no free space".into());
+            scene.left_out.push(LeftOut { group: group.to_string(), category, requested, placed, reason });
+        }
+    }
+    scene.robots = ctx.robots.into_iter().flatten().collect();
+    scene.warnings = ctx.warnings;
+    AttemptResult { scene, floor_failures: ctx.floor_failures }
+}
+
+/// Positions are kept to 0.1 µm so the JSON stays short and stable.
+pub(crate) fn round(x: f64) -> f64 {
+    (x * 1e7).round() / 1e7
+}

@@ -1,0 +1,267 @@
+//! Robot spawns: arms on work surfaces, pedestals or carts, facing their work; mobile
+//! bases on open floor. Every robot's home-pose volume is kept clear of everything.
+
+use std::f64::consts::PI;
+
+use sw_geom::{Aabb, SupportSurface};
+use sw_plan::{PlacedRobot, Support};
+
+use crate::attempt::{Ctx, round};
+use crate::floor::{beside, fits_floor, free_grid};
+use crate::frames::{Spot, robot_yaw_facing};
+use crate::space::FLOOR_GAP;
+use crate::{RobotItem, RobotMount};
+
+/// Gap kept around a robot's home volume, m.
+const ROBOT_GAP: f64 = 0.02;
+/// Extra room around mobile bases so they can move, m.
+const MOBILE_GAP: f64 = 0.25;
+
+pub(crate) fn place_all(ctx: &mut Ctx<'_>) {
+    for ri in 0..ctx.input.robots.len() {
+        let robot = ctx.input.robots[ri].clone();
+        let ok = match &robot.mount {
+            RobotMount::Surface { group } => on_surface(ctx, ri, &robot, group),
+            RobotMount::Carrier { object } => on_carrier(ctx, ri, &robot, object),
+            RobotMount::Floor => on_floor(ctx, ri, &robot),
+        };
+        if !ok {
+            let s = ctx.space.half;
+            ctx.warn(
+                "robot_left_out",
+                format!(
+                    "{}: no collision-free spawn found in the {:.1} × {:.1} m room; the robot was left out",
+                    robot.name,
+                    2.0 * s[0],
+                    2.0 * s[1]
+                ),
+            );
+            ctx.floor_failures += 1;
+        }
+    }
+}
+
+fn robot_boxes(robot: &RobotItem, spot: &Spot) -> Vec<Aabb> {
+    spot.boxes(&robot.keepout)
+}
+
+/// On the top surface of an instance of `group`: base fully on the surface, near its
+/// back edge, working towards the surface's centre.
+fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> bool {
+    let mut hosts = ctx.placed_instances(group);
+    let turn = ctx.input.robots[..ri].iter().filter(|r| r.mount == robot.mount).count();
+    if !hosts.is_empty() {
+        let n = hosts.len();
+        hosts.rotate_left(turn % n);
+    }
+    for (hi, hspot) in hosts {
+        let surfaces: Vec<SupportSurface> =
+            ctx.input.objects[hi].asset.surfaces.iter().filter(|s| s.clearance.is_none()).cloned().collect();
+        for surf in surfaces {
+            let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
+            let m = robot.base_radius + 0.01;
+            let mut local: Vec<(f64, f64)> = Vec::new();
+            let mut x = surf.min[0] + m;
+            while x <= surf.max[0] - m + 1e-9 {
+                let mut y = surf.min[1] + m;
+                while y <= surf.max[1] - m + 1e-9 {
+                    local.push((x, y));
+                    y += 0.05;
+                }
+                x += 0.05;
+            }
+            // The back edge centre first, then along the edges, then inwards.
+            let back = (cx, surf.min[1] + m);
+            local.sort_by(|a, b| {
+                let da = (a.0 - back.0).abs() + 2.0 * (a.1 - back.1).abs();
+                let db = (b.0 - back.0).abs() + 2.0 * (b.1 - back.1).abs();
+                da.total_cmp(&db)
+            });
+            for (lx, ly) in local {
+                let p = hspot.apply([lx, ly, surf.z]);
+                let c = hspot.apply([cx, cy, surf.z]);
+                let facing = robot_yaw_facing(c[0] - p[0], c[1] - p[1]);
+                let spots = if (c[0] - p[0]).hypot(c[1] - p[1]) < 0.05 {
+                    vec![hspot.yaw + PI / 2.0, hspot.yaw, hspot.yaw + PI, hspot.yaw - PI / 2.0]
+                } else {
+                    vec![facing]
+                };
+                for yaw in spots {
+                    let spot = Spot::new(p[0], p[1], p[2], yaw);
+                    let boxes = robot_boxes(robot, &spot);
+                    if ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) {
+                        let host_name = ctx.input.objects[hi].name.clone();
+                        let coverage = coverage(&spot, robot, &hspot, &surf);
+                        commit(ctx, ri, robot, spot, boxes, "surface", Some(host_name), Some(coverage));
+                        return true;
+                    }
+                }
+            }
+        }
+    }
+    false
+}
+
+/// On a pedestal or cart made for it, standing beside its work.
+fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) -> bool {
+    let Some(ci) = ctx.input.objects.iter().position(|o| o.name == carrier) else {
+        return false;
+    };
+    let top = ctx.input.objects[ci]
+        .asset
+        .surfaces
+        .iter()
+        .filter(|s| s.clearance.is_none())
+        .map(|s| s.z)
+        .fold(f64::NAN, f64::max);
+    let top = if top.is_finite() { top } else { ctx.bounds[ci].max[2] };
+    // Work to stand beside: the named group, else any work surface or machine.
+    let work_groups: Vec<String> = match &robot.near {
+        Some(g) => vec![g.clone()],
+        None => {
+            let mut gs: Vec<String> = Vec::new();
+            for (i, o) in ctx.input.objects.iter().enumerate() {
+                let worky = o.has_tag("surface") || o.has_tag("conveyor") || o.has_tag("machine");
+                if worky && ctx.placed[i].is_some() && o.carries_robot.is_none() && !gs.contains(&o.group) {
+                    gs.push(o.group.clone());
+                }
+            }
+            gs
+        }
+    };
+    let mut candidates: Vec<(Spot, Option<(f64, f64)>)> = Vec::new();
+    let turn = ctx.input.robots[..ri].iter().filter(|r| matches!(r.mount, RobotMount::Carrier { .. })).count();
+    for g in &work_groups {
+        for (ti, ts) in ctx.placed_instances(g) {
+            let _ = ti;
+            for s in beside(ctx, ci, g, turn) {
+                candidates.push((s, Some((ts.x, ts.y))));
+            }
+        }
+    }
+    for s in free_grid(ctx, ci, true) {
+        candidates.push((s, None));
+    }
+    for (spot, work) in candidates {
+        if !fits_floor(ctx, ci, &spot, &[]) {
+            continue;
+        }
+        let base = spot.apply([0.0, 0.0, top]);
+        let (tx, ty) = work.unwrap_or((0.0, 0.0));
+        let yaw = robot_yaw_facing(tx - base[0], ty - base[1]);
+        let rspot = Spot::new(base[0], base[1], base[2], yaw);
+        let boxes = robot_boxes(robot, &rspot);
+        if !ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) {
+            continue;
+        }
+        ctx.commit(ci, spot, Support::Floor);
+        let kind = if ctx.input.objects[ci].category == "mobile_cart" { "mobile_base" } else { "pedestal" };
+        let cov = work.and_then(|(tx, ty)| {
+            let (wi, ws) = work_groups
+                .iter()
+                .flat_map(|g| ctx.placed_instances(g))
+                .find(|(_, s)| (s.x - tx).abs() < 1e-9 && (s.y - ty).abs() < 1e-9)?;
+            let surf = ctx.input.objects[wi].asset.surfaces.iter().find(|s| s.clearance.is_none())?.clone();
+            Some(coverage(&rspot, robot, &ws, &surf))
+        });
+        let carrier_name = ctx.input.objects[ci].name.clone();
+        commit(ctx, ri, robot, rspot, boxes, kind, Some(carrier_name), cov.filter(|_| robot.is_arm));
+        return true;
+    }
+    false
+}
+
+/// A mobile base on open floor, near its work if it has one.
+fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
+    let mut targets: Vec<(f64, f64)> = Vec::new();
+    if let Some(g) = &robot.near {
+        targets.extend(ctx.placed_instances(g).iter().map(|(_, s)| (s.x, s.y)));
+    }
+    let [hw, hd] = ctx.space.half;
+    let mut pts = Vec::new();
+    let step = 0.1;
+    let mut x = -hw;
+    while x <= hw {
+        let mut y = -hd;
+        while y <= hd {
+            pts.push((x, y));
+            y += step;
+        }
+        x += step;
+    }
+    let turn = ri as f64;
+    let key = |p: &(f64, f64)| -> f64 {
+        match targets.first() {
+            Some(t) => (p.0 - t.0).hypot(p.1 - t.1),
+            // Open floor a little off centre, different for each robot.
+            None => (p.0 - 0.3 * turn).hypot(p.1 + 0.2 * hd.min(2.0)),
+        }
+    };
+    pts.sort_by(|a, b| key(a).total_cmp(&key(b)));
+    for (x, y) in pts {
+        let (tx, ty) = targets.first().copied().unwrap_or((0.0, 0.0));
+        let yaw = if (tx - x).hypot(ty - y) < 1e-6 { 0.0 } else { robot_yaw_facing(tx - x, ty - y) };
+        let spot = Spot::new(x, y, 0.0, yaw);
+        let boxes = robot_boxes(robot, &spot);
+        let inflated: Vec<Aabb> = boxes
+            .iter()
+            .map(|b| Aabb {
+                min: [b.min[0] - MOBILE_GAP, b.min[1] - MOBILE_GAP, b.min[2]],
+                max: [b.max[0] + MOBILE_GAP, b.max[1] + MOBILE_GAP, b.max[2]],
+            })
+            .collect();
+        let inside = ctx.space.inside(&crate::space::union(&inflated));
+        if inside && ctx.space.fits(&boxes, MOBILE_GAP.max(FLOOR_GAP), &[], true, &[]) {
+            commit(ctx, ri, robot, spot, boxes, "floor", None, None);
+            return true;
+        }
+    }
+    false
+}
+
+#[allow(clippy::too_many_arguments)]
+fn commit(
+    ctx: &mut Ctx<'_>,
+    ri: usize,
+    robot: &RobotItem,
+    spot: Spot,
+    boxes: Vec<Aabb>,
+    mount: &str,
+    mounted_on: Option<String>,
+    reach_coverage: Option<f64>,
+) {
+    ctx.space.add(&robot.name, boxes, mount == "floor");
+    ctx.robots[ri] = Some(PlacedRobot {
+        name: robot.name.clone(),
+        group: robot.group.clone(),
+        model: robot.model.clone(),
+        pos: [round(spot.x), round(spot.y), round(spot.z)],
+        yaw: spot.yaw,
+        mount: mount.to_string(),
+        mounted_on,
+        reach_coverage: reach_coverage.map(|c| (c * 1000.0).round() / 1000.0),
+    });
+}
+
+/// The fraction of a work surface an arm at `spot` can reach: sample points on the
+/// surface within [0.15 m, reach] of the shoulder.
+fn coverage(spot: &Spot, robot: &RobotItem, host: &Spot, surf: &SupportSurface) -> f64 {
+    if robot.reach <= 0.0 {
+        return 0.0;
+    }
+    let shoulder = [spot.x, spot.y, spot.z + 0.16];
+    let n = 16;
+    let mut hit = 0;
+    for i in 0..n {
+        for j in 0..n {
+            let lx = surf.min[0] + (surf.max[0] - surf.min[0]) * (i as f64 + 0.5) / n as f64;
+            let ly = surf.min[1] + (surf.max[1] - surf.min[1]) * (j as f64 + 0.5) / n as f64;
+            let p = host.apply([lx, ly, surf.z]);
+            let d = ((p[0] - shoulder[0]).powi(2) + (p[1] - shoulder[1]).powi(2) + (p[2] - shoulder[2]).powi(2)).sqrt();
+            if (0.15..=robot.reach).contains(&d) {
+                hit += 1;
+            }
+        }
+    }
+    f64::from(hit) / f64::from(n * n)
+}

@@ -1,0 +1,166 @@
+//! Items on surfaces: packed onto the support surfaces of their targets (table tops,
+//! every shelf level), spread across instances, kept below the next shelf.
+
+use std::f64::consts::FRAC_PI_2;
+
+use sw_plan::Support;
+
+use crate::attempt::{Ctx, surface_target};
+use crate::floor;
+use crate::frames::Spot;
+use crate::space::SURFACE_GAP;
+
+/// Resolution of positions on a surface, m.
+const STEP: f64 = 0.02;
+
+/// Items with an `on` relation: on their target, or on the floor next to it (reported).
+pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
+    for &idx in items {
+        let Some(target) = surface_target(ctx, idx) else {
+            continue;
+        };
+        let group = ctx.input.objects[idx].group.clone();
+        let k = ctx.instances(&group).iter().position(|&i| i == idx).unwrap_or(0);
+        if place_on_group(ctx, idx, &target, k) {
+            continue;
+        }
+        let name = ctx.input.objects[idx].name.clone();
+        let had_target = !ctx.placed_instances(&target).is_empty();
+        if floor::place(ctx, idx) {
+            let why = if had_target { "no room left on it" } else { "it could not be placed" };
+            ctx.warn("relation_unmet", format!("{name}: could not go on {target} ({why}); placed on the floor"));
+        }
+    }
+}
+
+/// Small items with no support named: tabletop things on work surfaces, the rest on
+/// the floor.
+pub(crate) fn place_loose(ctx: &mut Ctx<'_>, items: &[usize]) {
+    let hosts: Vec<String> = {
+        let mut v: Vec<String> = Vec::new();
+        for (i, o) in ctx.input.objects.iter().enumerate() {
+            if o.has_tag("surface")
+                && o.has_tag("furniture")
+                && ctx.placed[i].is_some()
+                && o.carries_robot.is_none()
+                && !v.contains(&o.group)
+            {
+                v.push(o.group.clone());
+            }
+        }
+        v
+    };
+    for &idx in items {
+        let o = &ctx.input.objects[idx];
+        let tabletop = o.has_tag("tabletop");
+        if tabletop && !hosts.is_empty() {
+            let group = o.group.clone();
+            let k = ctx.instances(&group).iter().position(|&i| i == idx).unwrap_or(0);
+            let host = hosts[k % hosts.len()].clone();
+            if place_on_group(ctx, idx, &host, k / hosts.len()) || hosts.iter().any(|h| place_on_group(ctx, idx, h, 0))
+            {
+                continue;
+            }
+        }
+        floor::place(ctx, idx);
+    }
+}
+
+/// Tries every placed instance of `target` (starting with instance `k`) and every
+/// surface of it, least used first.
+fn place_on_group(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize) -> bool {
+    let mut hosts = ctx.placed_instances(target);
+    if hosts.is_empty() {
+        return false;
+    }
+    let n = hosts.len();
+    hosts.rotate_left(k % n);
+    for (hi, _) in hosts {
+        let nsurf = ctx.input.objects[hi].asset.surfaces.len();
+        let mut order: Vec<usize> = (0..nsurf).collect();
+        let used = ctx.surface_use.entry(hi).or_insert_with(|| vec![Vec::new(); nsurf]).clone();
+        let surfaces = &ctx.input.objects[hi].asset.surfaces;
+        order.sort_by(|&a, &b| {
+            let fa = fill(&used[a]) / surfaces[a].area().max(1e-6);
+            let fb = fill(&used[b]) / surfaces[b].area().max(1e-6);
+            fa.total_cmp(&fb).then(a.cmp(&b))
+        });
+        for si in order {
+            if try_surface(ctx, idx, hi, si) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+fn fill(rects: &[[f64; 4]]) -> f64 {
+    rects.iter().map(|r| (r[2] - r[0]) * (r[3] - r[1])).sum()
+}
+
+fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize) -> bool {
+    let Some(host_spot) = ctx.placed[host].as_ref().map(|p| p.spot) else {
+        return false;
+    };
+    let surf = ctx.input.objects[host].asset.surfaces[si].clone();
+    let b = ctx.bounds[idx];
+    let height = b.max[2] - b.min[2];
+    if let Some(c) = surf.clearance
+        && height > c - 0.01
+    {
+        return false;
+    }
+    let host_name = ctx.input.objects[host].name.clone();
+    // A host with a relation to itself would be odd; an item never rests on itself.
+    if ctx.input.objects[idx].name == host_name {
+        return false;
+    }
+    let flip = ctx.rng.chance(0.5);
+    let yaws = if flip { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
+    let from_right = ctx.rng.chance(0.5);
+    for local_yaw in yaws {
+        let rotated = local_yaw != 0.0;
+        let (ex, ey) = if rotated {
+            (0.5 * (b.max[1] - b.min[1]), 0.5 * (b.max[0] - b.min[0]))
+        } else {
+            (0.5 * (b.max[0] - b.min[0]), 0.5 * (b.max[1] - b.min[1]))
+        };
+        let m = 0.005;
+        let (x0, x1) = (surf.min[0] + ex + m, surf.max[0] - ex - m);
+        let (y0, y1) = (surf.min[1] + ey + m, surf.max[1] - ey - m);
+        if x1 < x0 || y1 < y0 {
+            continue;
+        }
+        // Offset of the item's origin from its footprint centre, in the surface frame.
+        let (cx, cy) = (0.5 * (b.min[0] + b.max[0]), 0.5 * (b.min[1] + b.max[1]));
+        let (ox, oy) = if rotated { (-cy, cx) } else { (cx, cy) };
+        let nx = ((x1 - x0) / STEP).floor() as usize;
+        let ny = ((y1 - y0) / STEP).floor() as usize;
+        for j in 0..=ny {
+            for i in 0..=nx {
+                let x = if from_right { x1 - i as f64 * STEP } else { x0 + i as f64 * STEP };
+                let y = y0 + j as f64 * STEP;
+                let rect = [x - ex, y - ey, x + ex, y + ey];
+                let used = ctx.surface_use.get(&host).and_then(|u| u.get(si));
+                if used.is_some_and(|u| u.iter().any(|r| rects_overlap(r, &rect, SURFACE_GAP))) {
+                    continue;
+                }
+                let origin = host_spot.apply([x - ox, y - oy, surf.z - b.min[2]]);
+                let spot = Spot::new(origin[0], origin[1], origin[2], host_spot.yaw + local_yaw);
+                let boxes = spot.boxes(&ctx.local[idx]);
+                if !ctx.space.fits(&boxes, 0.004, &[], false, &[]) {
+                    continue;
+                }
+                ctx.commit(idx, spot, Support::Object { object: host_name, surface: surf.name.clone() });
+                let nsurf = ctx.input.objects[host].asset.surfaces.len();
+                ctx.surface_use.entry(host).or_insert_with(|| vec![Vec::new(); nsurf])[si].push(rect);
+                return true;
+            }
+        }
+    }
+    false
+}
+
+fn rects_overlap(a: &[f64; 4], b: &[f64; 4], gap: f64) -> bool {
+    a[0] < b[2] + gap && b[0] < a[2] + gap && a[1] < b[3] + gap && b[1] < a[3] + gap
+}

@@ -1,0 +1,199 @@
+//! L2, offline: every object instance of the plan becomes an asset from the procedural
+//! catalog (or a labelled proxy), and every robot gets its mount.
+
+use sw_catalog::{AssetRequest, CatalogError};
+use sw_geom::{Asset, Rng};
+use sw_layout::{RobotItem, RobotMount};
+use sw_plan::{Mount, ObjectPlan, ScenePlan, SizeHint, Stage, Warning};
+use sw_robots::RobotKind;
+
+/// One object instance with its asset.
+#[derive(Debug, Clone)]
+pub struct ForgedObject {
+    pub name: String,
+    pub group: String,
+    pub category: String,
+    pub label: String,
+    pub asset: Asset,
+    pub tags: Vec<String>,
+    pub carries_robot: Option<String>,
+}
+
+#[derive(Debug, Clone, Default)]
+pub struct Forged {
+    pub objects: Vec<ForgedObject>,
+    pub robots: Vec<RobotItem>,
+    pub warnings: Vec<Warning>,
+}
+
+/// Builds every asset of the plan.
+pub fn forge(plan: &ScenePlan, seed: u64) -> Forged {
+    let mut out = Forged::default();
+    let mut counters: std::collections::BTreeMap<String, u32> = std::collections::BTreeMap::new();
+    let mut next_name = |base: &str| {
+        let n = counters.entry(base.to_string()).or_insert(0);
+        *n += 1;
+        format!("{base}_{n}")
+    };
+    for group in &plan.objects {
+        let mut noted = false;
+        for k in 0..group.count {
+            let (asset, tags, label) = match make(group, k, seed) {
+                Ok(x) => x,
+                Err(e) => {
+                    out.warnings.push(Warning::new(
+                        Stage::Forge,
+                        "asset_fallback",
+                        format!("{}: {e}; used a labelled proxy", group.phrase),
+                    ));
+                    let size = sw_catalog::find(&group.category).map_or([0.5, 0.5, 0.5], |c| c.default_size());
+                    let a =
+                        sw_catalog::proxy_asset(&group.category, size, false, None, instance_seed(seed, &group.id, k));
+                    (a, vec!["proxy".to_string()], group.category.replace('_', " "))
+                }
+            };
+            if !noted && !asset.notes.is_empty() {
+                for n in &asset.notes {
+                    if !n.contains("labelled proxy") {
+                        out.warnings.push(Warning::new(Stage::Forge, "size_clamped", format!("{}: {n}", group.phrase)));
+                    }
+                }
+                noted = true;
+            }
+            let base = if group.category == "proxy" { slug(&label) } else { group.category.clone() };
+            out.objects.push(ForgedObject {
+                name: next_name(&base),
+                group: group.id.clone(),
+                category: group.category.clone(),
+                label,
+                asset,
+                tags,
+                carries_robot: None,
+            });
+        }
+    }
+    // Robots and their mounts.
+    let surface_group = plan
+        .objects
+        .iter()
+        .find(|o| {
+            sw_catalog::find(&o.category)
+                .is_some_and(|c| c.has_tag("surface") && c.has_tag("furniture") && c.name != "chair")
+        })
+        .map(|o| o.id.clone());
+    let mut robot_counter: std::collections::BTreeMap<String, u32> = std::collections::BTreeMap::new();
+    for r in &plan.robots {
+        let Some(def) = sw_robots::find(&r.model) else {
+            out.warnings.push(Warning::new(
+                Stage::Forge,
+                "robot_unknown",
+                format!("{}: no robot model '{}'", r.phrase, r.model),
+            ));
+            continue;
+        };
+        for _ in 0..r.count {
+            let n = robot_counter.entry(def.name.to_string()).or_insert(0);
+            *n += 1;
+            let name = format!("{}_{n}", def.name);
+            let is_arm = def.kind == RobotKind::Arm;
+            let mut carrier = |category: &str, out: &mut Forged| -> RobotMount {
+                let req = AssetRequest::new(category, instance_seed(seed, &name, 0));
+                let asset = sw_catalog::generate(&req)
+                    .unwrap_or_else(|_| sw_catalog::proxy_asset(category, [0.5, 0.5, 0.7], false, None, 0));
+                let tags = sw_catalog::find(category)
+                    .map(|c| c.tags.iter().map(|t| t.to_string()).collect())
+                    .unwrap_or_default();
+                let object = next_name(category);
+                out.objects.push(ForgedObject {
+                    name: object.clone(),
+                    group: format!("{}_mount", r.id),
+                    category: category.to_string(),
+                    label: category.replace('_', " "),
+                    asset,
+                    tags,
+                    carries_robot: Some(name.clone()),
+                });
+                RobotMount::Carrier { object }
+            };
+            let mount = match (&r.mount, is_arm) {
+                (_, false) => RobotMount::Floor,
+                (Mount::OnSurface { target }, true) => RobotMount::Surface { group: target.clone() },
+                (Mount::Pedestal, true) => carrier("pedestal", &mut out),
+                (Mount::MobileBase, true) => carrier("mobile_cart", &mut out),
+                (Mount::Floor, true) => RobotMount::Floor,
+                (Mount::Auto, true) => match (&surface_group, &r.near) {
+                    (Some(g), None) => RobotMount::Surface { group: g.clone() },
+                    _ => carrier("pedestal", &mut out),
+                },
+            };
+            out.robots.push(RobotItem {
+                name,
+                group: r.id.clone(),
+                model: def.name.to_string(),
+                is_arm,
+                keepout: def.keepout.iter().map(|(lo, hi)| sw_geom::Aabb { min: *lo, max: *hi }).collect(),
+                base_radius: def.base_radius,
+                reach: def.reach,
+                mount,
+                near: r.near.clone(),
+            });
+        }
+    }
+    out
+}
+
+/// The seed of instance `k` of a group: independent of other groups and of order.
+fn instance_seed(seed: u64, group: &str, k: u32) -> u64 {
+    Rng::derive(seed, &format!("{group}#{k}")).next_u64()
+}
+
+fn make(group: &ObjectPlan, k: u32, seed: u64) -> Result<(Asset, Vec<String>, String), CatalogError> {
+    let color = group.color.as_ref().map(|c| c.rgba.map(|v| v as f32));
+    if let Some(p) = &group.proxy {
+        let s = instance_seed(seed, &group.id, k);
+        let a = sw_catalog::proxy_asset(&p.label, [p.size.width, p.size.depth, p.size.height], p.movable, color, s);
+        let mut tags = vec!["proxy".to_string()];
+        if p.movable {
+            tags.push("tabletop".into());
+        }
+        return Ok((a, tags, p.label.clone()));
+    }
+    let cat = sw_catalog::find(&group.category).ok_or_else(|| CatalogError::UnknownCategory(group.category.clone()))?;
+    // Identical-looking groups share one seed; boxes and plants vary per instance.
+    let s = instance_seed(seed, &group.id, if cat.vary_per_instance { k } else { 0 });
+    let mut req = AssetRequest::new(cat.name, s);
+    req.scale = scale_of(&group.size);
+    req.color = color;
+    for (name, v) in [
+        ("width", group.size.explicit.width),
+        ("depth", group.size.explicit.depth),
+        ("height", group.size.explicit.height),
+    ] {
+        if let Some(v) = v {
+            req.overrides.push((name.to_string(), v));
+        }
+    }
+    let asset = sw_catalog::generate(&req)?;
+    Ok((asset, cat.tags.iter().map(|t| t.to_string()).collect(), cat.display.to_string()))
+}
+
+fn scale_of(hint: &SizeHint) -> Option<[f64; 3]> {
+    if hint.words.is_empty() {
+        return None;
+    }
+    let mut s = [1.0; 3];
+    for w in &hint.words {
+        let f = w.factors();
+        for i in 0..3 {
+            s[i] *= f[i];
+        }
+    }
+    Some(s)
+}
+
+fn slug(label: &str) -> String {
+    let s: String =
+        label.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_lowercase() } else { '_' }).collect();
+    let s = s.trim_matches('_').to_string();
+    if s.is_empty() { "object".into() } else { s }
+}

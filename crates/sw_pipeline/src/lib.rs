@@ -1,0 +1,236 @@
+//! The coordinator: prompt → plan (L1) → assets (L2) → layout (L3) → MJCF (L4) →
+//! verification in MuJoCo → package on disk.
+//!
+//! The same [`generate`] runs behind the CLI, the benchmarks and (later) the server's
+//! workers. Every stage reports progress through a callback and records its wall-clock
+//! time. The package is written to a temporary sibling directory and renamed into place
+//! only when complete, so an interrupted or failed run never leaves half a package.
+
+mod forge;
+mod package;
+mod report;
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::Serialize;
+use sw_plan::{
+    LaidOutScene, Mount, Report, RobotPlan, ScenePlan, Stage, StageTiming, Status, Timings, Verification, Warning,
+};
+use tracing::info_span;
+
+pub use forge::{Forged, ForgedObject, forge};
+pub use package::{OutputError, validate_dir};
+
+/// How to run the pipeline.
+#[derive(Debug, Clone)]
+pub struct Options {
+    pub seed: u64,
+    /// Compile and settle the package in MuJoCo (on by default).
+    pub verify: bool,
+    /// Replace the prompt's robots with these registry models (`--robot`); an empty list
+    /// removes all robots.
+    pub robots: Option<Vec<String>>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self { seed: 0, verify: true, robots: None }
+    }
+}
+
+/// A progress event.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "event", rename_all = "snake_case")]
+pub enum Event {
+    StageStarted { stage: Stage },
+    StageFinished { stage: Stage, ms: f64, summary: String },
+    Note { stage: Stage, message: String },
+}
+
+/// Why a run did not produce a package.
+#[derive(Debug, thiserror::Error)]
+pub enum PipelineError {
+    /// The prompt or options are unusable (exit code 2).
+    #[error("{0}")]
+    Input(String),
+    /// The output directory is unusable (exit code 2).
+    #[error(transparent)]
+    Output(#[from] OutputError),
+    /// A bug or an environment failure (exit code 1).
+    #[error("internal error: {0}")]
+    Internal(String),
+}
+
+impl PipelineError {
+    /// The process exit code for this error.
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            PipelineError::Input(_) | PipelineError::Output(_) => 2,
+            PipelineError::Internal(_) => 1,
+        }
+    }
+}
+
+/// What a run produced.
+#[derive(Debug)]
+pub struct Outcome {
+    pub plan: ScenePlan,
+    pub layout: LaidOutScene,
+    pub report: Report,
+    pub timings: Timings,
+    pub out_dir: PathBuf,
+}
+
+/// Repair rounds: objects that fail verification are removed and the scene re-checked.
+const MAX_REPAIRS: usize = 3;
+
+/// Runs the whole pipeline and writes the package to `out` (which must not exist or be
+/// an empty directory).
+pub fn generate(
+    prompt: &str,
+    out: &Path,
+    opts: &Options,
+    on_event: &mut dyn FnMut(&Event),
+) -> Result<Outcome, PipelineError> {
+    let started = Instant::now();
+    let staging = package::Staging::create(out)?;
+    let mut timings = Timings::default();
+    let stage = |s: Stage, on_event: &mut dyn FnMut(&Event)| {
+        on_event(&Event::StageStarted { stage: s });
+        Instant::now()
+    };
+    let finish = |s: Stage, t0: Instant, summary: String, timings: &mut Timings, on_event: &mut dyn FnMut(&Event)| {
+        let ms = t0.elapsed().as_secs_f64() * 1000.0;
+        match timings.stages.iter_mut().find(|x| x.stage == s) {
+            Some(x) => x.ms += ms,
+            None => timings.stages.push(StageTiming { stage: s, ms }),
+        }
+        on_event(&Event::StageFinished { stage: s, ms, summary });
+    };
+
+    // L1
+    let t = stage(Stage::Plan, on_event);
+    let mut plan = {
+        let _s = info_span!("stage", stage = "plan").entered();
+        sw_planner::plan(prompt).map_err(|e| PipelineError::Input(e.to_string()))?
+    };
+    if let Some(models) = &opts.robots {
+        plan.robots = robots_override(models)?;
+    }
+    finish(Stage::Plan, t, report::plan_summary(&plan), &mut timings, on_event);
+
+    // L2
+    let t = stage(Stage::Forge, on_event);
+    let forged = {
+        let _s = info_span!("stage", stage = "forge").entered();
+        forge(&plan, opts.seed)
+    };
+    finish(Stage::Forge, t, format!("{} assets", forged.objects.len()), &mut timings, on_event);
+
+    // L3
+    let t = stage(Stage::Layout, on_event);
+    let mut layout = {
+        let _s = info_span!("stage", stage = "layout").entered();
+        let input = sw_layout::LayoutInput {
+            plan: &plan,
+            objects: forged
+                .objects
+                .iter()
+                .map(|o| sw_layout::ObjectItem {
+                    name: o.name.clone(),
+                    group: o.group.clone(),
+                    category: o.category.clone(),
+                    label: o.label.clone(),
+                    asset: &o.asset,
+                    tags: o.tags.clone(),
+                    carries_robot: o.carries_robot.clone(),
+                })
+                .collect(),
+            robots: forged.robots.clone(),
+            seed: opts.seed,
+        };
+        sw_layout::solve(&input)
+    };
+    finish(Stage::Layout, t, report::layout_summary(&layout), &mut timings, on_event);
+
+    let mut warnings: Vec<Warning> = forged.warnings.clone();
+    let mut verification: Option<Verification> = None;
+    for round in 0..=MAX_REPAIRS {
+        // L4
+        let t = stage(Stage::Bridge, on_event);
+        let files = {
+            let _s = info_span!("stage", stage = "bridge").entered();
+            package::bridge(prompt, &layout, &forged).map_err(|e| PipelineError::Internal(e.to_string()))?
+        };
+        staging.write_scene(&files, &plan, &layout)?;
+        finish(
+            Stage::Bridge,
+            t,
+            format!("{} bodies, {} meshes", layout.objects.len() + layout.robots.len(), files.meshes.len()),
+            &mut timings,
+            on_event,
+        );
+        if !opts.verify {
+            break;
+        }
+        let t = stage(Stage::Verify, on_event);
+        let v = {
+            let _s = info_span!("stage", stage = "verify").entered();
+            let vopts = sw_sim::VerifyOptions {
+                robots: layout.robots.iter().map(|r| r.name.clone()).collect(),
+                ..Default::default()
+            };
+            sw_sim::verify_file(&staging.path().join("scene.xml"), &vopts)
+        };
+        finish(Stage::Verify, t, report::verify_summary(&v), &mut timings, on_event);
+        let repairable = !v.passed && v.compiled && round < MAX_REPAIRS;
+        let removed = if repairable { report::repair(&mut layout, &v) } else { Vec::new() };
+        verification = Some(v);
+        if removed.is_empty() {
+            break;
+        }
+        for (name, why) in removed {
+            let message = format!("{name} was removed: {why}");
+            on_event(&Event::Note { stage: Stage::Verify, message: message.clone() });
+            warnings.push(Warning::new(Stage::Verify, "removed_after_verification", message));
+        }
+    }
+
+    timings.total_ms = started.elapsed().as_secs_f64() * 1000.0;
+    let report = report::assemble(&plan, &layout, opts.seed, warnings, verification);
+    staging.write_report(&report, &timings)?;
+    let out_dir = staging.commit()?;
+    Ok(Outcome { plan, layout, report, timings, out_dir })
+}
+
+fn robots_override(models: &[String]) -> Result<Vec<RobotPlan>, PipelineError> {
+    let mut out: Vec<RobotPlan> = Vec::new();
+    for m in models {
+        let m = m.trim().to_lowercase();
+        if m.is_empty() || m == "none" {
+            continue;
+        }
+        let def = sw_robots::find(&m).ok_or_else(|| {
+            let known: Vec<&str> = sw_robots::registry().iter().map(|r| r.name).collect();
+            PipelineError::Input(format!("unknown robot '{m}' (known: {})", known.join(", ")))
+        })?;
+        match out.iter_mut().find(|r| r.model == def.name) {
+            Some(r) => r.count += 1,
+            None => out.push(RobotPlan {
+                id: def.name.to_string(),
+                model: def.name.to_string(),
+                phrase: format!("--robot {m}"),
+                count: 1,
+                mount: Mount::Auto,
+                near: None,
+            }),
+        }
+    }
+    Ok(out)
+}
+
+/// True when the report's verification passed (or was skipped on request).
+pub fn succeeded(report: &Report) -> bool {
+    report.status != Status::Failed
+}

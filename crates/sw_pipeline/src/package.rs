@@ -1,0 +1,152 @@
+//! The package on disk: staged in a hidden sibling directory, renamed into place when
+//! complete, removed if anything fails.
+
+use std::path::{Path, PathBuf};
+
+use fs_err as fs;
+use sw_mjcf::{RobotInput, SceneFiles, SceneInput};
+use sw_plan::{LaidOutScene, Report, ScenePlan, Timings, Verification};
+
+use crate::forge::Forged;
+
+/// An output directory that cannot be used. Nothing is written when this is returned.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    #[error("output directory '{0}' already exists and is not empty; choose a new path or remove it")]
+    NotEmpty(PathBuf),
+    #[error("output path '{0}' exists and is not a directory")]
+    NotADirectory(PathBuf),
+    #[error("cannot write the package to '{path}': {reason}")]
+    Unwritable { path: PathBuf, reason: String },
+    #[error("'{0}' is not a scene package (no scene.xml)")]
+    NotAPackage(PathBuf),
+}
+
+fn unwritable(path: &Path, e: &std::io::Error) -> OutputError {
+    OutputError::Unwritable { path: path.to_path_buf(), reason: e.kind().to_string() }
+}
+
+/// A package being written.
+#[derive(Debug)]
+pub(crate) struct Staging {
+    tmp: PathBuf,
+    dest: PathBuf,
+    committed: bool,
+}
+
+impl Staging {
+    pub fn create(dest: &Path) -> Result<Self, OutputError> {
+        if dest.exists() {
+            if !dest.is_dir() {
+                return Err(OutputError::NotADirectory(dest.to_path_buf()));
+            }
+            let mut entries = std::fs::read_dir(dest).map_err(|e| unwritable(dest, &e))?;
+            if entries.next().is_some() {
+                return Err(OutputError::NotEmpty(dest.to_path_buf()));
+            }
+        }
+        let name =
+            dest.file_name().and_then(|n| n.to_str()).filter(|n| !n.is_empty() && *n != "." && *n != "..").ok_or_else(
+                || OutputError::Unwritable { path: dest.to_path_buf(), reason: "not a directory name".into() },
+            )?;
+        let parent = match dest.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        std::fs::create_dir_all(&parent).map_err(|e| unwritable(&parent, &e))?;
+        let stamp = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.subsec_nanos());
+        let tmp = parent.join(format!(".{name}.partial-{}-{stamp}", std::process::id()));
+        std::fs::create_dir(&tmp).map_err(|e| unwritable(dest, &e))?;
+        Ok(Self { tmp, dest: dest.to_path_buf(), committed: false })
+    }
+
+    pub fn path(&self) -> &Path {
+        &self.tmp
+    }
+
+    fn write(&self, rel: &str, bytes: &[u8]) -> Result<(), OutputError> {
+        let path = self.tmp.join(rel);
+        fs::write(&path, bytes)
+            .map_err(|e| OutputError::Unwritable { path: self.dest.join(rel), reason: e.to_string() })
+    }
+
+    fn json<T: serde::Serialize>(&self, rel: &str, value: &T) -> Result<(), OutputError> {
+        let mut text = serde_json::to_string_pretty(value)
+            .map_err(|e| OutputError::Unwritable { path: self.dest.join(rel), reason: e.to_string() })?;
+        text.push('\n');
+        self.write(rel, text.as_bytes())
+    }
+
+    /// Writes the MJCF, meshes, plan and layout (again, after a repair round).
+    pub fn write_scene(&self, files: &SceneFiles, plan: &ScenePlan, layout: &LaidOutScene) -> Result<(), OutputError> {
+        let assets = self.tmp.join("assets");
+        if assets.exists() {
+            std::fs::remove_dir_all(&assets).map_err(|e| unwritable(&assets, &e))?;
+        }
+        std::fs::create_dir(&assets).map_err(|e| unwritable(&assets, &e))?;
+        for m in &files.meshes {
+            self.write(&format!("assets/{}", m.file_name), &m.bytes)?;
+        }
+        self.write("scene.xml", files.scene_xml.as_bytes())?;
+        self.write("scene_only.xml", files.scene_only_xml.as_bytes())?;
+        self.json("plan.json", plan)?;
+        self.json("layout.json", layout)
+    }
+
+    pub fn write_report(&self, report: &Report, timings: &Timings) -> Result<(), OutputError> {
+        self.json("report.json", report)?;
+        self.json("timings.json", timings)
+    }
+
+    /// Moves the finished package into place.
+    pub fn commit(mut self) -> Result<PathBuf, OutputError> {
+        if self.dest.exists() {
+            // Checked empty at the start; replaced by the finished package.
+            std::fs::remove_dir(&self.dest).map_err(|e| unwritable(&self.dest, &e))?;
+        }
+        std::fs::rename(&self.tmp, &self.dest).map_err(|e| unwritable(&self.dest, &e))?;
+        self.committed = true;
+        Ok(self.dest.clone())
+    }
+}
+
+impl Drop for Staging {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = std::fs::remove_dir_all(&self.tmp);
+        }
+    }
+}
+
+/// L4: MJCF and meshes for the layout, with the robots merged.
+pub(crate) fn bridge(prompt: &str, layout: &LaidOutScene, forged: &Forged) -> Result<SceneFiles, sw_mjcf::BridgeError> {
+    let assets: Vec<&sw_geom::Asset> = layout
+        .objects
+        .iter()
+        .filter_map(|o| forged.objects.iter().find(|f| f.name == o.name).map(|f| &f.asset))
+        .collect();
+    let sources: Vec<(String, String, &'static str)> = layout
+        .robots
+        .iter()
+        .filter_map(|r| sw_robots::find(&r.model).map(|d| (r.name.clone(), format!("built-in {}", d.name), d.mjcf)))
+        .collect();
+    let robots: Vec<RobotInput<'_>> = sources
+        .iter()
+        .map(|(name, source, mjcf)| RobotInput { name: name.as_str(), source: source.as_str(), mjcf })
+        .collect();
+    sw_mjcf::write_scene(&SceneInput { prompt, layout, assets, robots })
+}
+
+/// Re-verifies a package directory in MuJoCo.
+pub fn validate_dir(dir: &Path) -> Result<Verification, OutputError> {
+    let scene = dir.join("scene.xml");
+    if !scene.is_file() {
+        return Err(OutputError::NotAPackage(dir.to_path_buf()));
+    }
+    let robots = std::fs::read_to_string(dir.join("layout.json"))
+        .ok()
+        .and_then(|t| serde_json::from_str::<LaidOutScene>(&t).ok())
+        .map(|l| l.robots.into_iter().map(|r| r.name).collect())
+        .unwrap_or_default();
+    Ok(sw_sim::verify_file(&scene, &sw_sim::VerifyOptions { robots, ..Default::default() }))
+}

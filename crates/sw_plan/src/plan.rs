@@ -1,0 +1,475 @@
+//! L1's output: what the user asked for, in symbols. No geometry, no poses.
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+use crate::{Corner, Dims, NamedColor, SCHEMA_VERSION, Wall};
+
+/// The structured reading of a prompt: the room, the objects with counts and size hints,
+/// the relations between them, the robots and how they are mounted, and an honest list
+/// of what was not understood or only approximated.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ScenePlan {
+    pub schema_version: u32,
+    /// The prompt as the user typed it (after trimming).
+    pub prompt: String,
+    pub room: RoomPlan,
+    /// Object groups: one entry per phrase ("six cardboard boxes" is one group of 6).
+    pub objects: Vec<ObjectPlan>,
+    pub relations: Vec<Relation>,
+    pub robots: Vec<RobotPlan>,
+    /// The industrial rules profile the layout checks (by default the room kind's).
+    pub rules_profile: String,
+    /// Controlled violations to inject, for anomaly-detection datasets.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub anomaly: Option<AnomalyRequest>,
+    pub understanding: Understanding,
+}
+
+impl ScenePlan {
+    /// An empty plan for `room`, with the room kind's rules profile.
+    pub fn new(prompt: &str, room: RoomPlan) -> Self {
+        Self {
+            schema_version: SCHEMA_VERSION,
+            prompt: prompt.to_string(),
+            rules_profile: room.kind.rules_profile().to_string(),
+            room,
+            objects: Vec::new(),
+            relations: Vec::new(),
+            robots: Vec::new(),
+            anomaly: None,
+            understanding: Understanding::default(),
+        }
+    }
+
+    pub fn object(&self, id: &str) -> Option<&ObjectPlan> {
+        self.objects.iter().find(|o| o.id == id)
+    }
+
+    /// Relations whose subject is the object group `id`.
+    pub fn relations_of<'a>(&'a self, id: &'a str) -> impl Iterator<Item = &'a RelationKind> + 'a {
+        self.relations.iter().filter(move |r| r.subject == id).map(|r| &r.kind)
+    }
+
+    /// Total number of object instances requested.
+    pub fn object_count(&self) -> u32 {
+        self.objects.iter().map(|o| o.count).sum()
+    }
+}
+
+/// The room: its kind, its size and whether the user fixed that size.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RoomPlan {
+    pub kind: RoomKind,
+    pub size: Dims,
+    /// True when the prompt gave the size; layout may grow a room only when false.
+    pub size_fixed: bool,
+    /// The wall with the door.
+    pub door: Wall,
+}
+
+/// Kinds of rooms the planner knows, each with a default size and rules profile.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum RoomKind {
+    Warehouse,
+    StorageRoom,
+    Lab,
+    Kitchen,
+    Office,
+    Workshop,
+    Garage,
+    CleanRoom,
+    RetailStore,
+    Pharmacy,
+    Classroom,
+    DataCentre,
+    LoadingDock,
+    Greenhouse,
+    Closet,
+    Factory,
+    Hospital,
+    LivingRoom,
+    /// A small room around a table, for manipulation.
+    Tabletop,
+    /// No kind was named.
+    Room,
+}
+
+impl RoomKind {
+    pub const ALL: [RoomKind; 20] = [
+        RoomKind::Warehouse,
+        RoomKind::StorageRoom,
+        RoomKind::Lab,
+        RoomKind::Kitchen,
+        RoomKind::Office,
+        RoomKind::Workshop,
+        RoomKind::Garage,
+        RoomKind::CleanRoom,
+        RoomKind::RetailStore,
+        RoomKind::Pharmacy,
+        RoomKind::Classroom,
+        RoomKind::DataCentre,
+        RoomKind::LoadingDock,
+        RoomKind::Greenhouse,
+        RoomKind::Closet,
+        RoomKind::Factory,
+        RoomKind::Hospital,
+        RoomKind::LivingRoom,
+        RoomKind::Tabletop,
+        RoomKind::Room,
+    ];
+
+    /// The snake_case name used in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            RoomKind::Warehouse => "warehouse",
+            RoomKind::StorageRoom => "storage_room",
+            RoomKind::Lab => "lab",
+            RoomKind::Kitchen => "kitchen",
+            RoomKind::Office => "office",
+            RoomKind::Workshop => "workshop",
+            RoomKind::Garage => "garage",
+            RoomKind::CleanRoom => "clean_room",
+            RoomKind::RetailStore => "retail_store",
+            RoomKind::Pharmacy => "pharmacy",
+            RoomKind::Classroom => "classroom",
+            RoomKind::DataCentre => "data_centre",
+            RoomKind::LoadingDock => "loading_dock",
+            RoomKind::Greenhouse => "greenhouse",
+            RoomKind::Closet => "closet",
+            RoomKind::Factory => "factory",
+            RoomKind::Hospital => "hospital",
+            RoomKind::LivingRoom => "living_room",
+            RoomKind::Tabletop => "tabletop",
+            RoomKind::Room => "room",
+        }
+    }
+
+    /// A typical size for a room of this kind (width × depth × height, m).
+    pub fn default_size(self) -> Dims {
+        let (w, d, h) = match self {
+            RoomKind::Warehouse => (20.0, 14.0, 6.0),
+            RoomKind::StorageRoom => (6.0, 4.0, 3.0),
+            RoomKind::Lab => (8.0, 6.0, 3.0),
+            RoomKind::Kitchen => (5.0, 4.0, 2.7),
+            RoomKind::Office => (8.0, 6.0, 3.0),
+            RoomKind::Workshop => (10.0, 8.0, 4.0),
+            RoomKind::Garage => (7.0, 6.0, 3.0),
+            RoomKind::CleanRoom => (8.0, 6.0, 3.0),
+            RoomKind::RetailStore => (12.0, 10.0, 3.5),
+            RoomKind::Pharmacy => (8.0, 6.0, 3.0),
+            RoomKind::Classroom => (9.0, 7.0, 3.0),
+            RoomKind::DataCentre => (12.0, 10.0, 3.5),
+            RoomKind::LoadingDock => (16.0, 12.0, 6.0),
+            RoomKind::Greenhouse => (10.0, 6.0, 3.5),
+            RoomKind::Closet => (2.0, 1.5, 2.4),
+            RoomKind::Factory => (30.0, 20.0, 8.0),
+            RoomKind::Hospital => (6.0, 5.0, 3.0),
+            RoomKind::LivingRoom => (6.0, 5.0, 2.7),
+            RoomKind::Tabletop => (4.0, 4.0, 3.0),
+            RoomKind::Room => (6.0, 5.0, 3.0),
+        };
+        Dims::new(w, d, h)
+    }
+
+    /// The industrial rules profile that applies by default.
+    pub fn rules_profile(self) -> &'static str {
+        match self {
+            RoomKind::Warehouse | RoomKind::LoadingDock | RoomKind::StorageRoom => "warehouse",
+            RoomKind::Workshop | RoomKind::Factory | RoomKind::Garage => "industrial",
+            RoomKind::Lab | RoomKind::CleanRoom | RoomKind::Pharmacy | RoomKind::Hospital => "laboratory",
+            RoomKind::DataCentre => "data_centre",
+            RoomKind::Kitchen => "kitchen",
+            RoomKind::RetailStore | RoomKind::Classroom | RoomKind::Office => "commercial",
+            RoomKind::Greenhouse => "agricultural",
+            RoomKind::Closet | RoomKind::LivingRoom | RoomKind::Tabletop | RoomKind::Room => "general",
+        }
+    }
+}
+
+/// One phrase's worth of objects: a category, a count and what was said about them.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ObjectPlan {
+    /// Unique within the plan; relations refer to groups by this id.
+    pub id: String,
+    /// Catalog category, or `proxy` for a labelled stand-in.
+    pub category: String,
+    /// The words of the prompt this group came from.
+    pub phrase: String,
+    #[schemars(range(min = 1))]
+    pub count: u32,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub color: Option<NamedColor>,
+    #[serde(default, skip_serializing_if = "SizeHint::is_empty")]
+    pub size: SizeHint,
+    /// Set when no catalog category fits: the stand-in's label and size.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub proxy: Option<ProxyPlan>,
+}
+
+/// What the prompt said about an object's size.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SizeHint {
+    /// Size words, in the order they were written ("large", "tall").
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub words: Vec<SizeWord>,
+    /// Explicit dimensions ("a 2 m tall shelf"), m.
+    #[serde(default, skip_serializing_if = "ExplicitSize::is_empty")]
+    pub explicit: ExplicitSize,
+}
+
+impl SizeHint {
+    pub fn is_empty(&self) -> bool {
+        self.words.is_empty() && self.explicit.is_empty()
+    }
+}
+
+/// Explicit dimensions given in the prompt; any may be absent.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ExplicitSize {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub width: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub depth: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height: Option<f64>,
+}
+
+impl ExplicitSize {
+    pub fn is_empty(&self) -> bool {
+        self.width.is_none() && self.depth.is_none() && self.height.is_none()
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum SizeWord {
+    Tiny,
+    Small,
+    Large,
+    Huge,
+    Tall,
+    Short,
+    Long,
+    Wide,
+    Narrow,
+}
+
+impl SizeWord {
+    /// Scale factors (width, depth, height) this word applies to a default size.
+    pub fn factors(self) -> [f64; 3] {
+        match self {
+            SizeWord::Tiny => [0.55; 3],
+            SizeWord::Small => [0.75; 3],
+            SizeWord::Large => [1.3; 3],
+            SizeWord::Huge => [1.7; 3],
+            SizeWord::Tall => [1.0, 1.0, 1.35],
+            SizeWord::Short => [1.0, 1.0, 0.7],
+            SizeWord::Long => [1.4, 1.0, 1.0],
+            SizeWord::Wide => [1.35, 1.0, 1.0],
+            SizeWord::Narrow => [0.7, 1.0, 1.0],
+        }
+    }
+}
+
+/// A stand-in for a noun with no catalog asset: a box of a plausible size, labelled.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ProxyPlan {
+    pub label: String,
+    /// The size prior used ("tabletop item", "floor object", …).
+    pub prior: String,
+    pub size: Dims,
+    /// True for small items that rest freely (simulated with a free joint).
+    pub movable: bool,
+}
+
+/// A spatial relation of an object group to the room or to other groups.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Relation {
+    /// The group the relation constrains.
+    pub subject: String,
+    #[serde(flatten)]
+    pub kind: RelationKind,
+}
+
+/// The relations the planner and the layout understand.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(tag = "relation", rename_all = "snake_case")]
+pub enum RelationKind {
+    /// Resting on a surface of `target` ("boxes on the shelves").
+    On {
+        target: String,
+    },
+    /// Underneath `target` ("a bin under the bench").
+    Under {
+        target: String,
+    },
+    /// Back to a wall; any wall when `wall` is absent.
+    AgainstWall {
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        wall: Option<Wall>,
+    },
+    /// Beside `target`.
+    NextTo {
+        target: String,
+    },
+    /// In the gap between two groups.
+    Between {
+        first: String,
+        second: String,
+    },
+    /// The group's instances stand in a row or a line.
+    InRow,
+    /// The group's instances face each other (two rows, across an aisle).
+    FacingEachOther,
+    /// Directly in front of `target` (in its front clearance).
+    InFrontOf {
+        target: String,
+    },
+    /// Spread around `target` (chairs around a table).
+    Around {
+        target: String,
+    },
+    /// At one end of the room; a specific end when `wall` is given.
+    AtEnd {
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        wall: Option<Wall>,
+    },
+    NearDoor,
+    InCorner {
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        corner: Option<Corner>,
+    },
+    /// In the middle of the room.
+    InCenter,
+}
+
+impl RelationKind {
+    /// The object groups this relation refers to (besides its subject).
+    pub fn targets(&self) -> Vec<&str> {
+        match self {
+            RelationKind::On { target }
+            | RelationKind::Under { target }
+            | RelationKind::NextTo { target }
+            | RelationKind::InFrontOf { target }
+            | RelationKind::Around { target } => vec![target.as_str()],
+            RelationKind::Between { first, second } => vec![first.as_str(), second.as_str()],
+            RelationKind::AgainstWall { .. }
+            | RelationKind::InRow
+            | RelationKind::FacingEachOther
+            | RelationKind::AtEnd { .. }
+            | RelationKind::NearDoor
+            | RelationKind::InCorner { .. }
+            | RelationKind::InCenter => Vec::new(),
+        }
+    }
+
+    /// The snake_case name of the relation.
+    pub fn name(&self) -> &'static str {
+        match self {
+            RelationKind::On { .. } => "on",
+            RelationKind::Under { .. } => "under",
+            RelationKind::AgainstWall { .. } => "against_wall",
+            RelationKind::NextTo { .. } => "next_to",
+            RelationKind::Between { .. } => "between",
+            RelationKind::InRow => "in_row",
+            RelationKind::FacingEachOther => "facing_each_other",
+            RelationKind::InFrontOf { .. } => "in_front_of",
+            RelationKind::Around { .. } => "around",
+            RelationKind::AtEnd { .. } => "at_end",
+            RelationKind::NearDoor => "near_door",
+            RelationKind::InCorner { .. } => "in_corner",
+            RelationKind::InCenter => "in_center",
+        }
+    }
+}
+
+/// A robot request: which model, how many, and where it is mounted.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RobotPlan {
+    /// Unique within the plan.
+    pub id: String,
+    /// Registry name of the model that will be used (e.g. `ur5e`, `turtlebot3`).
+    pub model: String,
+    /// The words of the prompt ("a UR5", "two TurtleBots").
+    pub phrase: String,
+    #[schemars(range(min = 1))]
+    pub count: u32,
+    pub mount: Mount,
+    /// An object group the robot should work next to ("a UR5e next to the conveyor").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub near: Option<String>,
+}
+
+/// Where a robot stands.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(tag = "mount", rename_all = "snake_case")]
+pub enum Mount {
+    /// The layout decides: arms on a work surface if there is one, else on a pedestal.
+    Auto,
+    Floor,
+    /// On a surface of the object group `target` (a bench, a table).
+    OnSurface {
+        target: String,
+    },
+    Pedestal,
+    /// On a mobile cart or base.
+    MobileBase,
+}
+
+/// Kinds of controlled violations for anomaly datasets.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum AnomalyKind {
+    Overlap,
+    Scale,
+    Misplacement,
+    Floating,
+    RuleViolation,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AnomalyRequest {
+    pub kinds: Vec<AnomalyKind>,
+    /// Fraction of eligible objects to corrupt, 0..1.
+    pub rate: f64,
+}
+
+/// What the planner did not understand or only approximated. Nothing is dropped silently.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Understanding {
+    #[serde(default)]
+    pub not_understood: Vec<NotUnderstood>,
+    #[serde(default)]
+    pub approximated: Vec<Approximation>,
+}
+
+/// Words of the prompt that did not contribute to the plan.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct NotUnderstood {
+    pub text: String,
+    pub reason: String,
+}
+
+/// Something that was understood but represented approximately.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Approximation {
+    /// The words of the prompt.
+    pub text: String,
+    /// What they became.
+    pub became: String,
+    pub reason: String,
+}

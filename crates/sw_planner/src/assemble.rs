@@ -1,0 +1,350 @@
+//! From the scan's draft to a validated [`ScenePlan`]: defaults, counts, proxies, robot
+//! models, and the honest account of what was approximated or not understood.
+
+use std::collections::BTreeMap;
+
+use sw_plan::{
+    Approximation, Dims, Mount, NotUnderstood, ObjectPlan, ProxyPlan, Relation, RelationKind, RobotPlan, RoomKind,
+    RoomPlan, ScenePlan, SizeHint, SizeWord, Wall,
+};
+
+use crate::PlannerError;
+use crate::parse::{Draft, GroupDraft};
+use crate::priors::prior_for;
+
+/// Count used for a plural with no number ("boxes on the shelf").
+const DEFAULT_PLURAL_COUNT: u32 = 4;
+/// The largest count of one group the planner passes on.
+const MAX_COUNT: u32 = 2000;
+/// Room sides are clamped into this range, m.
+const ROOM_SIDE: (f64, f64) = (1.0, 300.0);
+const ROOM_HEIGHT: (f64, f64) = (2.0, 30.0);
+
+pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result<ScenePlan, PlannerError> {
+    if d.room.is_none() && d.groups.is_empty() && d.robots.is_empty() {
+        return Err(PlannerError::NothingUnderstood);
+    }
+    let mut approximated = d.approximated.clone();
+
+    // ---- room
+    let kind = match &d.room {
+        Some((k, _)) => *k,
+        None if d.room_word => RoomKind::Room,
+        None => {
+            let k = infer_room(&d);
+            approximated.push(Approximation {
+                text: "(no room named)".into(),
+                became: k.name().into(),
+                reason: "inferred from the objects requested".into(),
+            });
+            k
+        }
+    };
+    for other in &d.other_rooms {
+        approximated.push(Approximation {
+            text: other.clone(),
+            became: "ignored".into(),
+            reason: format!("a scene is one room; used the first room named ({})", kind.name()),
+        });
+    }
+    let mut size = kind.default_size();
+    if d.aisle && d.room_dims.is_none() && kind == RoomKind::Warehouse {
+        size = Dims::new(16.0, 7.0, 6.0);
+    }
+    let size_fixed = d.room_dims.is_some();
+    if !size_fixed && !d.room_sizes.is_empty() {
+        // "a small room", "a huge warehouse": scale the kind's default floor.
+        let f: f64 = d
+            .room_sizes
+            .iter()
+            .map(|w| match w {
+                SizeWord::Tiny => 0.5,
+                SizeWord::Small | SizeWord::Narrow | SizeWord::Short => 0.7,
+                SizeWord::Large | SizeWord::Wide | SizeWord::Long => 1.5,
+                SizeWord::Huge => 2.2,
+                SizeWord::Tall => 1.0,
+            })
+            .product();
+        size.width = ((size.width * f).max(2.0) * 10.0).round() / 10.0;
+        size.depth = ((size.depth * f).max(2.0) * 10.0).round() / 10.0;
+        if d.room_sizes.contains(&SizeWord::Tall) || d.room_sizes.contains(&SizeWord::Huge) {
+            size.height = (size.height * 1.4 * 10.0).round() / 10.0;
+        }
+    }
+    if let Some((dims, text)) = &d.room_dims {
+        size.width = dims[0];
+        size.depth = dims.get(1).copied().unwrap_or(dims[0]);
+        if let Some(h) = dims.get(2) {
+            size.height = *h;
+        }
+        for (name, v, (lo, hi)) in [("width", &mut size.width, ROOM_SIDE), ("depth", &mut size.depth, ROOM_SIDE)] {
+            clamp_noted(name, v, lo, hi, text, &mut approximated);
+        }
+    }
+    if let Some((h, text)) = &d.room_height {
+        size.height = *h;
+        let _ = text;
+    }
+    let height_text =
+        d.room_height.as_ref().map(|(_, t)| t.clone()).or_else(|| d.room_dims.as_ref().map(|(_, t)| t.clone()));
+    clamp_noted(
+        "height",
+        &mut size.height,
+        ROOM_HEIGHT.0,
+        ROOM_HEIGHT.1,
+        height_text.as_deref().unwrap_or("room height"),
+        &mut approximated,
+    );
+
+    let mut plan = ScenePlan::new(prompt, RoomPlan { kind, size, size_fixed, door: Wall::South });
+
+    // ---- objects
+    let on_targets: BTreeMap<&str, bool> = d
+        .relations
+        .iter()
+        .filter(|(_, k)| matches!(k, RelationKind::On { .. }))
+        .map(|(s, _)| (s.as_str(), true))
+        .collect();
+    let mut dropped = Vec::new();
+    for g in &d.groups {
+        let Some(count) = resolve_count(g.count, g.plural, &g.phrase, &mut approximated) else {
+            dropped.push(g.id.clone());
+            continue;
+        };
+        let hint = SizeHint { words: g.sizes.clone(), explicit: g.explicit };
+        let (category, proxy) = match g.category {
+            Some(c) => (c.to_string(), None),
+            None => {
+                (String::from("proxy"), Some(proxy_for(g, on_targets.contains_key(g.id.as_str()), &mut approximated)))
+            }
+        };
+        plan.objects.push(ObjectPlan {
+            id: g.id.clone(),
+            category,
+            phrase: g.phrase.clone(),
+            count,
+            color: g.color.clone(),
+            size: hint,
+            proxy,
+        });
+    }
+
+    // ---- relations
+    for (subject, kind) in &d.relations {
+        if dropped.contains(subject) || kind.targets().iter().any(|t| dropped.iter().any(|x| x == t)) {
+            continue;
+        }
+        plan.relations.push(Relation { subject: subject.clone(), kind: kind.clone() });
+    }
+    if d.aisle {
+        // An aisle is storage along both long walls, facing across.
+        let storage: Vec<String> = plan
+            .objects
+            .iter()
+            .filter(|o| sw_catalog::find(&o.category).is_some_and(|c| c.has_tag("storage") && c.has_tag("tall")))
+            .map(|o| o.id.clone())
+            .collect();
+        for id in storage {
+            let placed = plan.relations.iter().any(|r| r.subject == id && !matches!(r.kind, RelationKind::On { .. }));
+            if !placed {
+                plan.relations.push(Relation { subject: id, kind: RelationKind::FacingEachOther });
+            }
+        }
+    }
+
+    // ---- robots
+    let mut robot_ids: BTreeMap<String, u32> = BTreeMap::new();
+    for r in &d.robots {
+        let Some(count) = resolve_count(r.count, r.plural, &r.phrase, &mut approximated) else {
+            continue;
+        };
+        let def = sw_robots::find(r.word.wants).unwrap_or_else(|| sw_robots::default_of(r.word.kind));
+        if def.name != r.word.wants {
+            approximated.push(Approximation {
+                text: r.phrase.clone(),
+                became: def.name.into(),
+                reason: format!(
+                    "'{}' is not in the robot registry yet; used the built-in {}",
+                    r.word.wants, def.display
+                ),
+            });
+        } else if !r.word.exact {
+            approximated.push(Approximation {
+                text: r.phrase.clone(),
+                became: def.name.into(),
+                reason: format!("read as the {}", def.display),
+            });
+        }
+        let n = robot_ids.entry(def.name.to_string()).or_insert(0);
+        *n += 1;
+        let id = if *n == 1 { def.name.to_string() } else { format!("{}_group{}", def.name, n) };
+        let mount = match &r.mount {
+            Mount::OnSurface { target } if dropped.contains(target) => Mount::Auto,
+            m => m.clone(),
+        };
+        if def.kind == sw_robots::RobotKind::MobileBase && !matches!(mount, Mount::Auto | Mount::Floor) {
+            approximated.push(Approximation {
+                text: r.phrase.clone(),
+                became: "on the floor".into(),
+                reason: "mobile bases drive on the floor".into(),
+            });
+        }
+        let mount = if def.kind == sw_robots::RobotKind::MobileBase { Mount::Floor } else { mount };
+        let near = r.near.clone().filter(|t| !dropped.contains(t));
+        plan.robots.push(RobotPlan { id, model: def.name.into(), phrase: r.phrase.clone(), count, mount, near });
+    }
+
+    plan.understanding.approximated = approximated;
+    plan.understanding.not_understood = leftovers
+        .into_iter()
+        .map(|text| NotUnderstood {
+            text,
+            reason: "not a room, object, robot, size or relation the offline planner knows".into(),
+        })
+        .collect();
+    plan.validate().map_err(|e| PlannerError::InvalidSize(e.to_string()))?;
+    Ok(plan)
+}
+
+fn resolve_count(count: Option<f64>, plural: bool, phrase: &str, notes: &mut Vec<Approximation>) -> Option<u32> {
+    let n = match count {
+        Some(c) if !c.is_finite() => 1.0,
+        Some(c) => c,
+        None if plural => {
+            notes.push(Approximation {
+                text: phrase.to_string(),
+                became: format!("{DEFAULT_PLURAL_COUNT}"),
+                reason: "no count was given for a plural".into(),
+            });
+            f64::from(DEFAULT_PLURAL_COUNT)
+        }
+        None => 1.0,
+    };
+    if n < 0.5 {
+        notes.push(Approximation {
+            text: phrase.to_string(),
+            became: "left out".into(),
+            reason: "the count is zero".into(),
+        });
+        return None;
+    }
+    if n.fract() != 0.0 {
+        notes.push(Approximation {
+            text: phrase.to_string(),
+            became: format!("{}", n.round().max(1.0)),
+            reason: "counts are whole numbers".into(),
+        });
+    }
+    let rounded = n.round().max(1.0);
+    if rounded > f64::from(MAX_COUNT) {
+        notes.push(Approximation {
+            text: phrase.to_string(),
+            became: format!("{MAX_COUNT}"),
+            reason: format!("at most {MAX_COUNT} objects of one kind per scene"),
+        });
+        return Some(MAX_COUNT);
+    }
+    Some(rounded as u32)
+}
+
+fn proxy_for(g: &GroupDraft, resting: bool, notes: &mut Vec<Approximation>) -> ProxyPlan {
+    let prior = prior_for(&g.label, resting);
+    let mut size = prior.size;
+    for w in &g.sizes {
+        let f = w.factors();
+        for i in 0..3 {
+            size[i] *= f[i];
+        }
+    }
+    if let Some(w) = g.explicit.width {
+        size[0] = w;
+    }
+    if let Some(v) = g.explicit.depth {
+        size[1] = v;
+    }
+    if let Some(h) = g.explicit.height {
+        size[2] = h;
+    }
+    let clamped = size.map(|v| v.clamp(0.02, 20.0));
+    if clamped != size {
+        notes.push(Approximation {
+            text: g.phrase.clone(),
+            became: format!("{:.2} × {:.2} × {:.2} m", clamped[0], clamped[1], clamped[2]),
+            reason: "proxy sizes are kept between 2 cm and 20 m".into(),
+        });
+    }
+    notes.push(Approximation {
+        text: g.phrase.clone(),
+        became: format!("labelled proxy '{}'", g.label),
+        reason: format!(
+            "no catalog asset for '{}'; a {:.2} × {:.2} × {:.2} m box sized as a {}",
+            g.label, clamped[0], clamped[1], clamped[2], prior.name
+        ),
+    });
+    ProxyPlan {
+        label: g.label.clone(),
+        prior: prior.name.into(),
+        size: Dims::new(clamped[0], clamped[1], clamped[2]),
+        movable: prior.movable,
+    }
+}
+
+fn clamp_noted(name: &str, v: &mut f64, lo: f64, hi: f64, text: &str, notes: &mut Vec<Approximation>) {
+    let c = v.clamp(lo, hi);
+    if c != *v {
+        notes.push(Approximation {
+            text: text.to_string(),
+            became: format!("room {name} {c} m"),
+            reason: format!("room {name} {} m is outside {lo}–{hi} m", trim(*v)),
+        });
+        *v = c;
+    }
+}
+
+fn trim(v: f64) -> String {
+    let s = format!("{v:.2}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// The room kind the objects suggest: by their catalog tags, tabletop scenes when the
+/// scene is an arm and small items.
+fn infer_room(d: &Draft) -> RoomKind {
+    let mut votes: BTreeMap<RoomKind, u32> = BTreeMap::new();
+    let mut small = 0;
+    let mut large = 0;
+    for g in &d.groups {
+        let Some(cat) = g.category.and_then(sw_catalog::find) else {
+            continue;
+        };
+        let n = g.count.unwrap_or(if g.plural { 4.0 } else { 1.0 }).max(1.0) as u32;
+        if cat.placement == sw_catalog::PlacementKind::OnSurface {
+            small += n;
+        } else if cat.has_tag("surface") && cat.has_tag("furniture") {
+            large += n;
+        } else {
+            // Storage, machines and other floor fixtures make it a room, not a tabletop.
+            large += 2 * n;
+        }
+        for (tag, kind) in [
+            ("warehouse", RoomKind::Warehouse),
+            ("logistics", RoomKind::Warehouse),
+            ("storage", RoomKind::StorageRoom),
+            ("lab", RoomKind::Lab),
+            ("kitchen", RoomKind::Kitchen),
+            ("office", RoomKind::Office),
+            ("industrial", RoomKind::Workshop),
+            ("data_centre", RoomKind::DataCentre),
+            ("retail", RoomKind::RetailStore),
+            ("garage", RoomKind::Garage),
+        ] {
+            if cat.has_tag(tag) {
+                *votes.entry(kind).or_insert(0) += 1;
+            }
+        }
+    }
+    let arms_only = d.robots.iter().all(|r| r.word.kind == sw_robots::RobotKind::Arm);
+    if large <= 1 && arms_only && (small > 0 || !d.robots.is_empty()) {
+        return RoomKind::Tabletop;
+    }
+    votes.into_iter().max_by(|a, b| a.1.cmp(&b.1).then(b.0.cmp(&a.0))).map_or(RoomKind::Room, |(k, _)| k)
+}

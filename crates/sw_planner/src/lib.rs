@@ -1,0 +1,84 @@
+//! L1, offline: a deterministic planner that reads English workspace descriptions.
+//!
+//! It understands room kinds and sizes, object phrases with counts, colours and size
+//! words, spatial relations, robots and their mounting. Nouns with no catalog asset are
+//! matched to the nearest category when close (typos) or become labelled proxies sized
+//! by priors. Every word of the prompt is either used or reported in
+//! `understanding.not_understood`; every approximation is listed in
+//! `understanding.approximated`.
+
+mod assemble;
+mod cues;
+mod lexicon;
+mod parse;
+mod priors;
+mod text;
+
+use std::sync::OnceLock;
+
+use sw_plan::ScenePlan;
+
+/// Longest prompt accepted, in bytes (the same limit as the HTTP API).
+pub const MAX_PROMPT_BYTES: usize = 64 * 1024;
+
+/// Why a prompt cannot be planned. Each is a problem with the input (exit code 2).
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum PlannerError {
+    #[error(
+        "the prompt is empty: describe a room, its objects and robots, e.g. \"a warehouse with two pallet racks, six boxes and a TurtleBot\""
+    )]
+    Empty,
+    #[error("the prompt is {bytes} bytes; the limit is {limit} bytes")]
+    TooLong { bytes: usize, limit: usize },
+    #[error("{0}")]
+    InvalidSize(String),
+    #[error(
+        "nothing in the prompt was recognised as a room, object or robot (the offline planner reads English; \
+         configure an LLM endpoint for other languages and open vocabulary)"
+    )]
+    NothingUnderstood,
+}
+
+fn lexicon() -> &'static lexicon::Lexicon {
+    static LEX: OnceLock<lexicon::Lexicon> = OnceLock::new();
+    LEX.get_or_init(lexicon::Lexicon::new)
+}
+
+/// Plans a scene from a prompt. Deterministic: the same prompt gives the same plan.
+pub fn plan(prompt: &str) -> Result<ScenePlan, PlannerError> {
+    if prompt.len() > MAX_PROMPT_BYTES {
+        return Err(PlannerError::TooLong { bytes: prompt.len(), limit: MAX_PROMPT_BYTES });
+    }
+    let cleaned = clean(prompt);
+    if cleaned.is_empty() {
+        return Err(PlannerError::Empty);
+    }
+    let tokens = text::tokenize(&cleaned);
+    let mut parser = parse::Parser::new(lexicon(), &cleaned, tokens);
+    parser.run()?;
+    let leftovers = parser.leftovers();
+    assemble::assemble(&cleaned, parser.draft, leftovers)
+}
+
+/// Trims, drops control characters and collapses runs of spaces (newlines are kept:
+/// they end sentences).
+fn clean(prompt: &str) -> String {
+    let mut out = String::with_capacity(prompt.len());
+    let mut last_space = true;
+    for c in prompt.chars() {
+        let c = if c == '\t' || c == '\r' { ' ' } else { c };
+        if c.is_control() && c != '\n' {
+            continue;
+        }
+        if c == ' ' {
+            if !last_space {
+                out.push(' ');
+            }
+            last_space = true;
+        } else {
+            out.push(c);
+            last_space = c == '\n';
+        }
+    }
+    out.trim().to_string()
+}

@@ -1,0 +1,1017 @@
+//! The scan: walks the tokens once, recognising dimensions, relation cues and phrases
+//! (count, modifiers, head noun), and records them in a [`Draft`]. Every token it uses
+//! is marked, so that what is left over can be reported as not understood.
+
+use sw_catalog::PlacementKind;
+use sw_plan::{Approximation, ExplicitSize, Mount, NamedColor, RelationKind, RoomKind, SizeWord};
+
+use crate::PlannerError;
+use crate::cues::{Cue, cue_at, target_start};
+use crate::lexicon::{Lexicon, Meaning, RobotWord, is_head};
+use crate::text::{Token, TokenKind, edit_distance, number_word, singular};
+
+/// What the scan found, before defaults and resolution.
+#[derive(Debug, Default)]
+pub(crate) struct Draft {
+    pub room: Option<(RoomKind, String)>,
+    pub aisle: bool,
+    pub other_rooms: Vec<String>,
+    /// Room dimensions in metres as written (2 or 3 numbers) and their text.
+    pub room_dims: Option<(Vec<f64>, String)>,
+    pub room_height: Option<(f64, String)>,
+    /// A room noun ("room", "cell") was used, with or without a kind.
+    pub room_word: bool,
+    /// Size words on the room ("a small room", "a huge warehouse").
+    pub room_sizes: Vec<SizeWord>,
+    pub groups: Vec<GroupDraft>,
+    pub robots: Vec<RobotDraft>,
+    pub relations: Vec<(String, RelationKind)>,
+    pub approximated: Vec<Approximation>,
+}
+
+#[derive(Debug, Clone)]
+pub(crate) struct GroupDraft {
+    pub id: String,
+    /// Catalog category, or `None` for a proxy.
+    pub category: Option<&'static str>,
+    pub label: String,
+    pub phrase: String,
+    pub count: Option<f64>,
+    pub plural: bool,
+    pub color: Option<NamedColor>,
+    pub sizes: Vec<SizeWord>,
+    pub explicit: ExplicitSize,
+}
+
+#[derive(Debug, Clone)]
+pub(crate) struct RobotDraft {
+    pub word: RobotWord,
+    pub phrase: String,
+    pub count: Option<f64>,
+    pub plural: bool,
+    pub mount: Mount,
+    pub near: Option<String>,
+}
+
+/// The head of a phrase.
+#[derive(Debug, Clone)]
+enum Head {
+    Known(Meaning),
+    /// Words with no meaning in the lexicon: a proxy candidate (singular label).
+    Unknown(String),
+}
+
+#[derive(Debug, Clone)]
+struct Phrase {
+    end: usize,
+    count: Option<f64>,
+    color: Option<NamedColor>,
+    sizes: Vec<SizeWord>,
+    explicit: ExplicitSize,
+    /// Unknown words between the count and a known head ("storage" in "storage shelves").
+    descriptors: Vec<String>,
+    head: Head,
+    plural: bool,
+    text: String,
+}
+
+/// Who a relation applies to.
+#[derive(Debug, Clone, PartialEq)]
+enum Subject {
+    Group(String),
+    Robot(usize),
+}
+
+pub(crate) struct Parser<'a> {
+    lex: &'a Lexicon,
+    text: &'a str,
+    toks: Vec<Token>,
+    used: Vec<bool>,
+    pub draft: Draft,
+    /// The subject of the current sentence.
+    subject: Option<Subject>,
+    /// A relation that came before its subject ("On the bench, a UR5e").
+    pending: Vec<(Cue, Vec<String>)>,
+    /// "a shelf with boxes": small items and arms that follow go on this group.
+    with_host: Option<String>,
+    /// Dimensions seen just before a phrase: the phrase's size if it is an object.
+    pending_dims: Option<(Vec<f64>, String, usize)>,
+    /// The group each group was last put on (for "a mug on the table next to the door").
+    on_host: Vec<(String, String)>,
+    /// Groups and robots in the order they were mentioned (for "it" and "them").
+    mentions: Vec<Subject>,
+}
+
+impl<'a> Parser<'a> {
+    pub fn new(lex: &'a Lexicon, text: &'a str, toks: Vec<Token>) -> Self {
+        let n = toks.len();
+        Self {
+            lex,
+            text,
+            toks,
+            used: vec![false; n],
+            draft: Draft::default(),
+            subject: None,
+            pending: Vec::new(),
+            with_host: None,
+            pending_dims: None,
+            on_host: Vec::new(),
+            mentions: Vec::new(),
+        }
+    }
+
+    /// The unused tokens, as maximal runs of prompt text.
+    pub fn leftovers(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        let mut run: Option<(usize, usize)> = None;
+        for (i, t) in self.toks.iter().enumerate() {
+            let skip = self.used[i] || matches!(t.kind, TokenKind::Comma | TokenKind::Stop);
+            if skip {
+                if let Some((s, e)) = run.take() {
+                    out.push(self.text[s..e].to_string());
+                }
+            } else {
+                run = Some(run.map_or((t.start, t.end), |(s, _)| (s, t.end)));
+            }
+        }
+        if let Some((s, e)) = run {
+            out.push(self.text[s..e].to_string());
+        }
+        out
+    }
+
+    fn word(&self, i: usize) -> &str {
+        self.toks.get(i).filter(|t| t.kind == TokenKind::Word).map_or("", |t| t.norm.as_str())
+    }
+
+    fn words_from(&self, i: usize) -> Vec<&str> {
+        self.toks[i.min(self.toks.len())..]
+            .iter()
+            .take(6)
+            .map_while(|t| {
+                (t.kind == TokenKind::Word || matches!(t.kind, TokenKind::Number(_))).then_some(t.norm.as_str())
+            })
+            .collect()
+    }
+
+    fn span(&self, from: usize, to: usize) -> String {
+        match (self.toks.get(from), self.toks.get(to.saturating_sub(1))) {
+            (Some(a), Some(b)) if to > from => self.text[a.start..b.end].to_string(),
+            _ => String::new(),
+        }
+    }
+
+    fn mark(&mut self, from: usize, to: usize) {
+        for u in &mut self.used[from..to.min(self.toks.len())] {
+            *u = true;
+        }
+    }
+
+    fn lookup(&self, i: usize, accept: impl Fn(&Meaning) -> bool) -> Option<(Meaning, usize)> {
+        let words = self.words_from(i);
+        self.lex.longest(&words, accept).map(|(e, n)| (e.meaning.clone(), n))
+    }
+
+    /// Runs the scan over the whole prompt.
+    pub fn run(&mut self) -> Result<(), PlannerError> {
+        let mut i = 0;
+        while i < self.toks.len() {
+            let kind = self.toks[i].kind.clone();
+            match kind {
+                TokenKind::Stop => {
+                    self.end_sentence();
+                    self.used[i] = true;
+                    i += 1;
+                    continue;
+                }
+                TokenKind::Comma => {
+                    self.used[i] = true;
+                    i += 1;
+                    continue;
+                }
+                _ => {}
+            }
+            if let Some(next) = self.try_dims(i)? {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_cue(i) {
+                i = next;
+                continue;
+            }
+            if matches!(self.word(i), "with" | "holding" | "carrying" | "supporting" | "containing") {
+                if let Some(Subject::Group(g)) = &self.subject
+                    && self.group_has_surface(g)
+                {
+                    self.with_host = Some(g.clone());
+                }
+                self.used[i] = true;
+                i += 1;
+                continue;
+            }
+            if let Some(p) = self.phrase_at(i, true, false)? {
+                let end = p.end;
+                self.mark(i, end);
+                self.take_phrase(p, i);
+                i = end;
+                continue;
+            }
+            if self.lookup(i, |m| matches!(m, Meaning::Filler)).is_some() || number_word(self.word(i)).is_some() {
+                self.used[i] = true;
+            }
+            i += 1;
+        }
+        self.end_sentence();
+        // Articles carry no meaning of their own.
+        for (i, t) in self.toks.iter().enumerate() {
+            if t.kind == TokenKind::Word && matches!(t.norm.as_str(), "a" | "an" | "the") {
+                self.used[i] = true;
+            }
+        }
+        Ok(())
+    }
+
+    fn end_sentence(&mut self) {
+        self.subject = None;
+        self.with_host = None;
+        self.pending.clear();
+        if let Some((dims, text, _)) = self.pending_dims.take() {
+            self.set_room_dims(dims, text);
+        }
+    }
+
+    fn set_room_dims(&mut self, dims: Vec<f64>, text: String) {
+        if self.draft.room_dims.is_none() {
+            self.draft.room_dims = Some((dims, text));
+        } else {
+            self.draft.approximated.push(Approximation {
+                text,
+                became: "ignored".into(),
+                reason: "the room size was already given; a scene has one room".into(),
+            });
+        }
+    }
+
+    // ---------------------------------------------------------------- dimensions
+
+    /// A number followed by an optional unit: (value in metres, tokens used, unit given).
+    fn length_at(&self, i: usize) -> Option<(f64, usize, bool)> {
+        let n = self.toks.get(i)?.number()?;
+        match self.lookup(i + 1, |m| matches!(m, Meaning::Unit(_))) {
+            Some((Meaning::Unit(f), len)) => Some((n * f, 1 + len, true)),
+            _ => Some((n, 1, false)),
+        }
+    }
+
+    /// "10 by 6 m", "12x12 m", "2m x 2m x 3m", "30 m by 20 m", "100 square meters",
+    /// "a 4 m ceiling", and single lengths with an axis word ("2 m tall") are handled in
+    /// phrases. Returns the index after what it consumed.
+    fn try_dims(&mut self, i: usize) -> Result<Option<usize>, PlannerError> {
+        let Some((first, mut len, mut any_unit)) = self.length_at(i) else {
+            return Ok(None);
+        };
+        let mut values = vec![first];
+        let mut unit_factor: Option<f64> = None;
+        if any_unit {
+            unit_factor = self.unit_factor(i + 1);
+        }
+        while values.len() < 3 {
+            let j = i + len;
+            let sep = self.toks.get(j).is_some_and(|t| t.kind == TokenKind::Times || t.is_word("by"));
+            if !sep {
+                break;
+            }
+            let Some((v, l, u)) = self.length_at(j + 1) else {
+                break;
+            };
+            if u {
+                any_unit = true;
+                unit_factor = unit_factor.or_else(|| self.unit_factor(j + 2));
+            }
+            values.push(v);
+            len += 1 + l;
+        }
+        // "100 square meters" / "100 m2": an area.
+        if values.len() == 1 {
+            let j = i + 1;
+            let area_unit = matches!(self.word(j), "square" | "sq")
+                && self.lookup(j + 1, |m| matches!(m, Meaning::Unit(_))).is_some();
+            let m2 = matches!(self.word(j), "m2" | "m²" | "sqm");
+            if area_unit || m2 {
+                let factor = if m2 { 1.0 } else { self.unit_factor(j + 1).unwrap_or(1.0) };
+                let area = values[0] * factor * factor;
+                let end = if m2 { j + 1 } else { j + 2 };
+                let text = self.span(i, end);
+                if !(area.is_finite() && area > 0.0) {
+                    return Err(PlannerError::InvalidSize(format!("room area must be positive, got '{text}'")));
+                }
+                let w = (area * 1.5).sqrt();
+                self.mark(i, end);
+                self.set_room_dims(vec![w, area / w], text);
+                return Ok(Some(end));
+            }
+            // "a 4 m ceiling", "4 m high ceiling", "ceiling height of 4 m".
+            let mut k = i + len;
+            if matches!(self.word(k), "high" | "tall") {
+                k += 1;
+            }
+            if matches!(self.word(k), "ceiling" | "ceilings") && any_unit {
+                let text = self.span(i, k + 1);
+                if !(first.is_finite() && first > 0.0) {
+                    return Err(PlannerError::InvalidSize(format!("ceiling height must be positive, got '{text}'")));
+                }
+                self.mark(i, k + 1);
+                self.draft.room_height = Some((first, text));
+                return Ok(Some(k + 1));
+            }
+            return Ok(None);
+        }
+        // Trailing unit applies to numbers written without one: "10 by 6 meter room".
+        let mut end = i + len;
+        if !any_unit && let Some((Meaning::Unit(f), l)) = self.lookup(end, |m| matches!(m, Meaning::Unit(_))) {
+            unit_factor = Some(f);
+            end += l;
+        }
+        if let Some(f) = unit_factor {
+            // Numbers written without a unit take the phrase's unit.
+            let mut j = i;
+            let mut k = 0;
+            while j < end && k < values.len() {
+                if let Some(n) = self.toks[j].number() {
+                    let has_unit = self.lookup(j + 1, |m| matches!(m, Meaning::Unit(_))).is_some();
+                    if !has_unit {
+                        values[k] = n * f;
+                    }
+                    k += 1;
+                }
+                j += 1;
+            }
+        }
+        let text = self.span(i, end);
+        if values.iter().any(|v| !v.is_finite() || *v <= 0.0) {
+            return Err(PlannerError::InvalidSize(format!("sizes must be positive lengths, got '{text}'")));
+        }
+        self.mark(i, end);
+        // Dimensions right after a room phrase belong to the room; before a phrase they
+        // wait to see whether an object or a room follows.
+        let after_room = self.subject.is_none() && self.draft.room.is_some() && self.previous_was_room(i);
+        if after_room {
+            self.set_room_dims(values, text);
+        } else {
+            if let Some((d, t, _)) = self.pending_dims.take() {
+                self.set_room_dims(d, t);
+            }
+            self.pending_dims = Some((values, text, end));
+        }
+        Ok(Some(end))
+    }
+
+    fn unit_factor(&self, i: usize) -> Option<f64> {
+        match self.lookup(i, |m| matches!(m, Meaning::Unit(_))) {
+            Some((Meaning::Unit(f), _)) => Some(f),
+            _ => None,
+        }
+    }
+
+    /// True when the last used word before `i` (skipping fillers) named a room.
+    fn previous_was_room(&self, i: usize) -> bool {
+        let mut j = i;
+        while j > 0 {
+            j -= 1;
+            let w = self.word(j);
+            if matches!(w, "of" | "measuring" | "is" | "about" | "approximately" | "sized" | "with" | "that" | "size") {
+                continue;
+            }
+            let words = self.words_from(j);
+            return self
+                .lex
+                .longest(&words, |m| matches!(m, Meaning::Room(_) | Meaning::RoomAisle(_) | Meaning::RoomWord))
+                .is_some()
+                || self.toks.get(j).is_some_and(|t| {
+                    self.lex
+                        .longest(&[t.norm.as_str()], |m| matches!(m, Meaning::Room(_) | Meaning::RoomWord))
+                        .is_some()
+                });
+        }
+        false
+    }
+
+    /// "2 m tall", "1.5 m wide", "80 cm deep": one explicit dimension.
+    fn axis_length_at(&self, i: usize) -> Option<(f64, &'static str, usize, String)> {
+        let (v, len, _) = self.length_at(i)?;
+        let axis = match self.word(i + len) {
+            "tall" | "high" | "height" => "height",
+            "wide" | "width" => "width",
+            "long" | "length" => "width",
+            "deep" | "depth" => "depth",
+            _ => return None,
+        };
+        Some((v, axis, len + 1, self.span(i, i + len + 1)))
+    }
+
+    // ---------------------------------------------------------------- phrases
+
+    /// A count, modifiers and a head noun starting at `i`.
+    fn phrase_at(&self, i: usize, allow_unknown: bool, bare_unknown: bool) -> Result<Option<Phrase>, PlannerError> {
+        let mut j = i;
+        let mut count = None;
+        if let Some(n) = self.toks.get(j).and_then(Token::number) {
+            count = Some(n);
+            j += 1;
+        } else if let Some(n) = number_word(self.word(j)) {
+            let mut value = n;
+            j += 1;
+            if let Some(m) = number_word(self.word(j)) {
+                if m == 100.0 {
+                    value *= 100.0;
+                    j += 1;
+                } else if n >= 20.0 && n % 10.0 == 0.0 && m < 10.0 {
+                    value += m;
+                    j += 1;
+                }
+            }
+            if self.word(j) == "of" {
+                j += 1;
+            }
+            count = Some(value);
+        } else if let Some((Meaning::Count(n), len)) = self.lookup(j, |m| matches!(m, Meaning::Count(_))) {
+            count = Some(n);
+            j += len;
+        }
+        let mut color = None;
+        let mut sizes = Vec::new();
+        let mut explicit = ExplicitSize::default();
+        loop {
+            if let Some((v, axis, len, text)) = self.axis_length_at(j) {
+                if !(v.is_finite() && v > 0.0) {
+                    return Err(PlannerError::InvalidSize(format!("sizes must be positive lengths, got '{text}'")));
+                }
+                set_axis(&mut explicit, axis, v);
+                j += len;
+                continue;
+            }
+            match self.lookup(j, |m| matches!(m, Meaning::Color(..) | Meaning::Size(_) | Meaning::Material(..))) {
+                Some((Meaning::Color(name, rgba), len)) => {
+                    color = Some(NamedColor { name: name.to_string(), rgba });
+                    j += len;
+                }
+                Some((Meaning::Size(s), len)) => {
+                    sizes.push(s);
+                    j += len;
+                }
+                Some((Meaning::Material(name, rgba), len)) => {
+                    if color.is_none()
+                        && let Some(rgba) = rgba
+                    {
+                        color = Some(NamedColor { name: name.to_string(), rgba });
+                    }
+                    j += len;
+                }
+                _ => break,
+            }
+        }
+        // The head, allowing up to three unknown descriptor words before it.
+        let mut descriptors = Vec::new();
+        let mut k = j;
+        let mut found = None;
+        for _ in 0..=3 {
+            if let Some((m, len)) = self.lookup(k, is_head) {
+                found = Some((m, len));
+                break;
+            }
+            if !self.is_plain_unknown_word(k) {
+                break;
+            }
+            descriptors.push(self.word(k).to_string());
+            k += 1;
+        }
+        let has_modifier = count.is_some() || color.is_some() || !sizes.is_empty() || !explicit.is_empty();
+        let (head, mut end, plural) = match found {
+            Some((m, len)) => {
+                let last = self.word(k + len - 1);
+                let plural = singular(last) != last;
+                (Head::Known(m), k + len, plural)
+            }
+            None => {
+                if !allow_unknown || !(has_modifier || bare_unknown) {
+                    return Ok(None);
+                }
+                descriptors.clear();
+                let mut words = Vec::new();
+                let mut e = j;
+                while words.len() < 4 && self.is_plain_unknown_word(e) {
+                    words.push(self.word(e).to_string());
+                    e += 1;
+                }
+                if words.is_empty() {
+                    return Ok(None);
+                }
+                let last = words.last().cloned().unwrap_or_default();
+                let plural = singular(&last) != last;
+                let n = words.len();
+                words[n - 1] = singular(&last);
+                match self.fuzzy(&words[n - 1]) {
+                    Some(m) if n == 1 => (Head::Known(m), e, plural),
+                    _ => (Head::Unknown(words.join(" ")), e, plural),
+                }
+            }
+        };
+        // "UR5e arm", "TurtleBot robots": absorb the generic word after a robot name.
+        if matches!(head, Head::Known(Meaning::Robot(_)))
+            && matches!(self.word(end), "arm" | "arms" | "robot" | "robots" | "cobot" | "cobots" | "manipulator")
+        {
+            end += 1;
+        }
+        // "a table 2 m long".
+        while let Some((v, axis, len, text)) = self.axis_length_at(end) {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(PlannerError::InvalidSize(format!("sizes must be positive lengths, got '{text}'")));
+            }
+            set_axis(&mut explicit, axis, v);
+            end += len;
+        }
+        let text = self.span(i, end);
+        Ok(Some(Phrase { end, count, color, sizes, explicit, descriptors, head, plural, text }))
+    }
+
+    /// A word that is not in the lexicon at all and does not start a relation cue.
+    fn is_plain_unknown_word(&self, i: usize) -> bool {
+        let Some(t) = self.toks.get(i) else {
+            return false;
+        };
+        if t.kind != TokenKind::Word || number_word(&t.norm).is_some() {
+            return false;
+        }
+        if cue_at(&self.toks, i).is_some() {
+            return false;
+        }
+        self.lookup(i, |_| true).is_none()
+    }
+
+    /// A typo-tolerant match of one unknown word against head nouns.
+    fn fuzzy(&self, word: &str) -> Option<Meaning> {
+        let limit = match word.chars().count() {
+            0..=4 => return None,
+            5..=7 => 1,
+            _ => 2,
+        };
+        let mut best: Option<(usize, &str, &Meaning)> = None;
+        for (w, m) in self.lex.head_words() {
+            let d = edit_distance(word, w);
+            if d <= limit && best.is_none_or(|(bd, bw, _)| d < bd || (d == bd && w < bw)) {
+                best = Some((d, w, m));
+            }
+        }
+        best.map(|(_, _, m)| m.clone())
+    }
+
+    /// Records a phrase as a room, an object group or a robot.
+    fn take_phrase(&mut self, p: Phrase, start: usize) {
+        let dims_here = self.pending_dims.take();
+        match p.head.clone() {
+            Head::Known(Meaning::Room(kind)) | Head::Known(Meaning::RoomAisle(kind)) => {
+                if matches!(p.head, Head::Known(Meaning::RoomAisle(_))) {
+                    self.draft.aisle = true;
+                }
+                self.draft.room_sizes.extend(p.sizes.iter().copied());
+                match &self.draft.room {
+                    None => self.draft.room = Some((kind, p.text.clone())),
+                    Some((k, _)) if *k == kind => {}
+                    Some(_) => self.draft.other_rooms.push(p.text.clone()),
+                }
+                if let Some((d, t, _)) = dims_here {
+                    self.set_room_dims(d, t);
+                }
+                self.subject = None;
+            }
+            Head::Known(Meaning::RoomWord) => {
+                self.draft.room_word = true;
+                self.draft.room_sizes.extend(p.sizes.iter().copied());
+                if let Some((d, t, _)) = dims_here {
+                    self.set_room_dims(d, t);
+                }
+                self.subject = None;
+            }
+            Head::Known(Meaning::Robot(word)) => {
+                if let Some((d, t, _)) = dims_here {
+                    self.set_room_dims(d, t);
+                }
+                let idx = self.draft.robots.len();
+                let mount = if word.on_mobile_base { Mount::MobileBase } else { Mount::Auto };
+                self.draft.robots.push(RobotDraft {
+                    word,
+                    phrase: p.text.clone(),
+                    count: p.count,
+                    plural: p.plural,
+                    mount,
+                    near: None,
+                });
+                if let Some(host) = self.with_host.clone() {
+                    self.draft.robots[idx].mount = Mount::OnSurface { target: host };
+                }
+                self.subject = Some(Subject::Robot(idx));
+                self.mentions.push(Subject::Robot(idx));
+                self.apply_pending();
+            }
+            Head::Known(Meaning::Category(cat)) => {
+                let mut explicit = p.explicit;
+                if let Some((d, t, end)) = dims_here {
+                    if end == start || end + 1 == start {
+                        apply_dims(&mut explicit, &d);
+                    } else {
+                        self.set_room_dims(d, t);
+                    }
+                }
+                if !p.descriptors.is_empty() {
+                    self.draft.approximated.push(Approximation {
+                        text: p.text.clone(),
+                        became: cat.to_string(),
+                        reason: format!(
+                            "'{}' is not modelled; the object is a plain {}",
+                            p.descriptors.join(" "),
+                            cat.replace('_', " ")
+                        ),
+                    });
+                }
+                let id = self.new_group(Some(cat), cat.replace('_', " "), &p, explicit);
+                self.after_new_group(&id);
+            }
+            Head::Unknown(label) => {
+                let mut explicit = p.explicit;
+                if let Some((d, t, end)) = dims_here {
+                    if end == start || end + 1 == start {
+                        apply_dims(&mut explicit, &d);
+                    } else {
+                        self.set_room_dims(d, t);
+                    }
+                }
+                let id = self.new_group(None, label, &p, explicit);
+                self.after_new_group(&id);
+            }
+            Head::Known(_) => {}
+        }
+    }
+
+    fn new_group(
+        &mut self,
+        category: Option<&'static str>,
+        label: String,
+        p: &Phrase,
+        explicit: ExplicitSize,
+    ) -> String {
+        let base = match category {
+            Some(c) => c.to_string(),
+            None => format!("proxy_{}", label.replace([' ', '-', '\''], "_")),
+        };
+        let mut id = base.clone();
+        let mut n = 2;
+        while self.draft.groups.iter().any(|g| g.id == id) {
+            id = format!("{base}_{n}");
+            n += 1;
+        }
+        self.draft.groups.push(GroupDraft {
+            id: id.clone(),
+            category,
+            label,
+            phrase: p.text.clone(),
+            count: p.count,
+            plural: p.plural,
+            color: p.color.clone(),
+            sizes: p.sizes.clone(),
+            explicit,
+        });
+        id
+    }
+
+    fn after_new_group(&mut self, id: &str) {
+        if let Some(host) = self.with_host.clone()
+            && self.group_is_small(id)
+        {
+            self.relate(id, RelationKind::On { target: host.clone() });
+            self.on_host.push((id.to_string(), host));
+        } else {
+            self.with_host = None;
+        }
+        self.subject = Some(Subject::Group(id.to_string()));
+        self.mentions.push(Subject::Group(id.to_string()));
+        self.apply_pending();
+    }
+
+    fn group(&self, id: &str) -> Option<&GroupDraft> {
+        self.draft.groups.iter().find(|g| g.id == id)
+    }
+
+    fn group_has_surface(&self, id: &str) -> bool {
+        self.group(id).and_then(|g| g.category).and_then(sw_catalog::find).is_some_and(|c| {
+            matches!(c.placement, PlacementKind::Floor | PlacementKind::AgainstWall) && c.has_tag("surface")
+                || c.has_tag("storage")
+        })
+    }
+
+    fn group_is_small(&self, id: &str) -> bool {
+        match self.group(id) {
+            Some(GroupDraft { category: Some(c), .. }) => {
+                sw_catalog::find(c).is_some_and(|c| c.placement == PlacementKind::OnSurface)
+            }
+            Some(GroupDraft { category: None, label, .. }) => crate::priors::prior_for(label, false).movable,
+            None => false,
+        }
+    }
+
+    fn relate(&mut self, subject: &str, kind: RelationKind) {
+        let entry = (subject.to_string(), kind);
+        if !self.draft.relations.contains(&entry) {
+            self.draft.relations.push(entry);
+        }
+    }
+
+    // ---------------------------------------------------------------- relations
+
+    fn try_cue(&mut self, i: usize) -> Option<usize> {
+        let (cue, len) = cue_at(&self.toks, i)?;
+        let mut end = i + len;
+        let mut targets = Vec::new();
+        if cue.takes_target() {
+            let wanted = if cue == Cue::Between { 2 } else { 1 };
+            let mut j = target_start(&self.toks, end);
+            // "between the two conveyors": one group, both ends.
+            let mut twin = false;
+            if cue == Cue::Between && matches!(self.word(j), "two" | "pair") {
+                twin = true;
+                j += 1;
+            }
+            while targets.len() < wanted {
+                let (target, next) = self.target_at(j, &cue)?;
+                targets.push(target);
+                j = next;
+                if twin {
+                    let t = targets[0].clone();
+                    targets.push(t);
+                    break;
+                }
+                if targets.len() < wanted {
+                    if !matches!(self.word(j), "and" | "&") {
+                        if cue == Cue::Between && targets.len() == 1 {
+                            // "between the shelves": both ends in one plural group.
+                            let t = targets[0].clone();
+                            targets.push(t);
+                            break;
+                        }
+                        return None;
+                    }
+                    j = target_start(&self.toks, j + 1);
+                }
+            }
+            end = j;
+        }
+        self.mark(i, end);
+        match self.subject.clone() {
+            Some(s) => self.apply(&s, cue, targets),
+            None => self.pending.push((cue, targets)),
+        }
+        Some(end)
+    }
+
+    /// The object group a relation points at: an earlier group of that kind, a new
+    /// group, or the previous group for "it"/"them".
+    fn target_at(&mut self, j: usize, cue: &Cue) -> Option<(String, usize)> {
+        let w = self.word(j);
+        if matches!(w, "it" | "them" | "this" | "that" | "these" | "those" | "one") {
+            if let Some(host) = &self.with_host
+                && self.subject != Some(Subject::Group(host.clone()))
+            {
+                return Some((host.clone(), j + 1));
+            }
+            let current = self.subject.clone();
+            let previous = self.mentions.iter().rev().find(|m| Some(*m) != current.as_ref())?;
+            return Some((
+                match previous {
+                    Subject::Group(g) => g.clone(),
+                    Subject::Robot(r) => format!("@robot:{r}"),
+                },
+                j + 1,
+            ));
+        }
+        // Robot mounts name things that are not scene objects: pedestals, carts, the floor.
+        if let Some(Subject::Robot(_)) = &self.subject
+            && *cue == Cue::On
+        {
+            let mount_words: &[(&str, &str)] = &[
+                ("pedestal", "pedestal"),
+                ("stand", "pedestal"),
+                ("post", "pedestal"),
+                ("column", "pedestal"),
+                ("base", "pedestal"),
+                ("mobile cart", "mobile"),
+                ("mobile base", "mobile"),
+                ("mobile platform", "mobile"),
+                ("cart", "mobile"),
+                ("agv", "mobile"),
+                ("amr", "mobile"),
+                ("floor", "floor"),
+                ("ground", "floor"),
+            ];
+            let mut k = j;
+            while matches!(
+                self.word(k),
+                "steel"
+                    | "metal"
+                    | "small"
+                    | "large"
+                    | "low"
+                    | "high"
+                    | "tall"
+                    | "short"
+                    | "sturdy"
+                    | "fixed"
+                    | "wheeled"
+            ) {
+                k += 1;
+            }
+            for (phrase, kind) in mount_words {
+                let n = phrase.split(' ').count();
+                let got: Vec<String> = (k..k + n).map(|x| singular(self.word(x))).collect();
+                if got.join(" ") == *phrase {
+                    return Some((format!("@mount:{kind}"), k + n));
+                }
+            }
+        }
+        let p = self.phrase_at(j, true, true).ok().flatten()?;
+        let end = p.end;
+        let id = match &p.head {
+            Head::Known(Meaning::Category(cat)) => {
+                match self.draft.groups.iter().rev().find(|g| g.category == Some(*cat)) {
+                    Some(g) => g.id.clone(),
+                    None => {
+                        let mut p2 = p.clone();
+                        if p2.count.is_none() && p2.plural {
+                            p2.count = Some(2.0);
+                        }
+                        self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit)
+                    }
+                }
+            }
+            Head::Unknown(label) if self.group_by_head(label).is_some() => self.group_by_head(label).unwrap_or_default(),
+            Head::Unknown(label) => {
+                match self.draft.groups.iter().rev().find(|g| g.category.is_none() && &g.label == label) {
+                    Some(g) => g.id.clone(),
+                    None => {
+                        let mut p2 = p.clone();
+                        if p2.count.is_none() && p2.plural {
+                            p2.count = Some(2.0);
+                        }
+                        self.new_group(None, label.clone(), &p2, p.explicit)
+                    }
+                }
+            }
+            _ => return None,
+        };
+        self.mark(j, end);
+        Some((id, end))
+    }
+
+    /// An earlier group that a bare head noun refers to: "the racks" for pallet racks,
+    /// "the bench" for a workbench.
+    fn group_by_head(&self, label: &str) -> Option<String> {
+        let head = label.split_whitespace().last()?;
+        if head.len() < 3 {
+            return None;
+        }
+        self.draft.groups.iter().rev().find_map(|g| {
+            let names: Vec<String> = match g.category.and_then(sw_catalog::find) {
+                Some(c) => std::iter::once(c.display).chain(c.synonyms.iter().copied()).map(str::to_string).collect(),
+                None => vec![g.label.clone()],
+            };
+            let hit = names.iter().any(|n| n.split_whitespace().last().is_some_and(|last| last == head || last.ends_with(head)));
+            hit.then(|| g.id.clone())
+        })
+    }
+
+    fn apply_pending(&mut self) {
+        let Some(s) = self.subject.clone() else {
+            return;
+        };
+        for (cue, targets) in std::mem::take(&mut self.pending) {
+            self.apply(&s, cue, targets);
+        }
+    }
+
+    fn apply(&mut self, subject: &Subject, cue: Cue, targets: Vec<String>) {
+        match subject {
+            Subject::Robot(idx) => self.apply_to_robot(*idx, cue, targets),
+            Subject::Group(g) if targets.iter().any(|t| t.starts_with("@robot:")) => {
+                // "a table next to it" where "it" is a robot: the robot works at the table.
+                let Some(r) = targets.iter().find_map(|t| t.strip_prefix("@robot:")).and_then(|r| r.parse::<usize>().ok()) else {
+                    return;
+                };
+                if matches!(cue, Cue::NextTo | Cue::InFront | Cue::Around)
+                    && let Some(robot) = self.draft.robots.get_mut(r)
+                {
+                    robot.near = Some(g.clone());
+                }
+            }
+            Subject::Group(g) => {
+                // "a mug on the table next to the door": placement words after an "on"
+                // describe where the table stands.
+                let floor_level =
+                    matches!(cue, Cue::Wall(_) | Cue::Door | Cue::Corner(_) | Cue::End(_) | Cue::Center | Cue::NextTo);
+                let host = self.on_host.iter().rev().find(|(s, _)| s == g).map(|(_, h)| h.clone());
+                let subject = match host {
+                    Some(h) if floor_level && !targets.contains(&h) => h,
+                    _ => g.clone(),
+                };
+                let kind = match (cue, targets.as_slice()) {
+                    (Cue::On, [t]) => {
+                        self.on_host.push((subject.clone(), t.clone()));
+                        RelationKind::On { target: t.clone() }
+                    }
+                    (Cue::Under, [t]) => RelationKind::Under { target: t.clone() },
+                    (Cue::NextTo, [t]) => RelationKind::NextTo { target: t.clone() },
+                    (Cue::InFront, [t]) => RelationKind::InFrontOf { target: t.clone() },
+                    (Cue::Around, [t]) => RelationKind::Around { target: t.clone() },
+                    (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
+                    (Cue::Row, _) => RelationKind::InRow,
+                    (Cue::Facing, _) => RelationKind::FacingEachOther,
+                    (Cue::End(w), _) => RelationKind::AtEnd { wall: w },
+                    (Cue::Corner(c), _) => RelationKind::InCorner { corner: c },
+                    (Cue::Center, _) => RelationKind::InCenter,
+                    (Cue::Door, _) => RelationKind::NearDoor,
+                    (Cue::Wall(w), _) => RelationKind::AgainstWall { wall: w },
+                    (Cue::Floor, _) => return,
+                    _ => return,
+                };
+                if kind.targets().contains(&subject.as_str()) {
+                    return;
+                }
+                self.relate(&subject, kind);
+            }
+        }
+    }
+
+    fn apply_to_robot(&mut self, idx: usize, cue: Cue, targets: Vec<String>) {
+        let Some(robot) = self.draft.robots.get_mut(idx) else {
+            return;
+        };
+        if targets.iter().any(|t| t.starts_with("@robot:")) {
+            return;
+        }
+        match (cue, targets.as_slice()) {
+            (Cue::On, [t]) if t == "@mount:pedestal" => robot.mount = Mount::Pedestal,
+            (Cue::On, [t]) if t == "@mount:mobile" => robot.mount = Mount::MobileBase,
+            (Cue::On, [t]) if t == "@mount:floor" => robot.mount = Mount::Floor,
+            (Cue::Floor, _) => robot.mount = Mount::Floor,
+            (Cue::On, [t]) => robot.mount = Mount::OnSurface { target: t.clone() },
+            (Cue::NextTo | Cue::InFront | Cue::Around | Cue::Between, [t, ..]) => robot.near = Some(t.clone()),
+            (cue, _) => {
+                let phrase = robot.phrase.clone();
+                self.draft.approximated.push(Approximation {
+                    text: phrase,
+                    became: "placed by the layout".into(),
+                    reason: format!(
+                        "robot placement '{}' is not supported yet; robots are placed near their work",
+                        cue_name(&cue)
+                    ),
+                });
+            }
+        }
+    }
+}
+
+fn cue_name(c: &Cue) -> &'static str {
+    match c {
+        Cue::On => "on",
+        Cue::Under => "under",
+        Cue::NextTo => "next to",
+        Cue::InFront => "in front of",
+        Cue::Between => "between",
+        Cue::Around => "around",
+        Cue::Row => "in a row",
+        Cue::Facing => "facing each other",
+        Cue::End(_) => "at one end",
+        Cue::Corner(_) => "in the corner",
+        Cue::Center => "in the middle",
+        Cue::Door => "near the door",
+        Cue::Wall(_) => "against the wall",
+        Cue::Floor => "on the floor",
+    }
+}
+
+fn set_axis(e: &mut ExplicitSize, axis: &str, v: f64) {
+    match axis {
+        "width" => e.width = Some(v),
+        "depth" => e.depth = Some(v),
+        _ => e.height = Some(v),
+    }
+}
+
+fn apply_dims(e: &mut ExplicitSize, d: &[f64]) {
+    if let Some(w) = d.first() {
+        e.width = Some(*w);
+    }
+    if let Some(v) = d.get(1) {
+        e.depth = Some(*v);
+    }
+    if let Some(h) = d.get(2) {
+        e.height = Some(*h);
+    }
+}

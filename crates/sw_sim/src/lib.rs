@@ -1,0 +1,12 @@
+//! Verification in real MuJoCo, in-process: the only crate that links the engine.
+//!
+//! [`verify_file`] loads a package's `scene.xml` from disk exactly as a user would,
+//! resets to the `home` keyframe, reports every contact deeper than a threshold between
+//! different bodies at t = 0, then settles the scene for a few seconds with robots
+//! holding their pose and measures how far each free body moved.
+
+mod snapshot;
+mod verify;
+
+pub use snapshot::render_scene;
+pub use verify::{VerifyOptions, mujoco_version, verify_file};
