@@ -177,11 +177,7 @@ fn defaults(ctx: &mut Ctx<'_>, idx: usize) -> Vec<Spot> {
     let o = &ctx.input.objects[idx];
     match o.asset.placement {
         PlacementKind::AgainstWall | PlacementKind::InWall | PlacementKind::WallMounted => wall_slots(ctx, idx, None),
-        PlacementKind::OnSurface => {
-            let mut v = wall_slots(ctx, idx, None);
-            v.extend(free_grid(ctx, idx, false));
-            v
-        }
+        PlacementKind::OnSurface => wall_slots(ctx, idx, None),
         PlacementKind::Floor => {
             if o.has_tag("storage") && o.has_tag("tall") {
                 wall_slots(ctx, idx, None)
@@ -273,8 +269,9 @@ fn along_wall(ctx: &Ctx<'_>, idx: usize, wall: Wall, reverse: bool) -> Vec<Spot>
 pub(crate) fn free_grid(ctx: &mut Ctx<'_>, idx: usize, central: bool) -> Vec<Spot> {
     let b = footprint(ctx, idx);
     let s = b.size();
-    let step = (s[0].min(s[1]) / 2.0).clamp(0.1, 1.0);
     let [hw, hd] = ctx.space.half;
+    // Fine enough to pack, coarse enough that a large room stays a few thousand points.
+    let step = (s[0].min(s[1]) / 2.0).clamp(0.1, 1.0).max((4.0 * hw * hd / 4000.0).sqrt());
     let mut pts = Vec::new();
     let nx = ((2.0 * hw) / step).floor() as i64;
     let ny = ((2.0 * hd) / step).floor() as i64;
@@ -584,12 +581,16 @@ fn under(ctx: &Ctx<'_>, target: &str, k: usize) -> Vec<Spot> {
     out
 }
 
+/// The last placed instance of `group` before instance `k`.
+fn previous_sibling(ctx: &Ctx<'_>, group: &str, k: usize) -> Option<(usize, Spot)> {
+    ctx.instances(group).into_iter().take(k).rev().find_map(|i| ctx.placed[i].as_ref().map(|p| (i, p.spot)))
+}
+
 /// A row: continue from the previous instance along its width; the first instance goes
 /// on the room's long centre line.
 fn row(ctx: &mut Ctx<'_>, idx: usize, group: &str, k: usize) -> Vec<Spot> {
     let b = footprint(ctx, idx);
-    let prev =
-        ctx.instances(group).into_iter().take(k).filter_map(|i| ctx.placed[i].as_ref().map(|p| (i, p.spot))).last();
+    let prev = previous_sibling(ctx, group, k);
     match prev {
         Some((pi, ps)) => {
             let pb = ctx.bounds[pi];
@@ -633,12 +634,11 @@ fn facing(ctx: &mut Ctx<'_>, idx: usize, group: &str, k: usize) -> Vec<Spot> {
     if wallish {
         let [hw, hd] = ctx.space.half;
         let (a, b) = if hw >= hd { (Wall::North, Wall::South) } else { (Wall::East, Wall::West) };
-        let w = if k % 2 == 0 { a } else { b };
+        let w = if k.is_multiple_of(2) { a } else { b };
         return along_wall(ctx, idx, w, false);
     }
     if k % 2 == 1
-        && let Some((pi, ps)) =
-            ctx.instances(group).into_iter().take(k).filter_map(|i| ctx.placed[i].as_ref().map(|p| (i, p.spot))).last()
+        && let Some((pi, ps)) = previous_sibling(ctx, group, k)
     {
         let pb = ctx.bounds[pi];
         let b = footprint(ctx, idx);

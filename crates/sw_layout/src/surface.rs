@@ -79,11 +79,16 @@ fn place_on_group(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize) -> bool
         let nsurf = ctx.input.objects[hi].asset.surfaces.len();
         let mut order: Vec<usize> = (0..nsurf).collect();
         let used = ctx.surface_use.entry(hi).or_insert_with(|| vec![Vec::new(); nsurf]).clone();
-        let surfaces = &ctx.input.objects[hi].asset.surfaces;
+        let host = &ctx.input.objects[hi];
+        let surfaces = &host.asset.surfaces;
+        // On work furniture ("on the bench") the top is meant, the shelf under it only
+        // when the top is full; storage spreads items over its levels.
+        let work = host.has_tag("surface") && host.has_tag("furniture") && !host.has_tag("storage");
+        let lower = |i: usize| work && surfaces[i].clearance.is_some();
         order.sort_by(|&a, &b| {
             let fa = fill(&used[a]) / surfaces[a].area().max(1e-6);
             let fb = fill(&used[b]) / surfaces[b].area().max(1e-6);
-            fa.total_cmp(&fb).then(a.cmp(&b))
+            lower(a).cmp(&lower(b)).then(fa.total_cmp(&fb)).then(a.cmp(&b))
         });
         for si in order {
             if try_surface(ctx, idx, hi, si) {

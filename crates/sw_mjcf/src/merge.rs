@@ -130,10 +130,10 @@ pub fn prepare_robot(source_name: &str, mjcf: &str, prefix: &str, mount: &Pose) 
             }
         });
         wb.walk(&mut |e| {
-            if e.name == "joint" || e.name == "freejoint" {
-                if let Some(n) = e.get("name") {
-                    names.insert(n.to_string());
-                }
+            if (e.name == "joint" || e.name == "freejoint")
+                && let Some(n) = e.get("name")
+            {
+                names.insert(n.to_string());
             }
         });
     }

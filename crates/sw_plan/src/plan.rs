@@ -291,8 +291,10 @@ pub struct ProxyPlan {
 }
 
 /// A spatial relation of an object group to the room or to other groups.
+///
+/// (serde cannot deny unknown fields on a struct with a flattened enum, so extra fields
+/// of a relation are ignored rather than rejected.)
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
 pub struct Relation {
     /// The group the relation constrains.
     pub subject: String,

@@ -31,7 +31,7 @@ impl Cue {
     }
 }
 
-fn words_at<'a>(toks: &'a [Token], i: usize, n: usize) -> Vec<&'a str> {
+fn words_at(toks: &[Token], i: usize, n: usize) -> Vec<&str> {
     toks[i..(i + n).min(toks.len())]
         .iter()
         .map(|t| if t.kind == TokenKind::Word { t.norm.as_str() } else { "" })

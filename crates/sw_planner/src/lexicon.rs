@@ -561,7 +561,7 @@ impl Lexicon {
         }
         for list in lex.by_first.values_mut() {
             // Longest first; for equal length, the first added wins (rooms before fillers).
-            list.sort_by(|a, b| b.words.len().cmp(&a.words.len()));
+            list.sort_by_key(|e| std::cmp::Reverse(e.words.len()));
         }
         lex
     }

@@ -851,7 +851,9 @@ impl<'a> Parser<'a> {
                     }
                 }
             }
-            Head::Unknown(label) if self.group_by_head(label).is_some() => self.group_by_head(label).unwrap_or_default(),
+            Head::Unknown(label) if self.group_by_head(label).is_some() => {
+                self.group_by_head(label).unwrap_or_default()
+            }
             Head::Unknown(label) => {
                 match self.draft.groups.iter().rev().find(|g| g.category.is_none() && &g.label == label) {
                     Some(g) => g.id.clone(),
@@ -882,7 +884,9 @@ impl<'a> Parser<'a> {
                 Some(c) => std::iter::once(c.display).chain(c.synonyms.iter().copied()).map(str::to_string).collect(),
                 None => vec![g.label.clone()],
             };
-            let hit = names.iter().any(|n| n.split_whitespace().last().is_some_and(|last| last == head || last.ends_with(head)));
+            let hit = names
+                .iter()
+                .any(|n| n.split_whitespace().last().is_some_and(|last| last == head || last.ends_with(head)));
             hit.then(|| g.id.clone())
         })
     }
@@ -901,7 +905,9 @@ impl<'a> Parser<'a> {
             Subject::Robot(idx) => self.apply_to_robot(*idx, cue, targets),
             Subject::Group(g) if targets.iter().any(|t| t.starts_with("@robot:")) => {
                 // "a table next to it" where "it" is a robot: the robot works at the table.
-                let Some(r) = targets.iter().find_map(|t| t.strip_prefix("@robot:")).and_then(|r| r.parse::<usize>().ok()) else {
+                let Some(r) =
+                    targets.iter().find_map(|t| t.strip_prefix("@robot:")).and_then(|r| r.parse::<usize>().ok())
+                else {
                     return;
                 };
                 if matches!(cue, Cue::NextTo | Cue::InFront | Cue::Around)

@@ -226,7 +226,7 @@ pub(crate) fn singular(word: &str) -> String {
         return (*s).to_string();
     }
     let keep = ["glass", "gas", "bus", "lens", "chassis", "series", "ss", "us", "is", "news"];
-    if keep.iter().any(|k| word == *k) || word.ends_with("ss") || word.len() <= 3 {
+    if keep.contains(&word) || word.ends_with("ss") || word.len() <= 3 {
         return word.to_string();
     }
     if let Some(stem) = word.strip_suffix("ies")

@@ -20,6 +20,7 @@ pub fn render_scene(scene: &Path, width: u32, height: u32, groups: &[i32]) -> Re
     let mut items: Vec<(Mesh, Pose, [f32; 4])> = Vec::new();
     let mut walls: Vec<bool> = Vec::new();
     let mut bounds = Aabb::EMPTY;
+    let mut room = Aabb::EMPTY;
     for g in 0..ngeom {
         let group = model.geom_group()[g];
         let gtype = model.geom_type()[g];
@@ -63,15 +64,23 @@ pub fn render_scene(scene: &Path, width: u32, height: u32, groups: &[i32]) -> Re
         let pose = Pose { pos, quat };
         let is_wall = model.geom_bodyid()[g] == 0
             && model.id_to_name(MjtObjBase::mjOBJ_GEOM, g).is_some_and(|n| n.starts_with("wall_"));
-        if !is_plane {
+        // Frame what is in the room, not the room itself (walls and floor belong to the
+        // world body).
+        if model.geom_bodyid()[g] != 0 {
             bounds = bounds.union(&mesh.bounds().transformed(&pose));
+        } else if !is_plane {
+            room = room.union(&mesh.bounds().transformed(&pose));
         }
         walls.push(is_wall);
         items.push((mesh, pose, rgba));
     }
     if bounds.is_empty() {
-        bounds = Aabb::from_center_half([0.0; 3], [1.0; 3]);
+        bounds = if room.is_empty() { Aabb::from_center_half([0.0; 3], [1.0; 3]) } else { room };
     }
+    // A little floor around the objects, and never less than a 2 m cube of view.
+    let c = bounds.center();
+    let s = bounds.size();
+    bounds = Aabb::from_center_half(c, [(s[0] * 0.6).max(1.0), (s[1] * 0.6).max(1.0), (s[2] * 0.5).max(0.5)]);
     // Frame the objects (not the whole floor plane), from the south-east, above.
     let cam = Camera::framing(&bounds, -1.1, 0.62);
     let centre = bounds.center();

@@ -71,10 +71,10 @@ pub fn verify_file(path: &Path, opts: &VerifyOptions) -> Verification {
     });
 
     let mut data = model.make_data();
-    if let Some(key) = model.name_to_id(MjtObjBase::mjOBJ_KEY, "home") {
-        if data.reset_keyframe(key).is_ok() {
-            v.initial_state = "keyframe 'home'".into();
-        }
+    if let Some(key) = model.name_to_id(MjtObjBase::mjOBJ_KEY, "home")
+        && data.reset_keyframe(key).is_ok()
+    {
+        v.initial_state = "keyframe 'home'".into();
     }
     data.forward();
 
