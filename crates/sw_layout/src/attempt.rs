@@ -161,8 +161,15 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
 
     // 1. Furniture and fixtures on the floor, targets before the things related to them.
     let is_small = |i: usize| input.objects[i].asset.placement == PlacementKind::OnSurface;
+    // Small things go here too when where they stand was said ("a bin under the table").
+    let related: Vec<bool> = input.objects.iter().map(|o| !ctx.relations(&o.group).is_empty()).collect();
+    let has_relations = |i: usize| related[i];
     let furniture: Vec<usize> = (0..input.objects.len())
-        .filter(|&i| input.objects[i].carries_robot.is_none() && !is_small(i) && surface_target(&ctx, i).is_none())
+        .filter(|&i| {
+            input.objects[i].carries_robot.is_none()
+                && (!is_small(i) || has_relations(i))
+                && surface_target(&ctx, i).is_none()
+        })
         .collect();
     for idx in floor::order(&ctx, &furniture) {
         floor::place(&mut ctx, idx);
@@ -177,7 +184,12 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
     // 4. Small items with no support named: on work surfaces when they are tabletop
     //    things, else on the floor.
     let rest: Vec<usize> = (0..input.objects.len())
-        .filter(|&i| input.objects[i].carries_robot.is_none() && is_small(i) && surface_target(&ctx, i).is_none())
+        .filter(|&i| {
+            input.objects[i].carries_robot.is_none()
+                && is_small(i)
+                && !has_relations(i)
+                && surface_target(&ctx, i).is_none()
+        })
         .collect();
     surface::place_loose(&mut ctx, &rest);
 

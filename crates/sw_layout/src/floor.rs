@@ -37,7 +37,7 @@ pub(crate) fn order(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
             (*g, d)
         })
         .collect();
-    let priority = |g: &str| -> (u8, i64) {
+    let priority = |g: &str| -> (u8, u8, i64) {
         let first = ctx.instances(g)[0];
         let o = &objects[first];
         let walled = o.asset.placement == PlacementKind::AgainstWall
@@ -50,8 +50,10 @@ pub(crate) fn order(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
                         | RelationKind::NearDoor
                 )
             });
+        // What goes under something claims the space before what goes around it.
+        let under = ctx.relations(g).iter().any(|r| matches!(r, RelationKind::Under { .. }));
         let s = ctx.bounds[first].size();
-        (u8::from(!walled), -((s[0] * s[1] * 1e4) as i64))
+        (u8::from(!walled), u8::from(!under), -((s[0] * s[1] * 1e4) as i64))
     };
     let mut done: Vec<&str> = Vec::new();
     while done.len() < groups.len() {

@@ -52,7 +52,9 @@ pub(crate) fn place_loose(ctx: &mut Ctx<'_>, items: &[usize]) {
     };
     for &idx in items {
         let o = &ctx.input.objects[idx];
-        let tabletop = o.has_tag("tabletop");
+        // "a bin under the table", "a crate next to the door": where it goes was said.
+        let placed_by_relation = !ctx.relations(&o.group).is_empty();
+        let tabletop = o.has_tag("tabletop") && !placed_by_relation;
         if tabletop && !hosts.is_empty() {
             let group = o.group.clone();
             let k = ctx.instances(&group).iter().position(|&i| i == idx).unwrap_or(0);

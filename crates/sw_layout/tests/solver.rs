@@ -292,3 +292,20 @@ proptest! {
         prop_assert_eq!(solve_forged(&f, Vec::new(), seed), solve_forged(&f, Vec::new(), seed));
     }
 }
+
+#[test]
+fn a_small_kitchen_layout_is_stable() {
+    let mut plan = room(RoomKind::Kitchen, Dims::new(5.0, 4.0, 2.7), false);
+    plan.objects.push(group("table", "table", 1));
+    plan.objects.push(group("chair", "chair", 2));
+    plan.objects.push(group("cabinet", "cabinet", 1));
+    plan.objects.push(group("box", "cardboard_box", 2));
+    plan.relations.push(Relation { subject: "chair".into(), kind: RelationKind::Around { target: "table".into() } });
+    plan.relations
+        .push(Relation { subject: "cabinet".into(), kind: RelationKind::AgainstWall { wall: Some(Wall::North) } });
+    plan.relations.push(Relation { subject: "box".into(), kind: RelationKind::On { target: "table".into() } });
+    let f = forge(plan, 11);
+    let scene = solve_forged(&f, Vec::new(), 11);
+    check_invariants(&f, &scene);
+    insta::assert_json_snapshot!("kitchen_layout", scene);
+}
