@@ -94,13 +94,23 @@ fn main() -> ExitCode {
     let args: Vec<OsString> = std::env::args_os().collect();
     let cli = match Cli::try_parse_from(&args) {
         Ok(c) => c,
+        Err(e) if e.use_stderr() => {
+            // Usage errors are bad input: one line, exit 2.
+            eprintln!("error: {} (see scenewright --help)", one_line_usage_error(&e.render().to_string()));
+            return ExitCode::from(2);
+        }
         Err(e) => {
-            // Help and version go to stdout with success; usage errors are bad input.
-            let code = if e.use_stderr() { 2 } else { 0 };
+            // Help and version go to stdout.
             let _ = e.print();
-            return ExitCode::from(code);
+            return ExitCode::SUCCESS;
         }
     };
+    // Ctrl-C or SIGTERM in the middle of a run: remove the half-written package.
+    let _ = ctrlc::set_handler(|| {
+        sw_pipeline::discard_staged_packages();
+        eprintln!("error: interrupted; no package was written");
+        std::process::exit(130);
+    });
     let result = match cli.command {
         Command::Generate(a) => cmd_generate::run(a),
         Command::Validate { dir, json } => cmd_generate::validate(&dir, json),
@@ -120,6 +130,21 @@ fn main() -> ExitCode {
             ExitCode::from(f.code)
         }
     }
+}
+
+/// Clap's message without its usage block and tips, on one line.
+fn one_line_usage_error(rendered: &str) -> String {
+    let mut parts = Vec::new();
+    for line in rendered.lines() {
+        let line = line.trim();
+        if line.starts_with("Usage:") || line.starts_with("tip:") || line.starts_with("For more information") {
+            break;
+        }
+        if !line.is_empty() {
+            parts.push(line.trim_start_matches("error:").trim().to_string());
+        }
+    }
+    parts.join(" ")
 }
 
 fn schema(out: Option<PathBuf>) -> Result<u8, Failure> {

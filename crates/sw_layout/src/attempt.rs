@@ -47,6 +47,13 @@ pub(crate) struct Ctx<'a> {
     pub warnings: Vec<Warning>,
     pub reasons: BTreeMap<usize, String>,
     pub floor_failures: usize,
+    /// Floor placements that failed, per group: after a few, the rest of the group fails
+    /// at once (its instances are alike; searching the whole floor again cannot succeed).
+    pub group_failures: BTreeMap<String, u32>,
+    /// Where in its default candidates each group last found a place.
+    pub cursor: BTreeMap<String, usize>,
+    /// The free-floor grid of each group (and whether it is ordered from the centre).
+    pub grid_cache: BTreeMap<(String, bool), std::rc::Rc<Vec<Spot>>>,
 }
 
 impl<'a> Ctx<'a> {
@@ -157,6 +164,9 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
         warnings: Vec::new(),
         reasons: BTreeMap::new(),
         floor_failures: 0,
+        group_failures: BTreeMap::new(),
+        cursor: BTreeMap::new(),
+        grid_cache: BTreeMap::new(),
     };
 
     // 1. Furniture and fixtures on the floor, targets before the things related to them.

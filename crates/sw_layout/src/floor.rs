@@ -3,8 +3,9 @@
 
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
+use std::rc::Rc;
 
-use sw_geom::{Aabb, PlacementKind};
+use sw_geom::{Aabb, PlacementKind, Rng};
 use sw_plan::{Corner, RelationKind, Support, Wall};
 
 use crate::attempt::Ctx;
@@ -78,7 +79,12 @@ pub(crate) fn order(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
 
 /// Places one floor object at its best feasible candidate. Returns false when none fits.
 pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
-    let rels = ctx.relations(&ctx.input.objects[idx].group);
+    let group = ctx.input.objects[idx].group.clone();
+    // A group's instances are alike: after a few found no place, the rest will not either.
+    if ctx.group_failures.get(&group).copied().unwrap_or(0) >= 3 {
+        return fail(ctx, idx);
+    }
+    let rels = ctx.relations(&group);
     let ignore_zones: Vec<String> = rels
         .iter()
         .filter_map(|r| match r {
@@ -88,24 +94,36 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
         .flat_map(|t| ctx.instances(&t).into_iter().map(|i| ctx.input.objects[i].name.clone()).collect::<Vec<_>>())
         .collect();
     let ignore: Vec<&str> = ignore_zones.iter().map(String::as_str).collect();
-    for (spot, tier) in candidates(ctx, idx) {
-        if fits_floor(ctx, idx, &spot, &ignore) {
-            ctx.commit(idx, spot, Support::Floor);
-            if tier > 0 && !rels.is_empty() {
-                let o = &ctx.input.objects[idx];
-                let names: Vec<&str> = rels.iter().map(|r| r.name()).collect();
-                ctx.warn(
-                    "relation_unmet",
-                    format!(
-                        "{}: could not satisfy {} (no free space there); placed elsewhere",
-                        o.name,
-                        names.join(", ")
-                    ),
-                );
-            }
-            return true;
+    let (specific, defaults, grid) = candidates(ctx, idx);
+    let mut found: Option<(Spot, u8)> = specific.into_iter().find(|(spot, _)| fits_floor(ctx, idx, spot, &ignore));
+    if found.is_none() {
+        // Defaults and the free grid are the same list for every instance of a group:
+        // start where the previous instance found its place (space only fills up).
+        let start = ctx.cursor.get(&group).copied().unwrap_or(0);
+        let all = defaults.len() + grid.len();
+        let at = |k: usize| if k < defaults.len() { defaults[k] } else { grid[k - defaults.len()] };
+        if let Some(k) = (start..all).find(|&k| fits_floor(ctx, idx, &at(k), &ignore)) {
+            ctx.cursor.insert(group.clone(), k);
+            found = Some((at(k), 2));
         }
     }
+    let Some((spot, tier)) = found else {
+        *ctx.group_failures.entry(group).or_insert(0) += 1;
+        return fail(ctx, idx);
+    };
+    ctx.commit(idx, spot, Support::Floor);
+    if tier > 0 && !rels.is_empty() {
+        let o = &ctx.input.objects[idx];
+        let names: Vec<&str> = rels.iter().map(|r| r.name()).collect();
+        ctx.warn(
+            "relation_unmet",
+            format!("{}: could not satisfy {} (no free space there); placed elsewhere", o.name, names.join(", ")),
+        );
+    }
+    true
+}
+
+fn fail(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     let s = ctx.space.half;
     let o = &ctx.input.objects[idx];
     ctx.reasons.insert(
@@ -148,29 +166,32 @@ fn footprint(ctx: &Ctx<'_>, idx: usize) -> Aabb {
 
 /// All candidates, best first: relation-satisfying, then the object's defaults, then
 /// anywhere. Each comes with its tier (0 = satisfies the relations).
-fn candidates(ctx: &mut Ctx<'_>, idx: usize) -> Vec<(Spot, u8)> {
+type Candidates = (Vec<(Spot, u8)>, Vec<Spot>, Rc<Vec<Spot>>);
+
+/// Candidates, best first: those satisfying all the object's relations (tier 0), each
+/// relation's alone (tier 1), then the object's defaults, then the free grid.
+fn candidates(ctx: &mut Ctx<'_>, idx: usize) -> Candidates {
     let o = &ctx.input.objects[idx];
     let rels = ctx.relations(&o.group);
-    let mut out: Vec<(Spot, u8)> = Vec::new();
+    let mut specific: Vec<(Spot, u8)> = Vec::new();
     let positional: Vec<&RelationKind> =
         rels.iter().copied().filter(|r| !matches!(r, RelationKind::On { .. })).collect();
     if !positional.is_empty() {
-        // Candidates of each relation that also satisfy the others, then each alone.
         let mut all: Vec<Vec<Spot>> = positional.iter().map(|r| generate(ctx, idx, r)).collect();
         for (i, set) in all.iter().enumerate() {
             for s in set {
                 if positional.iter().enumerate().all(|(j, r)| i == j || satisfies(ctx, idx, s, r)) {
-                    out.push((*s, 0));
+                    specific.push((*s, 0));
                 }
             }
         }
         for set in all.iter_mut() {
-            out.extend(set.drain(..).map(|s| (s, 1)));
+            specific.extend(set.drain(..).map(|s| (s, 1)));
         }
     }
-    out.extend(defaults(ctx, idx).into_iter().map(|s| (s, 2)));
-    out.extend(free_grid(ctx, idx, false).into_iter().map(|s| (s, 3)));
-    out
+    let defaults = defaults(ctx, idx);
+    let grid = free_grid(ctx, idx, false);
+    (specific, defaults, grid)
 }
 
 /// The object's default places: storage against walls, machines and tables out in the
@@ -184,7 +205,7 @@ fn defaults(ctx: &mut Ctx<'_>, idx: usize) -> Vec<Spot> {
             if o.has_tag("storage") && o.has_tag("tall") {
                 wall_slots(ctx, idx, None)
             } else {
-                free_grid(ctx, idx, true)
+                free_grid(ctx, idx, true).to_vec()
             }
         }
     }
@@ -268,32 +289,37 @@ fn along_wall(ctx: &Ctx<'_>, idx: usize, wall: Wall, reverse: bool) -> Vec<Spot>
 
 /// Grid positions over the whole floor at every quarter turn; `central` orders them from
 /// the middle of the room outwards, otherwise in a seeded random order.
-pub(crate) fn free_grid(ctx: &mut Ctx<'_>, idx: usize, central: bool) -> Vec<Spot> {
+pub(crate) fn free_grid(ctx: &mut Ctx<'_>, idx: usize, central: bool) -> Rc<Vec<Spot>> {
+    let group = ctx.input.objects[idx].group.clone();
+    if let Some(g) = ctx.grid_cache.get(&(group.clone(), central)) {
+        return Rc::clone(g);
+    }
     let b = footprint(ctx, idx);
     let s = b.size();
     let [hw, hd] = ctx.space.half;
     // Fine enough to pack, coarse enough that a large room stays a few thousand points.
     let step = (s[0].min(s[1]) / 2.0).clamp(0.1, 1.0).max((4.0 * hw * hd / 4000.0).sqrt());
-    let mut pts = Vec::new();
+    let mut rng = Rng::derive(group_rng(ctx, idx), if central { "central grid" } else { "grid" });
     let nx = ((2.0 * hw) / step).floor() as i64;
     let ny = ((2.0 * hd) / step).floor() as i64;
+    let mut keyed: Vec<(f64, (f64, f64))> = Vec::with_capacity(((nx + 1) * (ny + 1)) as usize);
     for i in 0..=nx {
         for j in 0..=ny {
-            pts.push((-hw + i as f64 * step, -hd + j as f64 * step));
+            let p = (-hw + i as f64 * step, -hd + j as f64 * step);
+            let key = if central { p.0.hypot(p.1) + rng.range(0.0, step) } else { rng.unit() };
+            keyed.push((key, p));
         }
     }
-    let mut keyed: Vec<(f64, (f64, f64))> = pts
-        .into_iter()
-        .map(|p| (if central { p.0.hypot(p.1) + ctx.rng.range(0.0, step) } else { ctx.rng.unit() }, p))
-        .collect();
     keyed.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let start = ctx.rng.below(4);
+    let start = rng.below(4);
     let mut out = Vec::with_capacity(keyed.len() * 4);
     for (_, (x, y)) in keyed {
         for k in 0..4 {
             out.push(Spot::new(x, y, 0.0, QUARTER_TURNS[(start + k) % 4]));
         }
     }
+    let out = Rc::new(out);
+    ctx.grid_cache.insert((group, central), Rc::clone(&out));
     out
 }
 
@@ -325,7 +351,7 @@ fn generate(ctx: &mut Ctx<'_>, idx: usize, rel: &RelationKind) -> Vec<Spot> {
             v.sort_by(|a, b| (a.x - ox).hypot(a.y - oy).total_cmp(&(b.x - ox).hypot(b.y - oy)));
             v
         }
-        RelationKind::InCenter => free_grid(ctx, idx, true),
+        RelationKind::InCenter => free_grid(ctx, idx, true).to_vec(),
         RelationKind::NextTo { target } => beside(ctx, idx, target, k),
         RelationKind::InFrontOf { target } => in_front_of(ctx, idx, target, k),
         RelationKind::Around { target } => around(ctx, idx, target, k),
@@ -432,7 +458,8 @@ fn corner_slots(ctx: &mut Ctx<'_>, idx: usize, corner: Option<Corner>) -> Vec<Sp
 fn strip_near(ctx: &mut Ctx<'_>, idx: usize, wall: Wall) -> Vec<Spot> {
     let [hw, hd] = ctx.space.half;
     free_grid(ctx, idx, false)
-        .into_iter()
+        .iter()
+        .copied()
         .filter(|s| match wall {
             Wall::North => s.y > hd * 0.5,
             Wall::South => s.y < -hd * 0.5,

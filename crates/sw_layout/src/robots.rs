@@ -139,7 +139,7 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
             }
         }
     }
-    for s in free_grid(ctx, ci, true) {
+    for s in free_grid(ctx, ci, true).iter().copied() {
         candidates.push((s, None));
     }
     for (spot, work) in candidates {

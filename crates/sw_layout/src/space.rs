@@ -2,6 +2,8 @@
 //! coordinates, keep-clear zones (the doorway, service clearances), and the tests a
 //! candidate pose must pass.
 
+use std::collections::HashMap;
+
 use sw_geom::Aabb;
 
 /// Gap kept between floor objects, m.
@@ -33,12 +35,19 @@ pub(crate) struct Zone {
     pub area: Aabb,
 }
 
+/// Side of the cells of the occupancy index, m.
+const CELL: f64 = 1.0;
+
 #[derive(Debug, Clone)]
 pub(crate) struct Space {
     pub half: [f64; 2],
     pub height: f64,
     pub occupants: Vec<Occupant>,
     pub zones: Vec<Zone>,
+    /// Occupants by floor cell: collision queries look only at their neighbourhood.
+    cells: HashMap<(i32, i32), Vec<u32>>,
+    /// Occupant ids by name.
+    by_name: HashMap<String, usize>,
 }
 
 pub(crate) fn union(boxes: &[Aabb]) -> Aabb {
@@ -62,7 +71,14 @@ pub(crate) fn overlaps_2d(a: &Aabb, b: &Aabb) -> bool {
 
 impl Space {
     pub fn new(width: f64, depth: f64, height: f64) -> Self {
-        Self { half: [width / 2.0, depth / 2.0], height, occupants: Vec::new(), zones: Vec::new() }
+        Self {
+            half: [width / 2.0, depth / 2.0],
+            height,
+            occupants: Vec::new(),
+            zones: Vec::new(),
+            cells: HashMap::new(),
+            by_name: HashMap::new(),
+        }
     }
 
     /// Inside the walls (with the wall gap) and under the ceiling.
@@ -83,7 +99,7 @@ impl Space {
         if all.is_empty() || !self.inside(&all) {
             return false;
         }
-        for o in &self.occupants {
+        for o in self.near(&all, gap) {
             if ignore.contains(&o.name.as_str()) || !overlaps(&all, &o.bounds, gap) {
                 continue;
             }
@@ -106,19 +122,49 @@ impl Space {
 
     /// True when a keep-clear zone is free of floor objects other than `except`.
     pub fn zone_is_clear(&self, zone: &Aabb, except: &[&str]) -> bool {
-        self.occupants
-            .iter()
+        self.near(zone, 0.0)
             .filter(|o| o.on_floor && !except.contains(&o.name.as_str()))
             .all(|o| !overlaps_2d(zone, &o.bounds))
     }
 
+    fn cell_range(b: &Aabb, gap: f64) -> (i32, i32, i32, i32) {
+        let f = |v: f64| (v / CELL).floor().clamp(-1e6, 1e6) as i32;
+        (f(b.min[0] - gap), f(b.max[0] + gap), f(b.min[1] - gap), f(b.max[1] + gap))
+    }
+
+    /// Occupants whose floor cells meet `b` grown by `gap`, each once, in insertion order.
+    fn near<'s>(&'s self, b: &Aabb, gap: f64) -> impl Iterator<Item = &'s Occupant> + 's {
+        let (x0, x1, y0, y1) = Self::cell_range(b, gap);
+        let mut ids: Vec<u32> = Vec::new();
+        for x in x0..=x1 {
+            for y in y0..=y1 {
+                if let Some(v) = self.cells.get(&(x, y)) {
+                    ids.extend_from_slice(v);
+                }
+            }
+        }
+        ids.sort_unstable();
+        ids.dedup();
+        ids.into_iter().filter_map(|i| self.occupants.get(i as usize))
+    }
+
     pub fn add(&mut self, name: &str, boxes: Vec<Aabb>, on_floor: bool) {
         let bounds = union(&boxes);
+        let id = self.occupants.len();
+        if !bounds.is_empty() {
+            let (x0, x1, y0, y1) = Self::cell_range(&bounds, 0.0);
+            for x in x0..=x1 {
+                for y in y0..=y1 {
+                    self.cells.entry((x, y)).or_default().push(id as u32);
+                }
+            }
+        }
+        self.by_name.insert(name.to_string(), id);
         self.occupants.push(Occupant { name: name.to_string(), boxes, bounds, on_floor });
     }
 
     pub fn occupant(&self, name: &str) -> Option<&Occupant> {
-        self.occupants.iter().find(|o| o.name == name)
+        self.by_name.get(name).and_then(|&i| self.occupants.get(i))
     }
 }
 

@@ -20,7 +20,7 @@ use sw_plan::{
 use tracing::info_span;
 
 pub use forge::{Forged, ForgedObject, forge};
-pub use package::{OutputError, validate_dir};
+pub use package::{OutputError, discard_staged_packages, validate_dir};
 
 /// How to run the pipeline.
 #[derive(Debug, Clone)]
@@ -94,7 +94,9 @@ pub fn generate(
     on_event: &mut dyn FnMut(&Event),
 ) -> Result<Outcome, PipelineError> {
     let started = Instant::now();
-    let staging = package::Staging::create(out)?;
+    // Refuse an unusable destination before any work, and create nothing until the
+    // prompt has been understood.
+    package::check_destination(out)?;
     let mut timings = Timings::default();
     let stage = |s: Stage, on_event: &mut dyn FnMut(&Event)| {
         on_event(&Event::StageStarted { stage: s });
@@ -119,6 +121,7 @@ pub fn generate(
         plan.robots = robots_override(models)?;
     }
     finish(Stage::Plan, t, report::plan_summary(&plan), &mut timings, on_event);
+    let staging = package::Staging::create(out)?;
 
     // L2
     let t = stage(Stage::Forge, on_event);

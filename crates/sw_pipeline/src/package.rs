@@ -26,6 +26,59 @@ fn unwritable(path: &Path, e: &std::io::Error) -> OutputError {
     OutputError::Unwritable { path: path.to_path_buf(), reason: e.kind().to_string() }
 }
 
+/// Staging directories of runs in progress, so that an interrupted process can remove
+/// them ([`discard_staged_packages`]).
+static STAGED: std::sync::Mutex<Vec<PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+/// Removes the staging directories of every run in progress. For signal handlers: after
+/// this, no half-written package is left on disk.
+pub fn discard_staged_packages() {
+    let dirs = match STAGED.lock() {
+        Ok(mut d) => std::mem::take(&mut *d),
+        Err(poisoned) => std::mem::take(&mut *poisoned.into_inner()),
+    };
+    for d in dirs {
+        let _ = std::fs::remove_dir_all(d);
+    }
+}
+
+fn forget_staged(path: &Path) {
+    if let Ok(mut d) = STAGED.lock() {
+        d.retain(|p| p != path);
+    }
+}
+
+/// Checks that `dest` can receive a package, without creating anything.
+pub(crate) fn check_destination(dest: &Path) -> Result<(), OutputError> {
+    if dest.exists() {
+        if !dest.is_dir() {
+            return Err(OutputError::NotADirectory(dest.to_path_buf()));
+        }
+        let mut entries = std::fs::read_dir(dest).map_err(|e| unwritable(dest, &e))?;
+        if entries.next().is_some() {
+            return Err(OutputError::NotEmpty(dest.to_path_buf()));
+        }
+    }
+    // The nearest existing ancestor must be a directory we can write in: probe it with a
+    // directory that is removed at once, so that nothing is left behind either way.
+    let mut a = dest.parent();
+    while let Some(p) = a {
+        let p = if p.as_os_str().is_empty() { Path::new(".") } else { p };
+        if p.exists() {
+            if !p.is_dir() {
+                let reason = format!("'{}' is not a directory", p.display());
+                return Err(OutputError::Unwritable { path: dest.to_path_buf(), reason });
+            }
+            let probe = p.join(format!(".scenewright-probe-{}", std::process::id()));
+            std::fs::create_dir(&probe).map_err(|e| unwritable(dest, &e))?;
+            let _ = std::fs::remove_dir(&probe);
+            break;
+        }
+        a = p.parent();
+    }
+    Ok(())
+}
+
 /// A package being written.
 #[derive(Debug)]
 pub(crate) struct Staging {
@@ -36,15 +89,7 @@ pub(crate) struct Staging {
 
 impl Staging {
     pub fn create(dest: &Path) -> Result<Self, OutputError> {
-        if dest.exists() {
-            if !dest.is_dir() {
-                return Err(OutputError::NotADirectory(dest.to_path_buf()));
-            }
-            let mut entries = std::fs::read_dir(dest).map_err(|e| unwritable(dest, &e))?;
-            if entries.next().is_some() {
-                return Err(OutputError::NotEmpty(dest.to_path_buf()));
-            }
-        }
+        check_destination(dest)?;
         let name =
             dest.file_name().and_then(|n| n.to_str()).filter(|n| !n.is_empty() && *n != "." && *n != "..").ok_or_else(
                 || OutputError::Unwritable { path: dest.to_path_buf(), reason: "not a directory name".into() },
@@ -57,6 +102,9 @@ impl Staging {
         let stamp = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.subsec_nanos());
         let tmp = parent.join(format!(".{name}.partial-{}-{stamp}", std::process::id()));
         std::fs::create_dir(&tmp).map_err(|e| unwritable(dest, &e))?;
+        if let Ok(mut d) = STAGED.lock() {
+            d.push(tmp.clone());
+        }
         Ok(Self { tmp, dest: dest.to_path_buf(), committed: false })
     }
 
@@ -105,6 +153,7 @@ impl Staging {
             std::fs::remove_dir(&self.dest).map_err(|e| unwritable(&self.dest, &e))?;
         }
         std::fs::rename(&self.tmp, &self.dest).map_err(|e| unwritable(&self.dest, &e))?;
+        forget_staged(&self.tmp);
         self.committed = true;
         Ok(self.dest.clone())
     }
@@ -114,6 +163,7 @@ impl Drop for Staging {
     fn drop(&mut self) {
         if !self.committed {
             let _ = std::fs::remove_dir_all(&self.tmp);
+            forget_staged(&self.tmp);
         }
     }
 }

@@ -12,7 +12,7 @@ use crate::{LaidOutScene, Mount, RelationKind, SCHEMA_VERSION, ScenePlan};
 pub const MAX_ROOM_SIDE: f64 = 500.0;
 /// Largest count of one object group.
 pub const MAX_GROUP_COUNT: u32 = 5000;
-/// Largest count of one robot group.
+/// Largest count of one robot group (and of all robots in a scene).
 pub const MAX_ROBOT_COUNT: u32 = 16;
 
 /// One problem, located by a JSON path.

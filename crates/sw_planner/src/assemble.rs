@@ -16,12 +16,14 @@ use crate::priors::prior_for;
 const DEFAULT_PLURAL_COUNT: u32 = 4;
 /// The largest count of one group the planner passes on.
 const MAX_COUNT: u32 = 2000;
+/// The largest number of objects in one scene.
+const MAX_TOTAL: u32 = 2000;
 /// Room sides are clamped into this range, m.
 const ROOM_SIDE: (f64, f64) = (1.0, 300.0);
 const ROOM_HEIGHT: (f64, f64) = (2.0, 30.0);
 
 pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result<ScenePlan, PlannerError> {
-    if d.room.is_none() && d.groups.is_empty() && d.robots.is_empty() {
+    if d.room.is_none() && !d.room_word && d.groups.is_empty() && d.robots.is_empty() {
         return Err(PlannerError::NothingUnderstood);
     }
     let mut approximated = d.approximated.clone();
@@ -107,10 +109,24 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         .collect();
     let mut dropped = Vec::new();
     for g in &d.groups {
-        let Some(count) = resolve_count(g.count, g.plural, &g.phrase, &mut approximated) else {
+        let Some(mut count) = resolve_count(g.count, g.plural, &g.phrase, &mut approximated) else {
             dropped.push(g.id.clone());
             continue;
         };
+        let so_far = plan.object_count();
+        if so_far + count > MAX_TOTAL {
+            let allowed = MAX_TOTAL.saturating_sub(so_far);
+            approximated.push(Approximation {
+                text: g.phrase.clone(),
+                became: if allowed == 0 { "left out".into() } else { format!("{allowed}") },
+                reason: format!("at most {MAX_TOTAL} objects per scene"),
+            });
+            if allowed == 0 {
+                dropped.push(g.id.clone());
+                continue;
+            }
+            count = allowed;
+        }
         let hint = SizeHint { words: g.sizes.clone(), explicit: g.explicit };
         let (category, proxy) = match g.category {
             Some(c) => (c.to_string(), None),
@@ -155,9 +171,23 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
     // ---- robots
     let mut robot_ids: BTreeMap<String, u32> = BTreeMap::new();
     for r in &d.robots {
-        let Some(count) = resolve_count(r.count, r.plural, &r.phrase, &mut approximated) else {
+        let Some(mut count) = resolve_count(r.count, r.plural, &r.phrase, &mut approximated) else {
             continue;
         };
+        let robots_so_far: u32 = plan.robots.iter().map(|x| x.count).sum();
+        let max = sw_plan::MAX_ROBOTS;
+        if robots_so_far + count > max {
+            let allowed = max.saturating_sub(robots_so_far);
+            approximated.push(Approximation {
+                text: r.phrase.clone(),
+                became: if allowed == 0 { "left out".into() } else { format!("{allowed}") },
+                reason: format!("at most {max} robots per scene"),
+            });
+            if allowed == 0 {
+                continue;
+            }
+            count = allowed;
+        }
         let def = sw_robots::find(r.word.wants).unwrap_or_else(|| sw_robots::default_of(r.word.kind));
         if def.name != r.word.wants {
             approximated.push(Approximation {
@@ -316,7 +346,7 @@ fn infer_room(d: &Draft) -> RoomKind {
         let Some(cat) = g.category.and_then(sw_catalog::find) else {
             continue;
         };
-        let n = g.count.unwrap_or(if g.plural { 4.0 } else { 1.0 }).max(1.0) as u32;
+        let n = g.count.unwrap_or(if g.plural { 4.0 } else { 1.0 }).clamp(1.0, 10_000.0) as u32;
         if cat.placement == sw_catalog::PlacementKind::OnSurface {
             small += n;
         } else if cat.has_tag("surface") && cat.has_tag("furniture") {

@@ -291,6 +291,8 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             "stacked atop",
         ],
     ) {
+        // "stacked on top of the pallet": the verb and "on" met first.
+        let n = if starts_with(toks, i + n, "top of").is_some() { n + 2 } else { n };
         return Some((Cue::On, n));
     }
     if let Some(n) = any_of(toks, i, &["under", "underneath", "beneath", "below"]) {

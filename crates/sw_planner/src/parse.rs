@@ -73,6 +73,18 @@ struct Phrase {
     head: Head,
     plural: bool,
     text: String,
+    /// The word as typed, when the head was matched despite a typo or by its last word.
+    fuzzy_from: Option<String>,
+}
+
+/// When a phrase may consist of unknown words with nothing before them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Bare {
+    No,
+    /// The target of a relation ("on the racks").
+    Target,
+    /// A plural in a list ("… and mugs on the table").
+    PluralInList,
 }
 
 /// Who a relation applies to.
@@ -100,6 +112,11 @@ pub(crate) struct Parser<'a> {
     on_host: Vec<(String, String)>,
     /// Groups and robots in the order they were mentioned (for "it" and "them").
     mentions: Vec<Subject>,
+    /// The phrases since the last relation or sentence end: "three mugs and a bowl on
+    /// the table" puts all of them on the table.
+    list: Vec<Subject>,
+    /// How many groups have been made from each id base (keeps ids unique in O(1)).
+    id_counts: std::collections::HashMap<String, u32>,
 }
 
 impl<'a> Parser<'a> {
@@ -117,6 +134,8 @@ impl<'a> Parser<'a> {
             pending_dims: None,
             on_host: Vec::new(),
             mentions: Vec::new(),
+            list: Vec::new(),
+            id_counts: std::collections::HashMap::new(),
         }
     }
 
@@ -200,16 +219,25 @@ impl<'a> Parser<'a> {
                 continue;
             }
             if matches!(self.word(i), "with" | "holding" | "carrying" | "supporting" | "containing") {
-                if let Some(Subject::Group(g)) = &self.subject
-                    && self.group_has_surface(g)
-                {
-                    self.with_host = Some(g.clone());
+                match &self.subject {
+                    Some(Subject::Group(g)) if self.group_has_surface(g) => self.with_host = Some(g.clone()),
+                    // "a UR5e on a table with three mugs": the mugs go on the table.
+                    Some(Subject::Robot(r)) => {
+                        if let Some(Mount::OnSurface { target }) = self.draft.robots.get(*r).map(|x| &x.mount) {
+                            self.with_host = Some(target.clone());
+                        }
+                    }
+                    _ => {}
                 }
                 self.used[i] = true;
                 i += 1;
                 continue;
             }
-            if let Some(p) = self.phrase_at(i, true, false)? {
+            let after_list_word = i > 0
+                && (self.toks[i - 1].kind == TokenKind::Comma
+                    || matches!(self.word(i - 1), "and" | "with" | "plus" | "&"));
+            let bare = if after_list_word { Bare::PluralInList } else { Bare::No };
+            if let Some(p) = self.phrase_at(i, true, bare)? {
                 let end = p.end;
                 self.mark(i, end);
                 self.take_phrase(p, i);
@@ -233,6 +261,7 @@ impl<'a> Parser<'a> {
 
     fn end_sentence(&mut self) {
         self.subject = None;
+        self.list.clear();
         self.with_host = None;
         self.pending.clear();
         if let Some((dims, text, _)) = self.pending_dims.take() {
@@ -324,6 +353,22 @@ impl<'a> Parser<'a> {
                 self.draft.room_height = Some((first, text));
                 return Ok(Some(k + 1));
             }
+            // "a 2 m room", "a 10 m square warehouse": a square floor.
+            let mut k = i + len;
+            while matches!(self.word(k), "square" | "sized" | "wide") {
+                k += 1;
+            }
+            let names_room =
+                self.lookup(k, |m| matches!(m, Meaning::Room(_) | Meaning::RoomAisle(_) | Meaning::RoomWord)).is_some();
+            if any_unit && names_room {
+                let text = self.span(i, k);
+                if !(first.is_finite() && first > 0.0) {
+                    return Err(PlannerError::InvalidSize(format!("sizes must be positive lengths, got '{text}'")));
+                }
+                self.mark(i, k);
+                self.set_room_dims(vec![first, first], text);
+                return Ok(Some(k));
+            }
             return Ok(None);
         }
         // Trailing unit applies to numbers written without one: "10 by 6 meter room".
@@ -412,7 +457,7 @@ impl<'a> Parser<'a> {
     // ---------------------------------------------------------------- phrases
 
     /// A count, modifiers and a head noun starting at `i`.
-    fn phrase_at(&self, i: usize, allow_unknown: bool, bare_unknown: bool) -> Result<Option<Phrase>, PlannerError> {
+    fn phrase_at(&self, i: usize, allow_unknown: bool, bare: Bare) -> Result<Option<Phrase>, PlannerError> {
         let mut j = i;
         let mut count = None;
         if let Some(n) = self.toks.get(j).and_then(Token::number) {
@@ -441,6 +486,7 @@ impl<'a> Parser<'a> {
         let mut color = None;
         let mut sizes = Vec::new();
         let mut explicit = ExplicitSize::default();
+        let mut fuzzy_from: Option<String> = None;
         loop {
             if let Some((v, axis, len, text)) = self.axis_length_at(j) {
                 if !(v.is_finite() && v > 0.0) {
@@ -448,6 +494,11 @@ impl<'a> Parser<'a> {
                 }
                 set_axis(&mut explicit, axis, v);
                 j += len;
+                // "2 m wide, 1 m deep" / "2 m wide and 1 m deep".
+                let joined = self.toks.get(j).is_some_and(|t| t.kind == TokenKind::Comma) || self.word(j) == "and";
+                if joined && self.axis_length_at(j + 1).is_some() {
+                    j += 1;
+                }
                 continue;
             }
             match self.lookup(j, |m| matches!(m, Meaning::Color(..) | Meaning::Size(_) | Meaning::Material(..))) {
@@ -493,7 +544,7 @@ impl<'a> Parser<'a> {
                 (Head::Known(m), k + len, plural)
             }
             None => {
-                if !allow_unknown || !(has_modifier || bare_unknown) {
+                if !allow_unknown || !(has_modifier || bare != Bare::No) {
                     return Ok(None);
                 }
                 descriptors.clear();
@@ -508,11 +559,29 @@ impl<'a> Parser<'a> {
                 }
                 let last = words.last().cloned().unwrap_or_default();
                 let plural = singular(&last) != last;
+                // A bare plural in a list ("… and mugs on the table") is an object only when
+                // it is short and a relation follows it.
+                let known_typo = words.len() == 1 && self.fuzzy(&singular(&last)).is_some();
+                if bare == Bare::PluralInList
+                    && !has_modifier
+                    && (!plural || words.len() > 2 || (cue_at(&self.toks, e).is_none() && !known_typo))
+                {
+                    return Ok(None);
+                }
                 let n = words.len();
                 words[n - 1] = singular(&last);
                 match self.fuzzy(&words[n - 1]) {
-                    Some(m) if n == 1 => (Head::Known(m), e, plural),
-                    _ => (Head::Unknown(words.join(" ")), e, plural),
+                    Some(m) if n == 1 => {
+                        fuzzy_from = Some(last.clone());
+                        (Head::Known(m), e, plural)
+                    }
+                    _ => match self.category_by_head(&words.join(" ")) {
+                        Some(cat) if n == 1 => {
+                            fuzzy_from = Some(last.clone());
+                            (Head::Known(Meaning::Category(cat)), e, plural)
+                        }
+                        _ => (Head::Unknown(words.join(" ")), e, plural),
+                    },
                 }
             }
         };
@@ -531,7 +600,7 @@ impl<'a> Parser<'a> {
             end += len;
         }
         let text = self.span(i, end);
-        Ok(Some(Phrase { end, count, color, sizes, explicit, descriptors, head, plural, text }))
+        Ok(Some(Phrase { end, count, color, sizes, explicit, descriptors, head, plural, text, fuzzy_from }))
     }
 
     /// A word that is not in the lexicon at all and does not start a relation cue.
@@ -568,6 +637,14 @@ impl<'a> Parser<'a> {
     /// Records a phrase as a room, an object group or a robot.
     fn take_phrase(&mut self, p: Phrase, start: usize) {
         let dims_here = self.pending_dims.take();
+        if let (Some(typed), Head::Known(Meaning::Category(cat))) = (&p.fuzzy_from, &p.head) {
+            self.draft.approximated.push(Approximation {
+                text: typed.clone(),
+                became: cat.to_string(),
+                reason: format!("read '{typed}' as {}", cat.replace('_', " ")),
+            });
+        }
+
         match p.head.clone() {
             Head::Known(Meaning::Room(kind)) | Head::Known(Meaning::RoomAisle(kind)) => {
                 if matches!(p.head, Head::Known(Meaning::RoomAisle(_))) {
@@ -611,6 +688,7 @@ impl<'a> Parser<'a> {
                 }
                 self.subject = Some(Subject::Robot(idx));
                 self.mentions.push(Subject::Robot(idx));
+                self.list.push(Subject::Robot(idx));
                 self.apply_pending();
             }
             Head::Known(Meaning::Category(cat)) => {
@@ -663,12 +741,9 @@ impl<'a> Parser<'a> {
             Some(c) => c.to_string(),
             None => format!("proxy_{}", label.replace([' ', '-', '\''], "_")),
         };
-        let mut id = base.clone();
-        let mut n = 2;
-        while self.draft.groups.iter().any(|g| g.id == id) {
-            id = format!("{base}_{n}");
-            n += 1;
-        }
+        let n = self.id_counts.entry(base.clone()).or_insert(0);
+        *n += 1;
+        let id = if *n == 1 { base.clone() } else { format!("{base}_{n}") };
         self.draft.groups.push(GroupDraft {
             id: id.clone(),
             category,
@@ -694,6 +769,7 @@ impl<'a> Parser<'a> {
         }
         self.subject = Some(Subject::Group(id.to_string()));
         self.mentions.push(Subject::Group(id.to_string()));
+        self.list.push(Subject::Group(id.to_string()));
         self.apply_pending();
     }
 
@@ -734,6 +810,29 @@ impl<'a> Parser<'a> {
         if cue.takes_target() {
             let wanted = if cue == Cue::Between { 2 } else { 1 };
             let mut j = target_start(&self.toks, end);
+            // "between them": the two things mentioned before.
+            if cue == Cue::Between && matches!(self.word(j), "them" | "these" | "those") {
+                let current = self.subject.clone();
+                let before: Vec<String> = self
+                    .mentions
+                    .iter()
+                    .rev()
+                    .filter(|m| Some(*m) != current.as_ref())
+                    .filter_map(|m| match m {
+                        Subject::Group(g) => Some(g.clone()),
+                        Subject::Robot(_) => None,
+                    })
+                    .take(2)
+                    .collect();
+                if let [a, b] = before.as_slice() {
+                    self.mark(i, j + 1);
+                    let targets = vec![b.clone(), a.clone()];
+                    if let Some(s) = self.subject.clone() {
+                        self.apply(&s, cue, targets);
+                    }
+                    return Some(j + 1);
+                }
+            }
             // "between the two conveyors": one group, both ends.
             let mut twin = false;
             if cue == Cue::Between && matches!(self.word(j), "two" | "pair") {
@@ -766,7 +865,31 @@ impl<'a> Parser<'a> {
         }
         self.mark(i, end);
         match self.subject.clone() {
-            Some(s) => self.apply(&s, cue, targets),
+            Some(s) => {
+                self.apply(&s, cue.clone(), targets.clone());
+                // "three mugs and a bowl on the table": small things listed together rest
+                // on the same thing.
+                if cue == Cue::On && targets.iter().all(|t| !t.starts_with('@')) {
+                    let others: Vec<String> = self
+                        .list
+                        .iter()
+                        .filter(|m| **m != s)
+                        .filter_map(|m| match m {
+                            Subject::Group(g) => Some(g.clone()),
+                            Subject::Robot(_) => None,
+                        })
+                        .collect();
+                    for g in others {
+                        let has_on =
+                            self.draft.relations.iter().any(|(x, k)| x == &g && matches!(k, RelationKind::On { .. }));
+                        if self.group_is_small(&g) && !has_on && !targets.contains(&g) {
+                            self.apply(&Subject::Group(g), cue.clone(), targets.clone());
+                        }
+                    }
+                }
+                self.list.clear();
+                self.pending.clear();
+            }
             None => self.pending.push((cue, targets)),
         }
         Some(end)
@@ -836,7 +959,7 @@ impl<'a> Parser<'a> {
                 }
             }
         }
-        let p = self.phrase_at(j, true, true).ok().flatten()?;
+        let p = self.phrase_at(j, true, Bare::Target).ok().flatten()?;
         let end = p.end;
         let id = match &p.head {
             Head::Known(Meaning::Category(cat)) => {
@@ -854,6 +977,19 @@ impl<'a> Parser<'a> {
             Head::Unknown(label) if self.group_by_head(label).is_some() => {
                 self.group_by_head(label).unwrap_or_default()
             }
+            Head::Unknown(label) if self.category_by_head(label).is_some() => {
+                let cat = self.category_by_head(label).unwrap_or("proxy");
+                self.draft.approximated.push(Approximation {
+                    text: label.clone(),
+                    became: cat.to_string(),
+                    reason: format!("read '{label}' as {}", cat.replace('_', " ")),
+                });
+                let mut p2 = p.clone();
+                if p2.count.is_none() && p2.plural {
+                    p2.count = Some(2.0);
+                }
+                self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit)
+            }
             Head::Unknown(label) => {
                 match self.draft.groups.iter().rev().find(|g| g.category.is_none() && &g.label == label) {
                     Some(g) => g.id.clone(),
@@ -870,6 +1006,24 @@ impl<'a> Parser<'a> {
         };
         self.mark(j, end);
         Some((id, end))
+    }
+
+    /// A catalog category a one-word noun names by the last word of its name: "bench" for
+    /// a workbench. "rack" depends on the room: pallet racks in warehouses, shelves elsewhere.
+    fn category_by_head(&self, label: &str) -> Option<&'static str> {
+        if label.contains(' ') || label.len() < 4 {
+            return None;
+        }
+        if label == "rack" {
+            let industrial = self.draft.room.as_ref().is_some_and(|(k, _)| {
+                matches!(k, RoomKind::Warehouse | RoomKind::LoadingDock | RoomKind::Factory | RoomKind::StorageRoom)
+            });
+            return Some(if industrial { "pallet_rack" } else { "shelf" });
+        }
+        sw_catalog::categories().iter().find_map(|c| {
+            let last = c.display.split_whitespace().last()?;
+            (last != label && last.ends_with(label) && label.len() >= 5).then_some(c.name)
+        })
     }
 
     /// An earlier group that a bare head noun refers to: "the racks" for pallet racks,
@@ -895,7 +1049,8 @@ impl<'a> Parser<'a> {
         let Some(s) = self.subject.clone() else {
             return;
         };
-        for (cue, targets) in std::mem::take(&mut self.pending) {
+        // A leading relation ("On the bench, a UR5e and two bins") covers the whole list.
+        for (cue, targets) in self.pending.clone() {
             self.apply(&s, cue, targets);
         }
     }

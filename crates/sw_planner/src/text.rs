@@ -79,6 +79,21 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
                     break;
                 }
             }
+            // Scientific notation: "1e9", "2.5E-3".
+            if chars.get(j).is_some_and(|(_, e)| *e == 'e' || *e == 'E') {
+                let mut k = j + 1;
+                if chars.get(k).is_some_and(|(_, c)| *c == '-' || *c == '+') {
+                    k += 1;
+                }
+                if chars.get(k).is_some_and(|(_, c)| c.is_ascii_digit()) {
+                    while chars.get(k).is_some_and(|(_, c)| c.is_ascii_digit()) {
+                        k += 1;
+                    }
+                    if !chars.get(k).is_some_and(|(_, c)| c.is_alphabetic()) {
+                        j = k;
+                    }
+                }
+            }
             let raw: String = chars[i..j].iter().map(|(_, ch)| *ch).filter(|ch| *ch != ',').collect();
             let value = raw.parse::<f64>().unwrap_or(f64::NAN);
             out.push(Token { kind: TokenKind::Number(value), norm: raw, start, end: end_of(j) });

@@ -51,7 +51,8 @@ pub fn verify_file(path: &Path, opts: &VerifyOptions) -> Verification {
         Ok(m) => m,
         Err(e) => {
             let msg = e.to_string();
-            v.failures.push(format!("MuJoCo rejected the scene: {msg}"));
+            v.failures
+                .push(format!("MuJoCo rejected the scene: {}", msg.split_whitespace().collect::<Vec<_>>().join(" ")));
             v.compile_error = Some(msg);
             return v;
         }

@@ -1,0 +1,1341 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! Integration tests of the offline planner: prompt in, [`ScenePlan`] out.
+//!
+//! Each test asserts on the resulting plan (room, groups, relations, robots and the
+//! honest account in `understanding`), not merely that planning succeeds.
+
+use proptest::prelude::*;
+use sw_plan::{Corner, Mount, ObjectPlan, RelationKind, RobotPlan, RoomKind, ScenePlan, SizeWord, Wall};
+use sw_planner::{MAX_PROMPT_BYTES, PlannerError, plan};
+
+// ------------------------------------------------------------------------ helpers
+
+/// The limits `ScenePlan::validate` enforces (not exported by `sw_plan`).
+const MAX_ROOM_SIDE: f64 = 500.0;
+const MAX_GROUP_COUNT: u32 = 5000;
+const MAX_ROBOT_COUNT: u32 = 16;
+
+/// Plans `prompt`, failing the test with the error if it is rejected, and checks the plan
+/// validates (every plan the planner returns must).
+fn ok(prompt: &str) -> ScenePlan {
+    let p = plan(prompt).unwrap_or_else(|e| panic!("{prompt:?} was rejected: {e}"));
+    if let Err(e) = p.validate() {
+        panic!("{prompt:?} gave a plan that does not validate: {e}\n{}", dump(&p));
+    }
+    p
+}
+
+fn err(prompt: &str) -> PlannerError {
+    match plan(prompt) {
+        Ok(p) => panic!("{prompt:?} should be rejected, got\n{}", dump(&p)),
+        Err(e) => e,
+    }
+}
+
+fn dump(p: &ScenePlan) -> String {
+    serde_json::to_string_pretty(p).unwrap()
+}
+
+/// The only group of `category` in the plan.
+fn group<'a>(p: &'a ScenePlan, category: &str) -> &'a ObjectPlan {
+    let found: Vec<&ObjectPlan> = p.objects.iter().filter(|o| o.category == category).collect();
+    match found.as_slice() {
+        [one] => one,
+        _ => panic!("{:?}: expected exactly one '{category}' group, got {}\n{}", p.prompt, found.len(), dump(p)),
+    }
+}
+
+/// The only proxy group labelled `label`.
+fn proxy<'a>(p: &'a ScenePlan, label: &str) -> &'a ObjectPlan {
+    let found: Vec<&ObjectPlan> =
+        p.objects.iter().filter(|o| o.proxy.as_ref().is_some_and(|x| x.label == label)).collect();
+    match found.as_slice() {
+        [one] => one,
+        _ => panic!("{:?}: expected exactly one proxy '{label}', got {}\n{}", p.prompt, found.len(), dump(p)),
+    }
+}
+
+fn robot<'a>(p: &'a ScenePlan, model: &str) -> &'a RobotPlan {
+    let found: Vec<&RobotPlan> = p.robots.iter().filter(|r| r.model == model).collect();
+    match found.as_slice() {
+        [one] => one,
+        _ => panic!("{:?}: expected exactly one '{model}' robot group, got {}\n{}", p.prompt, found.len(), dump(p)),
+    }
+}
+
+fn assert_rel(p: &ScenePlan, subject: &str, kind: RelationKind) {
+    let has = p.relations.iter().any(|r| r.subject == subject && r.kind == kind);
+    assert!(has, "{:?}: expected {subject} {kind:?}\n{}", p.prompt, dump(p));
+}
+
+fn assert_close(got: f64, want: f64, what: &str) {
+    assert!((got - want).abs() < 1e-6, "{what}: got {got}, want {want}");
+}
+
+fn on(target: &str) -> RelationKind {
+    RelationKind::On { target: target.into() }
+}
+
+fn not_understood(p: &ScenePlan) -> Vec<&str> {
+    p.understanding.not_understood.iter().map(|n| n.text.as_str()).collect()
+}
+
+/// True when some approximation note is about words containing `text`.
+fn approximated(p: &ScenePlan, text: &str) -> bool {
+    p.understanding.approximated.iter().any(|a| a.text.contains(text))
+}
+
+// ------------------------------------------------------------------------ rooms
+
+#[test]
+fn every_room_kind_is_recognised_with_its_default_size() {
+    let cases: &[(&str, RoomKind)] = &[
+        ("a warehouse", RoomKind::Warehouse),
+        ("a lab", RoomKind::Lab),
+        ("a robotics laboratory", RoomKind::Lab),
+        ("a kitchen", RoomKind::Kitchen),
+        ("an office", RoomKind::Office),
+        ("a workshop", RoomKind::Workshop),
+        ("a machine shop", RoomKind::Workshop),
+        ("a garage", RoomKind::Garage),
+        ("a clean room", RoomKind::CleanRoom),
+        ("a cleanroom", RoomKind::CleanRoom),
+        ("a retail store", RoomKind::RetailStore),
+        ("a pharmacy", RoomKind::Pharmacy),
+        ("a classroom", RoomKind::Classroom),
+        ("a data centre", RoomKind::DataCentre),
+        ("a data center", RoomKind::DataCentre),
+        ("a server room", RoomKind::DataCentre),
+        ("a loading dock", RoomKind::LoadingDock),
+        ("a greenhouse", RoomKind::Greenhouse),
+        ("a closet", RoomKind::Closet),
+        ("a storage room", RoomKind::StorageRoom),
+        ("a factory", RoomKind::Factory),
+        ("a hospital", RoomKind::Hospital),
+        ("a living room", RoomKind::LivingRoom),
+        ("a tabletop", RoomKind::Tabletop),
+        ("A WAREHOUSE", RoomKind::Warehouse),
+        ("a room with a table", RoomKind::Room),
+        ("a space with a chair", RoomKind::Room),
+    ];
+    for (prompt, kind) in cases {
+        let p = ok(prompt);
+        assert_eq!(p.room.kind, *kind, "{prompt:?}");
+        assert_eq!(p.room.size, kind.default_size(), "{prompt:?}: default size");
+        assert!(!p.room.size_fixed, "{prompt:?}: no size was given");
+        assert_eq!(p.rules_profile, kind.rules_profile(), "{prompt:?}");
+        assert!(p.understanding.not_understood.is_empty(), "{prompt:?}: {:?}", not_understood(&p));
+    }
+}
+
+#[test]
+fn default_room_sizes_are_sensible() {
+    for kind in RoomKind::ALL {
+        let s = kind.default_size();
+        assert!(s.width >= s.depth && s.depth >= 1.5 && s.height >= 2.4, "{kind:?}: {s:?}");
+    }
+    let area = |k: RoomKind| k.default_size().width * k.default_size().depth;
+    assert!(area(RoomKind::Factory) > area(RoomKind::Warehouse));
+    assert!(area(RoomKind::Warehouse) > area(RoomKind::Office));
+    assert!(area(RoomKind::Office) > area(RoomKind::Closet));
+    assert!(area(RoomKind::Kitchen) > area(RoomKind::Closet));
+}
+
+#[test]
+
+fn a_generic_room_alone_is_a_room() {
+    for prompt in ["a room", "an empty room", "a simple room"] {
+        let p = ok(prompt);
+        assert_eq!(p.room.kind, RoomKind::Room, "{prompt:?}");
+        assert_eq!(p.room.size, RoomKind::Room.default_size(), "{prompt:?}");
+    }
+    let p = ok("a small room");
+    assert!(p.room.size.width < RoomKind::Room.default_size().width);
+}
+
+#[test]
+
+fn a_sized_generic_room_alone_is_a_room() {
+    let p = ok("a 10 by 6 meter room");
+    assert_eq!(p.room.kind, RoomKind::Room);
+    assert_close(p.room.size.width, 10.0, "width");
+    assert_close(p.room.size.depth, 6.0, "depth");
+    assert!(p.room.size_fixed);
+}
+
+#[test]
+fn explicit_room_sizes_are_read_and_fix_the_size() {
+    // (prompt, kind, width, depth, height or None for the kind's default)
+    let cases: &[(&str, RoomKind, f64, f64, Option<f64>)] = &[
+        ("a 10 by 6 meter room with a table", RoomKind::Room, 10.0, 6.0, None),
+        ("a 10 by 6 room with a table", RoomKind::Room, 10.0, 6.0, None),
+        ("a 12x12 m warehouse", RoomKind::Warehouse, 12.0, 12.0, None),
+        ("a 2m x 2m room with a chair", RoomKind::Room, 2.0, 2.0, None),
+        ("a 30 m by 20 m factory", RoomKind::Factory, 30.0, 20.0, None),
+        ("a 10 x 8 x 4 m workshop", RoomKind::Workshop, 10.0, 8.0, Some(4.0)),
+        ("a 6 m by 4 m by 3 m kitchen", RoomKind::Kitchen, 6.0, 4.0, Some(3.0)),
+        ("a 10.5 by 6.25 m lab", RoomKind::Lab, 10.5, 6.25, None),
+        ("a warehouse measuring 30 by 20 m", RoomKind::Warehouse, 30.0, 20.0, None),
+        ("a warehouse that is 30m x 20m", RoomKind::Warehouse, 30.0, 20.0, None),
+        ("a warehouse, 30 by 20 m, with two pallet racks", RoomKind::Warehouse, 30.0, 20.0, None),
+        ("a lab 8 by 6 m with a 3.5 m ceiling", RoomKind::Lab, 8.0, 6.0, Some(3.5)),
+        ("a 10 by 6 meter room with a 5 m ceiling and a table", RoomKind::Room, 10.0, 6.0, Some(5.0)),
+        // Other units.
+        ("a 500 by 400 cm lab", RoomKind::Lab, 5.0, 4.0, None),
+        ("a 20 by 15 ft garage", RoomKind::Garage, 6.096, 4.572, None),
+        ("a 40 ft by 30 ft warehouse", RoomKind::Warehouse, 12.192, 9.144, None),
+    ];
+    for (prompt, kind, w, d, h) in cases {
+        let p = ok(prompt);
+        assert_eq!(p.room.kind, *kind, "{prompt:?}");
+        assert_close(p.room.size.width, *w, &format!("{prompt:?} width"));
+        assert_close(p.room.size.depth, *d, &format!("{prompt:?} depth"));
+        let h = h.unwrap_or(kind.default_size().height);
+        assert_close(p.room.size.height, h, &format!("{prompt:?} height"));
+        assert!(p.room.size_fixed, "{prompt:?}: the size was given");
+        assert!(p.understanding.not_understood.is_empty(), "{prompt:?}: {:?}", not_understood(&p));
+    }
+}
+
+#[test]
+fn a_floor_area_becomes_a_fixed_room_of_that_area() {
+    for prompt in ["an office of 100 square meters", "a 100 square meters office"] {
+        let p = ok(prompt);
+        assert_eq!(p.room.kind, RoomKind::Office, "{prompt:?}");
+        assert!(p.room.size_fixed, "{prompt:?}");
+        assert_close(p.room.size.width * p.room.size.depth, 100.0, &format!("{prompt:?} area"));
+        assert!(p.room.size.width >= p.room.size.depth, "{prompt:?}");
+    }
+}
+
+#[test]
+fn a_ceiling_height_sets_only_the_height() {
+    let p = ok("a warehouse with a 4 m ceiling");
+    let default = RoomKind::Warehouse.default_size();
+    assert_close(p.room.size.height, 4.0, "height");
+    assert_close(p.room.size.width, default.width, "width");
+    assert_close(p.room.size.depth, default.depth, "depth");
+    assert!(p.objects.is_empty(), "a ceiling is not an object:\n{}", dump(&p));
+}
+
+#[test]
+fn out_of_range_room_sizes_are_clamped_with_a_note() {
+    let p = ok("a 1000 by 1000 m warehouse");
+    assert!(p.room.size.width <= MAX_ROOM_SIDE && p.room.size.depth <= MAX_ROOM_SIDE);
+    assert!(approximated(&p, "1000 by 1000 m"), "{}", dump(&p));
+
+    let p = ok("a 2 by 2 m closet with a 50 m ceiling");
+    assert!(p.room.size.height < 50.0);
+    assert!(approximated(&p, "50 m ceiling"), "{}", dump(&p));
+}
+
+#[test]
+fn size_words_scale_the_default_room() {
+    let def = RoomKind::Warehouse.default_size();
+    let small = ok("a small warehouse").room;
+    let huge = ok("a huge warehouse").room;
+    assert!(!small.size_fixed && !huge.size_fixed);
+    assert!(small.size.width < def.width && small.size.depth < def.depth, "{small:?}");
+    assert!(huge.size.width > def.width && huge.size.depth > def.depth, "{huge:?}");
+    assert!(huge.size.height >= def.height);
+
+    let tiny = ok("a tiny office").room;
+    assert!(tiny.size.width < RoomKind::Office.default_size().width);
+    let large = ok("a large kitchen").room;
+    assert!(large.size.width > RoomKind::Kitchen.default_size().width);
+    let small_room = ok("a small room with a table").room;
+    assert_eq!(small_room.kind, RoomKind::Room);
+    assert!(small_room.size.width < RoomKind::Room.default_size().width);
+    let big_room = ok("a big room with a table").room;
+    assert!(big_room.size.width > RoomKind::Room.default_size().width);
+}
+
+#[test]
+fn an_explicit_size_wins_over_size_words() {
+    let p = ok("a huge 12x12 m warehouse");
+    assert!(p.room.size_fixed);
+    assert_close(p.room.size.width, 12.0, "width");
+    assert_close(p.room.size.depth, 12.0, "depth");
+}
+
+#[test]
+fn a_warehouse_aisle_is_a_narrow_warehouse_with_racks_facing() {
+    let p = ok("a warehouse aisle with two pallet racks");
+    assert_eq!(p.room.kind, RoomKind::Warehouse);
+    assert!(p.room.size.width > p.room.size.depth * 1.5, "an aisle is long and narrow: {:?}", p.room.size);
+    assert_eq!(group(&p, "pallet_rack").count, 2);
+    assert_rel(&p, "pallet_rack", RelationKind::FacingEachOther);
+}
+
+#[test]
+fn with_no_room_named_the_kind_is_inferred_and_noted() {
+    let p = ok("a UR5e on a table with three mugs");
+    assert_eq!(p.room.kind, RoomKind::Tabletop);
+    assert!(approximated(&p, "no room named"), "{}", dump(&p));
+
+    let p = ok("Against the north wall, three shelves.");
+    assert_ne!(p.room.kind, RoomKind::Tabletop, "shelves are not a tabletop scene");
+    assert!(approximated(&p, "no room named"));
+}
+
+#[test]
+fn a_second_room_is_ignored_with_a_note() {
+    let p = ok("a kitchen and an office with a table");
+    assert_eq!(p.room.kind, RoomKind::Kitchen);
+    assert!(
+        p.understanding.approximated.iter().any(|a| a.text.contains("office") && a.became == "ignored"),
+        "{}",
+        dump(&p)
+    );
+}
+
+// ------------------------------------------------------------------------ objects
+
+#[test]
+fn counts_in_digits_and_words() {
+    let cases: &[(&str, &str, u32)] = &[
+        ("a warehouse with six cardboard boxes", "cardboard_box", 6),
+        ("a warehouse with 20 crates", "crate", 20),
+        ("a warehouse with a pallet", "pallet", 1),
+        ("a warehouse with an empty pallet", "pallet", 1),
+        ("a warehouse with twenty-five boxes", "cardboard_box", 25),
+        ("a warehouse with a dozen crates", "crate", 12),
+        ("an office with a pair of chairs", "chair", 2),
+        ("an office with a couple of chairs", "chair", 2),
+        ("a warehouse with two hundred boxes", "cardboard_box", 200),
+        ("a warehouse with 1,000 boxes", "cardboard_box", 1000),
+        ("a warehouse with 3 pallet racks", "pallet_rack", 3),
+        ("a factory with one conveyor", "conveyor", 1),
+        ("a lab with ten bins", "bin", 10),
+    ];
+    for (prompt, category, count) in cases {
+        let p = ok(prompt);
+        let g = group(&p, category);
+        assert_eq!(g.count, *count, "{prompt:?}");
+        assert!(prompt.contains(&g.phrase), "{prompt:?}: phrase {:?} is not from the prompt", g.phrase);
+        assert!(p.understanding.not_understood.is_empty(), "{prompt:?}: {:?}", not_understood(&p));
+    }
+}
+
+#[test]
+fn counted_proxies_keep_their_count() {
+    let p = ok("a greenhouse with twelve potted plants");
+    assert_eq!(p.room.kind, RoomKind::Greenhouse);
+    let g = proxy(&p, "potted plant");
+    assert_eq!(g.count, 12);
+    assert_eq!(g.category, "proxy");
+    assert_eq!(g.proxy.as_ref().unwrap().prior, "plant");
+}
+
+#[test]
+fn plurals_without_a_count_get_a_default_count_and_a_note() {
+    let p = ok("a warehouse with boxes");
+    let g = group(&p, "cardboard_box");
+    assert!(g.count >= 2, "a plural is more than one: {}", g.count);
+    assert!(approximated(&p, "boxes"), "{}", dump(&p));
+
+    let p = ok("a warehouse with pallets and crates");
+    assert!(group(&p, "pallet").count >= 2 && group(&p, "crate").count >= 2);
+    assert!(approximated(&p, "pallets") && approximated(&p, "crates"));
+
+    // A singular without a count is one, with no note.
+    let p = ok("a warehouse with a crate");
+    assert_eq!(group(&p, "crate").count, 1);
+    assert!(p.understanding.approximated.is_empty(), "{}", dump(&p));
+}
+
+#[test]
+fn odd_counts_are_resolved_with_a_note() {
+    let p = ok("a warehouse with 10000 boxes");
+    let g = group(&p, "cardboard_box");
+    assert!(g.count >= 1 && g.count <= MAX_GROUP_COUNT);
+    assert!(approximated(&p, "10000 boxes"));
+
+    let p = ok("a warehouse with zero boxes and a pallet");
+    assert!(p.objects.iter().all(|o| o.category != "cardboard_box"), "{}", dump(&p));
+    assert_eq!(group(&p, "pallet").count, 1);
+    assert!(approximated(&p, "zero boxes"));
+
+    let p = ok("a kitchen with a table, but no chairs");
+    assert!(p.objects.iter().all(|o| o.category != "chair"), "{}", dump(&p));
+
+    let p = ok("a warehouse with 2.5 pallets");
+    assert!(matches!(group(&p, "pallet").count, 2 | 3));
+    assert!(approximated(&p, "2.5 pallets"));
+}
+
+#[test]
+fn colours_are_attached_to_their_group() {
+    let p = ok("a lab with a red cabinet");
+    let c = group(&p, "cabinet").color.as_ref().expect("a colour");
+    assert_eq!(c.name, "red");
+    assert!(c.rgba[0] > c.rgba[1] && c.rgba[0] > c.rgba[2], "red is red: {:?}", c.rgba);
+    assert!(c.rgba.iter().all(|v| (0.0..=1.0).contains(v)));
+
+    let p = ok("a warehouse with 3 blue crates and 2 red bins");
+    assert_eq!(group(&p, "crate").color.as_ref().unwrap().name, "blue");
+    assert_eq!(group(&p, "crate").count, 3);
+    assert_eq!(group(&p, "bin").color.as_ref().unwrap().name, "red");
+    assert_eq!(group(&p, "bin").count, 2);
+
+    let p = ok("a warehouse with a grey shelf and a pallet");
+    assert_eq!(group(&p, "shelf").color.as_ref().unwrap().name, "grey");
+    assert!(group(&p, "pallet").color.is_none(), "the colour belongs to the shelf only");
+}
+
+#[test]
+fn materials_become_colours() {
+    let p = ok("a kitchen with a wooden table");
+    assert_eq!(group(&p, "table").color.as_ref().unwrap().name, "wooden");
+    let p = ok("a lab with a big steel cabinet");
+    let g = group(&p, "cabinet");
+    assert_eq!(g.color.as_ref().unwrap().name, "steel");
+    assert_eq!(g.size.words, vec![SizeWord::Large]);
+}
+
+#[test]
+fn size_words_are_kept_in_order() {
+    let p = ok("a warehouse with a tall shelf, a large table and a small crate");
+    assert_eq!(group(&p, "shelf").size.words, vec![SizeWord::Tall]);
+    assert_eq!(group(&p, "table").size.words, vec![SizeWord::Large]);
+    assert_eq!(group(&p, "crate").size.words, vec![SizeWord::Small]);
+
+    let p = ok("a lab with a tall narrow cabinet");
+    assert_eq!(group(&p, "cabinet").size.words, vec![SizeWord::Tall, SizeWord::Narrow]);
+
+    let p = ok("a warehouse with three large red crates");
+    let g = group(&p, "crate");
+    assert_eq!((g.count, g.size.words.as_slice()), (3, [SizeWord::Large].as_slice()));
+    assert_eq!(g.color.as_ref().unwrap().name, "red");
+}
+
+#[test]
+fn explicit_object_sizes_in_metres() {
+    // (prompt, category, [width, depth, height]) in metres.
+    let cases: &[(&str, &str, [Option<f64>; 3])] = &[
+        ("a lab with a 2 m tall shelf", "shelf", [None, None, Some(2.0)]),
+        ("a lab with a shelf 2 m tall", "shelf", [None, None, Some(2.0)]),
+        ("a lab with a 180 cm tall shelf", "shelf", [None, None, Some(1.8)]),
+        ("a lab with a 6 ft tall shelf", "shelf", [None, None, Some(6.0 * 0.3048)]),
+        ("a lab with a 120 cm wide table", "table", [Some(1.2), None, None]),
+        ("a lab with a table 2 m long", "table", [Some(2.0), None, None]),
+        ("a 10 by 6 m lab with a 2 by 1 m table", "table", [Some(2.0), Some(1.0), None]),
+    ];
+    for (prompt, category, want) in cases {
+        let p = ok(prompt);
+        let e = group(&p, category).size.explicit;
+        for (name, got, want) in
+            [("width", e.width, want[0]), ("depth", e.depth, want[1]), ("height", e.height, want[2])]
+        {
+            match (got, want) {
+                (Some(g), Some(w)) => assert_close(g, w, &format!("{prompt:?} {name}")),
+                (None, None) => {}
+                _ => panic!("{prompt:?} {name}: got {got:?}, want {want:?}"),
+            }
+        }
+    }
+    // The table's size is not the room's.
+    let p = ok("a 10 by 6 m lab with a 2 by 1 m table");
+    assert_close(p.room.size.width, 10.0, "room width");
+    assert_close(p.room.size.depth, 6.0, "room depth");
+}
+
+#[test]
+
+fn explicit_sizes_separated_by_a_comma() {
+    let p = ok("a lab with a 2 m wide, 1 m deep table");
+    let e = group(&p, "table").size.explicit;
+    assert_eq!((e.width, e.depth), (Some(2.0), Some(1.0)));
+    assert!(p.understanding.not_understood.is_empty(), "{:?}", not_understood(&p));
+}
+
+#[test]
+fn groups_get_unique_ids_and_repeated_nouns_make_new_groups() {
+    let p = ok("a warehouse with two red crates against the north wall and three blue crates near the door");
+    let crates: Vec<&ObjectPlan> = p.objects.iter().filter(|o| o.category == "crate").collect();
+    assert_eq!(crates.len(), 2, "{}", dump(&p));
+    assert_ne!(crates[0].id, crates[1].id);
+    assert_eq!((crates[0].count, crates[1].count), (2, 3));
+    assert_rel(&p, &crates[0].id, RelationKind::AgainstWall { wall: Some(Wall::North) });
+    assert_rel(&p, &crates[1].id, RelationKind::NearDoor);
+    assert_eq!(p.object_count(), 5);
+}
+
+// ------------------------------------------------------------------------ relations
+
+#[test]
+fn on_and_on_top_of() {
+    for prompt in ["a lab with a table and a box on the table", "a lab with a table and a box on top of the table"] {
+        let p = ok(prompt);
+        assert_eq!(p.objects.len(), 2, "{prompt:?}\n{}", dump(&p));
+        assert_rel(&p, "cardboard_box", on("table"));
+    }
+    let p = ok("a warehouse with a pallet and six boxes stacked on the pallet");
+    assert_rel(&p, "cardboard_box", on("pallet"));
+    let p = ok("a warehouse with six boxes on the shelves");
+    assert_eq!(group(&p, "cardboard_box").count, 6);
+    assert_rel(&p, "cardboard_box", on("shelf"));
+}
+
+#[test]
+
+fn verbs_before_on_top_of() {
+    let p = ok("a warehouse with a pallet and six boxes stacked on top of the pallet");
+    assert_eq!(p.objects.len(), 2, "{}", dump(&p));
+    assert_rel(&p, "cardboard_box", on("pallet"));
+
+    let p = ok("a lab with a table and a box sitting on top of the table");
+    assert_eq!(p.objects.len(), 2, "{}", dump(&p));
+    assert_rel(&p, "cardboard_box", on("table"));
+
+    let p = ok("a lab with a table and a box resting on top of it");
+    assert_rel(&p, "cardboard_box", on("table"));
+
+    let p = ok("a lab with a UR5e mounted on top of the table");
+    assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: "table".into() });
+    assert!(p.objects.iter().all(|o| o.proxy.is_none()), "{}", dump(&p));
+}
+
+#[test]
+fn against_named_walls() {
+    let cases: &[(&str, Option<Wall>)] = &[
+        ("a warehouse with three shelves against the north wall", Some(Wall::North)),
+        ("a warehouse with three shelves against the south wall", Some(Wall::South)),
+        ("a warehouse with three shelves along the east wall", Some(Wall::East)),
+        ("a warehouse with three shelves along the west wall", Some(Wall::West)),
+        ("a warehouse with three shelves against the back wall", Some(Wall::North)),
+        ("a warehouse with three shelves against the left wall", Some(Wall::West)),
+        ("a warehouse with three shelves against the right wall", Some(Wall::East)),
+        ("a warehouse with three shelves against the wall", None),
+        ("a warehouse with three shelves lining the walls", None),
+    ];
+    for (prompt, wall) in cases {
+        let p = ok(prompt);
+        assert_eq!(group(&p, "shelf").count, 3, "{prompt:?}");
+        assert_rel(&p, "shelf", RelationKind::AgainstWall { wall: *wall });
+        assert!(p.understanding.not_understood.is_empty(), "{prompt:?}: {:?}", not_understood(&p));
+    }
+}
+
+#[test]
+fn next_to_and_beside() {
+    for prompt in [
+        "an office with a cabinet next to the table",
+        "an office with a cabinet beside a table",
+        "a lab with a table and a cabinet next to it",
+    ] {
+        let p = ok(prompt);
+        assert_eq!(p.objects.len(), 2, "{prompt:?}");
+        assert_rel(&p, "cabinet", RelationKind::NextTo { target: "table".into() });
+    }
+}
+
+#[test]
+fn between_two_groups() {
+    let between = |a: &str, b: &str| RelationKind::Between { first: a.into(), second: b.into() };
+    let p = ok("a warehouse with a shelf, a cabinet and a crate between the shelf and the cabinet");
+    assert_eq!(p.objects.len(), 3, "{}", dump(&p));
+    assert_rel(&p, "crate", between("shelf", "cabinet"));
+
+    let p = ok("a warehouse with a crate between the shelf and the cabinet");
+    assert_eq!(p.objects.len(), 3, "targets named only in the relation are created:\n{}", dump(&p));
+    assert_rel(&p, "crate", between("shelf", "cabinet"));
+}
+
+#[test]
+fn between_the_two_of_one_group() {
+    let p = ok("a factory with two conveyors and a bin between the two conveyors");
+    assert_eq!(group(&p, "conveyor").count, 2);
+    assert_rel(&p, "bin", RelationKind::Between { first: "conveyor".into(), second: "conveyor".into() });
+
+    let p = ok("a factory with a bin between the two conveyors");
+    assert_eq!(group(&p, "conveyor").count, 2, "'the two conveyors' are two:\n{}", dump(&p));
+    assert_rel(&p, "bin", RelationKind::Between { first: "conveyor".into(), second: "conveyor".into() });
+}
+
+#[test]
+
+fn between_them_refers_to_the_two_previous_groups() {
+    let p = ok("a warehouse with a shelf and a cabinet. A crate between them.");
+    assert_rel(&p, "crate", RelationKind::Between { first: "shelf".into(), second: "cabinet".into() });
+}
+
+#[test]
+fn rows_lines_and_facing() {
+    for prompt in ["a warehouse with five pallets in a row", "a warehouse with five pallets in a line"] {
+        let p = ok(prompt);
+        assert_eq!(group(&p, "pallet").count, 5);
+        assert_rel(&p, "pallet", RelationKind::InRow);
+    }
+    let p = ok("a warehouse with two shelves facing each other");
+    assert_rel(&p, "shelf", RelationKind::FacingEachOther);
+}
+
+#[test]
+fn around_a_table() {
+    for prompt in ["a kitchen with four chairs around a table", "a kitchen with a table and four chairs around it"] {
+        let p = ok(prompt);
+        assert_eq!(group(&p, "chair").count, 4, "{prompt:?}");
+        assert_eq!(group(&p, "table").count, 1, "{prompt:?}");
+        assert_rel(&p, "chair", RelationKind::Around { target: "table".into() });
+    }
+}
+
+#[test]
+fn ends_doors_corners_and_the_middle() {
+    let cases: &[(&str, &str, RelationKind)] = &[
+        ("a warehouse with pallets at one end", "pallet", RelationKind::AtEnd { wall: None }),
+        ("a warehouse with pallets at the north end", "pallet", RelationKind::AtEnd { wall: Some(Wall::North) }),
+        ("a warehouse with a cabinet at the far end", "cabinet", RelationKind::AtEnd { wall: Some(Wall::North) }),
+        ("a warehouse with a bin near the door", "bin", RelationKind::NearDoor),
+        ("a warehouse with a pallet next to the door", "pallet", RelationKind::NearDoor),
+        ("a warehouse with a table near the entrance", "table", RelationKind::NearDoor),
+        ("a warehouse with a cabinet in the corner", "cabinet", RelationKind::InCorner { corner: None }),
+        (
+            "a warehouse with a cabinet in the northeast corner",
+            "cabinet",
+            RelationKind::InCorner { corner: Some(Corner::NorthEast) },
+        ),
+        (
+            "a lab with a cabinet in the south-west corner",
+            "cabinet",
+            RelationKind::InCorner { corner: Some(Corner::SouthWest) },
+        ),
+        (
+            "a lab with a cabinet in the far left corner",
+            "cabinet",
+            RelationKind::InCorner { corner: Some(Corner::NorthWest) },
+        ),
+        (
+            "a lab with a cabinet in the back right corner",
+            "cabinet",
+            RelationKind::InCorner { corner: Some(Corner::NorthEast) },
+        ),
+        ("a lab with a table in the middle", "table", RelationKind::InCenter),
+        ("a lab with a table in the center of the room", "table", RelationKind::InCenter),
+        ("a lab with a table in the centre", "table", RelationKind::InCenter),
+    ];
+    for (prompt, subject, kind) in cases {
+        let p = ok(prompt);
+        assert_eq!(p.objects.len(), 1, "{prompt:?}: the room words are not objects\n{}", dump(&p));
+        assert_rel(&p, subject, kind.clone());
+        assert!(p.understanding.not_understood.is_empty(), "{prompt:?}: {:?}", not_understood(&p));
+    }
+}
+
+#[test]
+fn under_and_in_front_of() {
+    let p = ok("a workshop with a bin under the workbench");
+    assert_rel(&p, "bin", RelationKind::Under { target: "workbench".into() });
+    let p = ok("a workshop with a chair in front of the workbench");
+    assert_rel(&p, "chair", RelationKind::InFrontOf { target: "workbench".into() });
+}
+
+#[test]
+fn pronouns_and_with_put_things_on_the_host() {
+    let p = ok("a lab with a table with three mugs on it");
+    let mugs = proxy(&p, "mug");
+    assert_eq!(mugs.count, 3);
+    assert_rel(&p, &mugs.id, on("table"));
+
+    let p = ok("a lab with a table. Three mugs on it.");
+    assert_rel(&p, &proxy(&p, "mug").id, on("table"));
+
+    let p = ok("a warehouse with a shelf with boxes");
+    assert_rel(&p, "cardboard_box", on("shelf"));
+    let p = ok("a warehouse with a shelf with six boxes");
+    assert_eq!(group(&p, "cardboard_box").count, 6);
+    assert_rel(&p, "cardboard_box", on("shelf"));
+
+    let p = ok("a warehouse with two pallet racks and boxes on them");
+    assert_rel(&p, "cardboard_box", on("pallet_rack"));
+
+    let p = ok("a kitchen with a table with a red mug on it");
+    let mug = proxy(&p, "mug");
+    assert_eq!(mug.color.as_ref().unwrap().name, "red");
+    assert_rel(&p, &mug.id, on("table"));
+
+    // Placement of the host and the items on it in one sentence.
+    let p = ok("a warehouse with a shelf against the west wall with boxes on it");
+    assert_rel(&p, "shelf", RelationKind::AgainstWall { wall: Some(Wall::West) });
+    assert_rel(&p, "cardboard_box", on("shelf"));
+}
+
+#[test]
+
+fn with_after_a_robot_mount_puts_items_on_the_mount_surface() {
+    let p = ok("a UR5e on a table with three mugs");
+    assert_rel(&p, &proxy(&p, "mug").id, on("table"));
+}
+
+#[test]
+
+fn a_relation_after_a_list_applies_to_every_item() {
+    let p = ok("a tabletop scene with a table and three mugs and a bowl on the table");
+    assert_rel(&p, &proxy(&p, "bowl").id, on("table"));
+    assert_rel(&p, &proxy(&p, "mug").id, on("table"));
+}
+
+#[test]
+fn relations_before_their_subject() {
+    for prompt in ["A warehouse. Against the north wall, three shelves.", "Against the north wall, three shelves."] {
+        let p = ok(prompt);
+        assert_eq!(group(&p, "shelf").count, 3);
+        assert_rel(&p, "shelf", RelationKind::AgainstWall { wall: Some(Wall::North) });
+    }
+    let p = ok("A warehouse. Along the east wall are four cabinets.");
+    assert_eq!(group(&p, "cabinet").count, 4);
+    assert_rel(&p, "cabinet", RelationKind::AgainstWall { wall: Some(Wall::East) });
+
+    let p = ok("A lab. In the northwest corner, a cabinet.");
+    assert_rel(&p, "cabinet", RelationKind::InCorner { corner: Some(Corner::NorthWest) });
+
+    let p = ok("A lab. On the table, a UR5e.");
+    assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: "table".into() });
+}
+
+#[test]
+
+fn a_leading_relation_applies_to_every_item_of_the_list() {
+    let p = ok("A lab with a workbench. On the workbench, a UR5e and two bins.");
+    assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: "workbench".into() });
+    assert_rel(&p, "bin", on("workbench"));
+}
+
+#[test]
+fn a_relation_does_not_leak_into_the_next_sentence() {
+    let p = ok("A warehouse with shelves against the north wall. Two pallets.");
+    assert_rel(&p, "shelf", RelationKind::AgainstWall { wall: Some(Wall::North) });
+    assert_eq!(p.relations_of("pallet").count(), 0, "{}", dump(&p));
+}
+
+#[test]
+fn every_relation_refers_to_known_groups_and_not_to_itself() {
+    for prompt in CORPUS {
+        let p = ok(prompt);
+        for r in &p.relations {
+            assert!(p.object(&r.subject).is_some(), "{prompt:?}: subject {}", r.subject);
+            for t in r.kind.targets() {
+                assert!(p.object(t).is_some(), "{prompt:?}: target {t}");
+                if !matches!(r.kind, RelationKind::Between { .. }) {
+                    assert_ne!(t, r.subject, "{prompt:?}: {:?}", r.kind);
+                }
+            }
+        }
+    }
+}
+
+// ------------------------------------------------------------------------ robots
+
+#[test]
+fn robot_names_map_to_registered_models() {
+    // (prompt, model used, whether the substitution or reading is noted)
+    let cases: &[(&str, &str, bool)] = &[
+        ("a lab with a UR5e", "ur5e", false),
+        ("a lab with a UR5", "ur5e", true),
+        ("a lab with a UR10", "ur5e", true),
+        ("a lab with a Franka", "ur5e", true),
+        ("a lab with a Panda", "ur5e", true),
+        ("a lab with a Franka Panda", "ur5e", true),
+        ("a lab with a Kinova", "ur5e", true),
+        ("a lab with a robot arm", "ur5e", true),
+        ("a warehouse with a TurtleBot", "turtlebot3", false),
+        ("a warehouse with a turtlebot3", "turtlebot3", false),
+        ("a warehouse with a mobile robot", "turtlebot3", true),
+    ];
+    for (prompt, model, noted) in cases {
+        let p = ok(prompt);
+        let r = robot(&p, model);
+        assert_eq!(r.count, 1, "{prompt:?}");
+        assert!(sw_robots::find(&r.model).is_some(), "{prompt:?}: {} is registered", r.model);
+        assert!(prompt.ends_with(&r.phrase), "{prompt:?}: phrase {:?}", r.phrase);
+        assert_eq!(approximated(&p, &r.phrase), *noted, "{prompt:?}\n{}", dump(&p));
+        assert!(p.objects.is_empty(), "{prompt:?}: a robot is not an object\n{}", dump(&p));
+    }
+}
+
+#[test]
+fn substituted_models_say_what_was_asked_for() {
+    let p = ok("a lab with a UR10 and a Kinova and a Franka");
+    let reason = |text: &str| {
+        p.understanding.approximated.iter().find(|a| a.text == text).map(|a| a.reason.clone()).unwrap_or_default()
+    };
+    assert!(reason("a UR10").contains("ur10"), "{}", dump(&p));
+    assert!(reason("a Kinova").contains("kinova"), "{}", dump(&p));
+    assert!(reason("a Franka").contains("panda"), "{}", dump(&p));
+    assert!(p.understanding.approximated.iter().all(|a| a.became == "ur5e"));
+    // Three robot groups of the same model get distinct ids.
+    assert_eq!(p.robots.len(), 3);
+    let mut ids: Vec<&str> = p.robots.iter().map(|r| r.id.as_str()).collect();
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids.len(), 3);
+}
+
+#[test]
+fn robot_counts() {
+    let p = ok("a warehouse with two TurtleBots");
+    assert_eq!(robot(&p, "turtlebot3").count, 2);
+    let p = ok("a warehouse with three mobile robots");
+    assert_eq!(robot(&p, "turtlebot3").count, 3);
+    let p = ok("a lab with two UR5e arms on the table");
+    let r = robot(&p, "ur5e");
+    assert_eq!(r.count, 2);
+    assert_eq!(r.mount, Mount::OnSurface { target: "table".into() });
+    assert!(p.understanding.not_understood.is_empty(), "'arms' belongs to the robot: {:?}", not_understood(&p));
+}
+
+#[test]
+
+fn too_many_robots_are_clamped_with_a_note() {
+    let p = ok("a lab with 20 UR5e arms");
+    let r = robot(&p, "ur5e");
+    assert!(r.count >= 1 && r.count <= MAX_ROBOT_COUNT);
+    assert!(approximated(&p, "20 UR5e arms"), "{}", dump(&p));
+}
+
+#[test]
+fn arms_mount_on_the_named_surface() {
+    let cases: &[(&str, &str)] = &[
+        ("a lab with a workbench and a UR5e on the bench", "workbench"),
+        ("a lab with a table and a UR5e on the table", "table"),
+        ("a lab with a UR5e on the workbench", "workbench"),
+        ("a workshop with a workbench with a UR5e on it", "workbench"),
+        ("a workshop with a workbench with a UR5e", "workbench"),
+        ("a lab with a table against the wall and a UR5e on it", "table"),
+        ("a lab with a Franka on the table", "table"),
+        ("a lab with two Pandas on a workbench", "workbench"),
+    ];
+    for (prompt, target) in cases {
+        let p = ok(prompt);
+        let g = group(&p, target);
+        assert_eq!(g.count, 1, "{prompt:?}");
+        assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: g.id.clone() }, "{prompt:?}");
+        assert!(p.relations.iter().all(|r| r.subject != g.id || !matches!(r.kind, RelationKind::On { .. })));
+    }
+}
+
+#[test]
+
+fn on_the_bench_means_a_workbench() {
+    let p = ok("a lab with a UR5e on the bench");
+    let bench = group(&p, "workbench");
+    assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: bench.id.clone() });
+}
+
+#[test]
+fn arms_on_pedestals_carts_and_the_floor() {
+    let cases: &[(&str, Mount)] = &[
+        ("a lab with a UR5e on a pedestal", Mount::Pedestal),
+        ("a lab with a UR5e mounted on a steel pedestal", Mount::Pedestal),
+        ("a lab with a Kinova on a pedestal", Mount::Pedestal),
+        ("a lab with a UR5e on a mobile cart", Mount::MobileBase),
+        ("a lab with a UR10 on a mobile cart", Mount::MobileBase),
+        ("a lab with a mobile manipulator", Mount::MobileBase),
+        ("a lab with a UR5e on the floor", Mount::Floor),
+        ("a lab with a UR5e", Mount::Auto),
+    ];
+    for (prompt, mount) in cases {
+        let p = ok(prompt);
+        assert_eq!(robot(&p, "ur5e").mount, *mount, "{prompt:?}");
+        assert!(p.objects.is_empty(), "{prompt:?}: mounts are not scene objects\n{}", dump(&p));
+        assert!(p.understanding.not_understood.is_empty(), "{prompt:?}: {:?}", not_understood(&p));
+    }
+}
+
+#[test]
+fn mobile_bases_drive_on_the_floor() {
+    let p = ok("a warehouse with a TurtleBot");
+    assert_eq!(robot(&p, "turtlebot3").mount, Mount::Floor);
+    let p = ok("a warehouse with a TurtleBot on a pedestal");
+    assert_eq!(robot(&p, "turtlebot3").mount, Mount::Floor);
+    assert!(approximated(&p, "a TurtleBot"), "the ignored mount is noted:\n{}", dump(&p));
+}
+
+#[test]
+fn robots_work_near_groups() {
+    let p = ok("a lab with a UR5e next to the conveyor");
+    let r = robot(&p, "ur5e");
+    assert_eq!(r.near.as_deref(), Some("conveyor"));
+    assert_eq!(group(&p, "conveyor").count, 1);
+
+    let p = ok("a factory with a UR5e on a pedestal next to the conveyor");
+    let r = robot(&p, "ur5e");
+    assert_eq!((r.mount.clone(), r.near.as_deref()), (Mount::Pedestal, Some("conveyor")));
+
+    let p = ok("a factory with two conveyors and a UR5e between the two conveyors");
+    assert_eq!(robot(&p, "ur5e").near.as_deref(), Some("conveyor"));
+}
+
+#[test]
+fn robots_and_objects_in_one_prompt() {
+    let p = ok("A 10 by 6 meter lab with a workbench against the north wall, a UR5e on the bench, \
+         and six cardboard boxes on the bench");
+    assert_eq!(p.room.kind, RoomKind::Lab);
+    assert!(p.room.size_fixed);
+    assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: "workbench".into() });
+    assert_eq!(group(&p, "cardboard_box").count, 6);
+    assert_rel(&p, "workbench", RelationKind::AgainstWall { wall: Some(Wall::North) });
+    assert_rel(&p, "cardboard_box", on("workbench"));
+    assert!(p.understanding.not_understood.is_empty() && p.understanding.approximated.is_empty(), "{}", dump(&p));
+
+    let p = ok("a warehouse with a turtlebot and a UR5 on a mobile base");
+    assert_eq!(robot(&p, "turtlebot3").mount, Mount::Floor);
+    assert_eq!(robot(&p, "ur5e").mount, Mount::MobileBase);
+}
+
+// ------------------------------------------------------------------------ unknown nouns
+
+#[test]
+fn typos_match_the_nearest_category() {
+    let cases: &[(&str, &str, u32)] = &[
+        ("a factory with a conveyer", "conveyor", 1),
+        ("a factory with a convayor", "conveyor", 1),
+        ("a factory with two conveyrs", "conveyor", 2),
+        ("a warehouse with a pallett", "pallet", 1),
+        ("a warehouse with three pallett", "pallet", 3),
+        ("a warehouse with a shelff", "shelf", 1),
+        ("a lab with a cabnet", "cabinet", 1),
+    ];
+    for (prompt, category, count) in cases {
+        let p = ok(prompt);
+        assert_eq!(group(&p, category).count, *count, "{prompt:?}");
+        assert!(p.objects.iter().all(|o| o.proxy.is_none()), "{prompt:?}\n{}", dump(&p));
+    }
+}
+
+#[test]
+fn unknown_nouns_become_labelled_proxies() {
+    // (prompt, label, prior, movable)
+    let cases: &[(&str, &str, &str, bool)] = &[
+        ("a warehouse with a forklift", "forklift", "vehicle", false),
+        ("a kitchen with a fridge", "fridge", "tall fixture", false),
+        ("a lab with a flux capacitor", "flux capacitor", "floor object", false),
+        ("a warehouse with a zorblax", "zorblax", "floor object", false),
+        ("a greenhouse with a potted plant", "potted plant", "plant", false),
+        ("a lab with a table with three mugs on it", "mug", "tabletop item", true),
+        ("a lab with a centrifuge on the table", "centrifuge", "tabletop item", true),
+        ("a lab with a 0.5 m tall widget", "widget", "tabletop item", true),
+    ];
+    for (prompt, label, prior, movable) in cases {
+        let p = ok(prompt);
+        let g = proxy(&p, label);
+        let x = g.proxy.as_ref().unwrap();
+        assert_eq!(g.category, "proxy", "{prompt:?}");
+        assert_eq!(x.prior, *prior, "{prompt:?}");
+        assert_eq!(x.movable, *movable, "{prompt:?}");
+        assert!(x.size.as_array().iter().all(|v| v.is_finite() && *v > 0.0), "{prompt:?}: {:?}", x.size);
+        assert!(
+            p.understanding.approximated.iter().any(|a| a.text == g.phrase && a.became.contains(label)),
+            "{prompt:?}: a proxy is an approximation\n{}",
+            dump(&p)
+        );
+    }
+    // Tabletop things are small, floor things are not.
+    let mug = ok("a lab with a table with three mugs on it");
+    let forklift = ok("a warehouse with a forklift");
+    let h = |p: &ScenePlan, l: &str| proxy(p, l).proxy.as_ref().unwrap().size.height;
+    assert!(h(&mug, "mug") < 0.5 && h(&forklift, "forklift") > 1.0);
+}
+
+#[test]
+fn proxy_sizes_follow_explicit_sizes_and_size_words() {
+    let p = ok("a lab with a 0.5 m tall widget");
+    let g = proxy(&p, "widget");
+    assert_close(g.proxy.as_ref().unwrap().size.height, 0.5, "height");
+    assert_eq!(g.size.explicit.height, Some(0.5));
+
+    let small = ok("a lab with a small zorblax");
+    let big = ok("a lab with a huge zorblax");
+    let vol = |p: &ScenePlan| proxy(p, "zorblax").proxy.as_ref().unwrap().size.as_array().iter().product::<f64>();
+    assert!(vol(&small) < vol(&big));
+}
+
+#[test]
+
+fn bare_plural_unknown_nouns_become_proxies_with_a_default_count() {
+    let p = ok("a lab with a table and mugs on the table");
+    let mugs = proxy(&p, "mug");
+    assert!(mugs.count >= 2);
+    assert!(mugs.proxy.as_ref().unwrap().movable);
+    assert_rel(&p, &mugs.id, on("table"));
+    assert!(approximated(&p, "mugs"));
+    assert!(p.understanding.not_understood.is_empty(), "{:?}", not_understood(&p));
+
+    let p = ok("a warehouse with pallettes");
+    assert!(group(&p, "pallet").count >= 2, "{}", dump(&p));
+}
+
+#[test]
+fn leftover_words_are_reported_not_dropped() {
+    let p = ok("a lab with a table with a UR5e for training grasping policies");
+    assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: "table".into() });
+    let nu = not_understood(&p).join(" | ");
+    for w in ["training", "grasping", "policies"] {
+        assert!(nu.contains(w), "'{w}' is reported: {nu}");
+    }
+    assert!(p.understanding.not_understood.iter().all(|n| !n.reason.is_empty()));
+
+    let p = ok("a warehouse with two pallet racks for training grasping policies");
+    assert_eq!(group(&p, "pallet_rack").count, 2);
+    assert!(not_understood(&p).join(" ").contains("training grasping policies"));
+
+    let p = ok("a lab with a table quickly please, ASAP, thanks");
+    let nu = not_understood(&p);
+    for w in ["quickly", "ASAP", "thanks"] {
+        assert!(nu.iter().any(|t| t.contains(w)), "'{w}' is reported: {nu:?}");
+    }
+
+    let p = ok("a warehouse with shelves against the north wall painted yellow");
+    assert!(not_understood(&p).join(" ").contains("painted"), "{:?}", not_understood(&p));
+}
+
+#[test]
+fn descriptors_without_a_model_are_noted() {
+    let p = ok("a warehouse with two galvanised pallet racks");
+    assert_eq!(group(&p, "pallet_rack").count, 2);
+    assert!(approximated(&p, "galvanised"), "{}", dump(&p));
+}
+
+// ------------------------------------------------------------------------ bad input
+
+#[test]
+fn empty_prompts_are_rejected() {
+    for prompt in ["", " ", "   ", "\n", "\t\n  \r\n", "\u{0}\u{1}\u{7}"] {
+        assert_eq!(err(prompt), PlannerError::Empty, "{prompt:?}");
+    }
+}
+
+#[test]
+fn too_long_prompts_are_rejected() {
+    let long = "a".repeat(MAX_PROMPT_BYTES + 1);
+    assert_eq!(err(&long), PlannerError::TooLong { bytes: MAX_PROMPT_BYTES + 1, limit: MAX_PROMPT_BYTES });
+    assert_eq!(MAX_PROMPT_BYTES, 64 * 1024);
+
+    // The limit is on bytes, not characters.
+    let wide = "é".repeat(MAX_PROMPT_BYTES / 2 + 1);
+    assert!(matches!(err(&wide), PlannerError::TooLong { .. }));
+
+    // Exactly at the limit is accepted.
+    let mut at_limit = String::from("a warehouse with a pallet");
+    at_limit.push_str(&" ".repeat(MAX_PROMPT_BYTES - at_limit.len()));
+    assert_eq!(at_limit.len(), MAX_PROMPT_BYTES);
+    let p = ok(&at_limit);
+    assert_eq!(p.prompt, "a warehouse with a pallet", "the stored prompt is trimmed");
+    assert_eq!(group(&p, "pallet").count, 1);
+}
+
+#[test]
+
+fn a_prompt_at_the_size_limit_of_repeated_nouns_is_planned() {
+    let prompt = "box ".repeat(MAX_PROMPT_BYTES / 4 - 1);
+    let p = ok(&prompt);
+    assert!(p.object_count() >= 1);
+}
+
+#[test]
+fn other_languages_and_garbage_are_not_understood() {
+    let bytes: Vec<u8> = (0u8..=255).rev().chain([0xff, 0xfe, 0x00, 0x80]).collect();
+    let binary = String::from_utf8_lossy(&bytes).into_owned();
+    let prompts = [
+        "Un entrepôt avec deux étagères",
+        "一个有两个货架的仓库",
+        "Ein Lager mit zwei Regalen",
+        "@@@ ### !!! $$$",
+        "🤖🤖🤖 📦📦",
+        "asdkjh qwpoeiru zxmcnv",
+        "\u{fffd}\u{fffd}\u{200b}",
+        binary.as_str(),
+    ];
+    for prompt in prompts {
+        assert_eq!(err(prompt), PlannerError::NothingUnderstood, "{prompt:?}");
+    }
+}
+
+#[test]
+fn non_positive_sizes_are_invalid() {
+    let cases: &[(&str, &str)] = &[
+        ("a -5 by 3 m room", "-5 by 3 m"),
+        ("a -5 by 3 m warehouse", "-5 by 3 m"),
+        ("a 0 by 3 m lab", "0 by 3 m"),
+        ("a 0 m tall shelf", "0 m tall"),
+        ("a lab with a 0 m tall shelf", "0 m tall"),
+        ("a lab with a -2 m tall shelf", "-2 m tall"),
+        ("a lab with a table 0 cm wide", "0 cm wide"),
+        ("a lab with a 0 m ceiling", "0 m ceiling"),
+        ("a lab of 0 square meters", "0 square meters"),
+    ];
+    for (prompt, quoted) in cases {
+        match err(prompt) {
+            PlannerError::InvalidSize(msg) => assert!(msg.contains(quoted), "{prompt:?}: {msg}"),
+            other => panic!("{prompt:?}: expected InvalidSize, got {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn implausible_object_sizes_are_kept_for_the_catalog_to_clamp() {
+    for prompt in ["a 500 m tall table", "a warehouse with a 500 m tall table"] {
+        let p = ok(prompt);
+        assert_eq!(group(&p, "table").size.explicit.height, Some(500.0), "{prompt:?}");
+    }
+}
+
+#[test]
+fn many_objects_in_a_tiny_fixed_room_is_still_a_plan() {
+    let p = ok("a warehouse with 40 pallet racks in a 2 by 2 m room");
+    assert!(p.room.size_fixed);
+    assert_close(p.room.size.width, 2.0, "width");
+    assert_close(p.room.size.depth, 2.0, "depth");
+    assert_eq!(group(&p, "pallet_rack").count, 40);
+}
+
+#[test]
+
+fn a_single_dimension_room_is_square() {
+    let p = ok("40 pallet racks in a 2 m room");
+    assert!(p.room.size_fixed, "{}", dump(&p));
+    assert_close(p.room.size.width, 2.0, "width");
+    assert_close(p.room.size.depth, 2.0, "depth");
+    assert_eq!(group(&p, "pallet_rack").count, 40);
+    assert!(p.understanding.not_understood.is_empty(), "{:?}", not_understood(&p));
+}
+
+#[test]
+fn errors_explain_themselves() {
+    assert!(PlannerError::Empty.to_string().contains("empty"));
+    assert!(PlannerError::NothingUnderstood.to_string().contains("English"));
+    let e = PlannerError::TooLong { bytes: 70000, limit: MAX_PROMPT_BYTES };
+    assert!(e.to_string().contains("70000") && e.to_string().contains(&MAX_PROMPT_BYTES.to_string()));
+}
+
+// ------------------------------------------------------------------------ determinism and the contract
+
+/// Representative prompts, planned by the contract tests below.
+const CORPUS: &[&str] = &[
+    "a warehouse with two pallet racks, six boxes and a TurtleBot",
+    "A warehouse aisle with pallet racks on both sides, boxes on the racks and a TurtleBot",
+    "a 10 by 6 meter room with a table",
+    "a 12x12 m warehouse with 20 crates in a row",
+    "a lab with a table with three mugs on it and a UR5e on the table",
+    "a kitchen with a wooden table in the middle and four chairs around it",
+    "a greenhouse with twelve potted plants along the south wall",
+    "a factory with two conveyors, a bin between the two conveyors and a UR10 on a pedestal",
+    "a workshop with a workbench against the back wall, a red cabinet in the northeast corner and a bin under the workbench",
+    "an office of 100 square meters with a pair of chairs and a tall shelf",
+    "A lab. On the table, a Franka. Against the north wall, three shelves.",
+    "a tabletop with a Kinova and a flux capacitor for training grasping policies",
+    "a data centre with a dozen cabinets in two rows facing each other",
+    "a huge warehouse with twenty-five boxes near the door and two TurtleBots",
+    "a warehouse with pallets stacked on top of each other",
+    "a lab with a table and mugs on the table",
+    "a 2 by 2 m closet with a 50 m ceiling and 10000 boxes",
+    "a warehouse with a shelf and a cabinet. A crate between them.",
+];
+
+#[test]
+fn the_same_prompt_gives_the_same_plan() {
+    for prompt in CORPUS {
+        let a = ok(prompt);
+        let b = ok(prompt);
+        assert_eq!(a, b, "{prompt:?}");
+        assert_eq!(serde_json::to_string(&a).unwrap(), serde_json::to_string(&b).unwrap(), "{prompt:?}");
+    }
+}
+
+#[test]
+fn plans_validate_and_round_trip_through_json() {
+    for prompt in CORPUS {
+        let p = ok(prompt);
+        assert_eq!(p.schema_version, sw_plan::SCHEMA_VERSION);
+        assert_eq!(p.prompt, prompt.trim());
+        let json = serde_json::to_string_pretty(&p).unwrap();
+        let back = ScenePlan::from_json(&json).unwrap_or_else(|e| panic!("{prompt:?}: {e}\n{json}"));
+        assert_eq!(back, p, "{prompt:?}");
+    }
+}
+
+#[test]
+fn plans_are_well_formed() {
+    for prompt in CORPUS {
+        let p = ok(prompt);
+        assert!(!p.rules_profile.is_empty());
+        for o in &p.objects {
+            assert!(o.count >= 1, "{prompt:?}: {}", o.id);
+            assert!(!o.phrase.is_empty(), "{prompt:?}: {}", o.id);
+            assert_eq!(o.proxy.is_some(), o.category == "proxy", "{prompt:?}: {}", o.id);
+            if o.category != "proxy" {
+                assert!(sw_catalog::find(&o.category).is_some(), "{prompt:?}: unknown category {}", o.category);
+            }
+        }
+        for r in &p.robots {
+            assert!(sw_robots::find(&r.model).is_some(), "{prompt:?}: unregistered {}", r.model);
+            assert!(r.count >= 1 && r.count <= MAX_ROBOT_COUNT);
+        }
+    }
+}
+
+// ------------------------------------------------------------------------ properties
+
+/// Words the planner knows and words that trip it, for prompts that reach deep paths.
+const SOUP: &[&str] = &[
+    "a",
+    "an",
+    "the",
+    "two",
+    "twenty-five",
+    "dozen",
+    "pair",
+    "of",
+    "0",
+    "-3",
+    "2.5",
+    "1e309",
+    "100",
+    "1,000",
+    "x",
+    "×",
+    "by",
+    "m",
+    "cm",
+    "ft",
+    "square",
+    "meters",
+    "ceiling",
+    "tall",
+    "wide",
+    "deep",
+    "long",
+    "warehouse",
+    "aisle",
+    "room",
+    "lab",
+    "tabletop",
+    "table",
+    "tables",
+    "box",
+    "boxes",
+    "shelves",
+    "pallet",
+    "racks",
+    "conveyer",
+    "pallett",
+    "mugs",
+    "zorblax",
+    "UR5e",
+    "UR10",
+    "Franka",
+    "TurtleBots",
+    "robot",
+    "arm",
+    "pedestal",
+    "mobile",
+    "cart",
+    "floor",
+    "on",
+    "top",
+    "of",
+    "with",
+    "it",
+    "them",
+    "and",
+    "between",
+    "around",
+    "against",
+    "north",
+    "wall",
+    "corner",
+    "far",
+    "left",
+    "end",
+    "door",
+    "in",
+    "row",
+    "facing",
+    "each",
+    "other",
+    "next",
+    "to",
+    "under",
+    "front",
+    "middle",
+    "red",
+    "wooden",
+    "small",
+    "huge",
+    ",",
+    ".",
+    ";",
+    "\n",
+    "!",
+    "é",
+    "仓库",
+    "🤖",
+];
+
+fn soup() -> impl Strategy<Value = String> {
+    prop::collection::vec(prop::sample::select(SOUP), 0..40).prop_map(|w| w.join(" "))
+}
+
+fn check_any(prompt: &str) -> Result<(), TestCaseError> {
+    match plan(prompt) {
+        Ok(p) => {
+            prop_assert!(p.validate().is_ok(), "{:?}: {:?}", prompt, p.validate());
+            prop_assert_eq!(plan(prompt).ok(), Some(p.clone()), "not deterministic: {:?}", prompt);
+            let json = serde_json::to_string(&p).unwrap();
+            let back = ScenePlan::from_json(&json);
+            prop_assert!(back.is_ok(), "{:?}: {:?}", prompt, back.err());
+        }
+        Err(PlannerError::TooLong { .. }) => prop_assert!(prompt.len() > MAX_PROMPT_BYTES),
+        Err(PlannerError::Empty) => prop_assert!(prompt.chars().all(|c| c.is_whitespace() || c.is_control())),
+        Err(PlannerError::InvalidSize(msg)) => prop_assert!(!msg.is_empty()),
+        Err(PlannerError::NothingUnderstood) => {}
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    #[test]
+    fn arbitrary_unicode_never_panics(prompt in "\\PC{0,300}") {
+        check_any(&prompt)?;
+    }
+
+    #[test]
+    fn arbitrary_chars_never_panic(chars in prop::collection::vec(any::<char>(), 0..300)) {
+        let prompt: String = chars.into_iter().collect();
+        check_any(&prompt)?;
+    }
+
+    #[test]
+    fn punctuation_and_digits_never_panic(prompt in "[ -~\\n\\t×é]{0,300}") {
+        check_any(&prompt)?;
+    }
+
+    #[test]
+    fn word_soup_never_panics(prompt in soup()) {
+        check_any(&prompt)?;
+    }
+}
+
+// ------------------------------------------------------------------------ snapshots
+
+#[test]
+fn snapshot_warehouse_aisle() {
+    let p = ok("A warehouse aisle with two pallet racks on both sides, 12 cardboard boxes on the racks, \
+                a pallet at the north end and a TurtleBot");
+    insta::assert_json_snapshot!("warehouse_aisle", p);
+}
+
+#[test]
+fn snapshot_tabletop_with_a_ur5e() {
+    let p = ok("A tabletop with a UR5e on a table, three mugs on the table and a small red box next to the mugs");
+    insta::assert_json_snapshot!("tabletop_ur5e", p);
+}
+
+#[test]
+fn snapshot_kitchen_chairs_around_a_table() {
+    let p = ok("A kitchen with a wooden table in the middle and four chairs around it");
+    insta::assert_json_snapshot!("kitchen_chairs_around_table", p);
+}
