@@ -129,7 +129,7 @@ pub fn generate(
         let _s = info_span!("stage", stage = "forge").entered();
         forge(&plan, opts.seed)
     };
-    finish(Stage::Forge, t, format!("{} assets", forged.objects.len()), &mut timings, on_event);
+    finish(Stage::Forge, t, report::count(forged.objects.len(), "asset", "assets"), &mut timings, on_event);
 
     // L3
     let t = stage(Stage::Layout, on_event);
@@ -170,7 +170,11 @@ pub fn generate(
         finish(
             Stage::Bridge,
             t,
-            format!("{} bodies, {} meshes", layout.objects.len() + layout.robots.len(), files.meshes.len()),
+            format!(
+                "{}, {}",
+                report::count(layout.objects.len() + layout.robots.len(), "body", "bodies"),
+                report::count(files.meshes.len(), "mesh", "meshes")
+            ),
             &mut timings,
             on_event,
         );

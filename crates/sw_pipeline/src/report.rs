@@ -34,9 +34,9 @@ pub(crate) fn plan_summary(plan: &ScenePlan) -> String {
 pub(crate) fn layout_summary(l: &LaidOutScene) -> String {
     let s = l.room.size;
     let mut out = format!(
-        "{} objects and {} robots placed in {} × {} m",
-        l.objects.len(),
-        l.robots.len(),
+        "{} and {} placed in {} × {} m",
+        count(l.objects.len(), "object", "objects"),
+        count(l.robots.len(), "robot", "robots"),
         trim(s.width),
         trim(s.depth)
     );
@@ -45,7 +45,7 @@ pub(crate) fn layout_summary(l: &LaidOutScene) -> String {
         out.push_str(&format!(" · {left} left out"));
     }
     if !l.warnings.is_empty() {
-        out.push_str(&format!(" · {} warnings", l.warnings.len()));
+        out.push_str(&format!(" · {}", count(l.warnings.len(), "warning", "warnings")));
     }
     out
 }
@@ -177,6 +177,11 @@ pub(crate) fn assemble(
     };
     report.verification = verification;
     report
+}
+
+/// "1 body", "3 bodies".
+pub(crate) fn count(n: usize, one: &str, many: &str) -> String {
+    if n == 1 { format!("1 {one}") } else { format!("{n} {many}") }
 }
 
 fn trim(v: f64) -> String {
