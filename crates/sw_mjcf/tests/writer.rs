@@ -56,17 +56,21 @@ fn scene() -> (LaidOutScene, Vec<sw_geom::Asset>) {
     (layout, vec![table, bx])
 }
 
-#[test]
-fn a_small_scene_writes_stable_mjcf_that_compiles_and_settles() {
+fn write_with_ur5e(prompt: &str) -> sw_mjcf::SceneFiles {
     let (layout, assets) = scene();
     let ur5e = sw_robots::find("ur5e").unwrap();
-    let files = write_scene(&SceneInput {
-        prompt: "a table with a box and a UR5e",
+    write_scene(&SceneInput {
+        prompt,
         layout: &layout,
         assets: assets.iter().collect(),
         robots: vec![RobotInput { name: "ur5e_1", source: "built-in ur5e", mjcf: ur5e.mjcf }],
     })
-    .unwrap();
+    .unwrap()
+}
+
+#[test]
+fn a_small_scene_writes_stable_mjcf_that_compiles_and_settles() {
+    let files = write_with_ur5e("a table with a box and a UR5e");
     insta::assert_snapshot!("scene_xml", files.scene_xml);
     assert!(!files.scene_only_xml.contains("ur5e_1"));
 
@@ -87,15 +91,7 @@ fn a_small_scene_writes_stable_mjcf_that_compiles_and_settles() {
 
 #[test]
 fn every_name_a_robot_brings_is_prefixed() {
-    let (layout, assets) = scene();
-    let ur5e = sw_robots::find("ur5e").unwrap();
-    let files = write_scene(&SceneInput {
-        prompt: "",
-        layout: &layout,
-        assets: assets.iter().collect(),
-        robots: vec![RobotInput { name: "ur5e_1", source: "built-in ur5e", mjcf: ur5e.mjcf }],
-    })
-    .unwrap();
+    let files = write_with_ur5e("");
     let doc = sw_mjcf::xml::Element::parse(&files.scene_xml).unwrap();
     let scene_names = ["table", "cardboard_box", "floor", "wall_", "doorway", "sw_", "overview", "home", "scenewright"];
     doc.walk(&mut |e| {

@@ -109,24 +109,14 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         .collect();
     let mut dropped = Vec::new();
     for g in &d.groups {
-        let Some(mut count) = resolve_count(g.count, g.plural, &g.phrase, &mut approximated) else {
+        let Some(count) = resolve_count(g.count, g.plural, &g.phrase, &mut approximated) else {
             dropped.push(g.id.clone());
             continue;
         };
-        let so_far = plan.object_count();
-        if so_far + count > MAX_TOTAL {
-            let allowed = MAX_TOTAL.saturating_sub(so_far);
-            approximated.push(Approximation {
-                text: g.phrase.clone(),
-                became: if allowed == 0 { "left out".into() } else { format!("{allowed}") },
-                reason: format!("at most {MAX_TOTAL} objects per scene"),
-            });
-            if allowed == 0 {
-                dropped.push(g.id.clone());
-                continue;
-            }
-            count = allowed;
-        }
+        let Some(count) = cap(count, plan.object_count(), MAX_TOTAL, "objects", &g.phrase, &mut approximated) else {
+            dropped.push(g.id.clone());
+            continue;
+        };
         let hint = SizeHint { words: g.sizes.clone(), explicit: g.explicit };
         let (category, proxy) = match g.category {
             Some(c) => (c.to_string(), None),
@@ -171,23 +161,13 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
     // ---- robots
     let mut robot_ids: BTreeMap<String, u32> = BTreeMap::new();
     for r in &d.robots {
-        let Some(mut count) = resolve_count(r.count, r.plural, &r.phrase, &mut approximated) else {
+        let Some(count) = resolve_count(r.count, r.plural, &r.phrase, &mut approximated) else {
             continue;
         };
         let robots_so_far: u32 = plan.robots.iter().map(|x| x.count).sum();
-        let max = sw_plan::MAX_ROBOTS;
-        if robots_so_far + count > max {
-            let allowed = max.saturating_sub(robots_so_far);
-            approximated.push(Approximation {
-                text: r.phrase.clone(),
-                became: if allowed == 0 { "left out".into() } else { format!("{allowed}") },
-                reason: format!("at most {max} robots per scene"),
-            });
-            if allowed == 0 {
-                continue;
-            }
-            count = allowed;
-        }
+        let Some(count) = cap(count, robots_so_far, sw_plan::MAX_ROBOTS, "robots", &r.phrase, &mut approximated) else {
+            continue;
+        };
         let def = sw_robots::find(r.word.wants).unwrap_or_else(|| sw_robots::default_of(r.word.kind));
         if def.name != r.word.wants {
             approximated.push(Approximation {
@@ -275,6 +255,21 @@ fn resolve_count(count: Option<f64>, plural: bool, phrase: &str, notes: &mut Vec
         return Some(MAX_COUNT);
     }
     Some(rounded as u32)
+}
+
+/// Keeps a scene's total of `what` at `max`: the count that still fits (noted when cut),
+/// or `None` when nothing does.
+fn cap(count: u32, so_far: u32, max: u32, what: &str, phrase: &str, notes: &mut Vec<Approximation>) -> Option<u32> {
+    if so_far + count <= max {
+        return Some(count);
+    }
+    let allowed = max.saturating_sub(so_far);
+    notes.push(Approximation {
+        text: phrase.to_string(),
+        became: if allowed == 0 { "left out".into() } else { format!("{allowed}") },
+        reason: format!("at most {max} {what} per scene"),
+    });
+    (allowed > 0).then_some(allowed)
 }
 
 fn proxy_for(g: &GroupDraft, resting: bool, notes: &mut Vec<Approximation>) -> ProxyPlan {
