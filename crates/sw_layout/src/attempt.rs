@@ -13,6 +13,7 @@ use crate::LayoutInput;
 use crate::floor;
 use crate::frames::Spot;
 use crate::robots;
+use crate::rules::{self, Clearance, EgressGrid, Profile};
 use crate::space::{Space, Zone};
 use crate::surface;
 
@@ -54,6 +55,13 @@ pub(crate) struct Ctx<'a> {
     pub cursor: BTreeMap<String, usize>,
     /// The free-floor grid of each group (and whether it is ordered from the centre).
     pub grid_cache: BTreeMap<(String, bool), std::rc::Rc<Vec<Spot>>>,
+    /// The rules that apply, and the keep-clear space they ask around each object.
+    pub profile: Profile,
+    pub clearances: Vec<Clearance>,
+    /// Routes of the egress width from the door, and the working fronts they must reach.
+    pub egress: Option<EgressGrid>,
+    pub access: Vec<Aabb>,
+    pub door_zone: Aabb,
 }
 
 impl<'a> Ctx<'a> {
@@ -77,31 +85,26 @@ impl<'a> Ctx<'a> {
         }
     }
 
-    /// Records a placement and its occupied space.
+    /// Records a placement and its occupied space: its collision boxes, the keep-clear
+    /// zones its rules ask for, and its footprint on the egress grid.
     pub fn commit(&mut self, idx: usize, spot: Spot, support: Support) {
         let boxes = spot.boxes(&self.local[idx]);
         let on_floor = matches!(support, Support::Floor);
         let name = self.input.objects[idx].name.clone();
+        let footprint = crate::space::union(&boxes);
         self.space.add(&name, boxes, on_floor);
-        if on_floor && let Some(zone) = floor::front_zone(self, idx, &spot) {
-            self.space.zones.push(Zone { owner: Some(name), area: zone });
+        if on_floor {
+            for (zone, front) in floor::zones(self, idx, &spot) {
+                if front {
+                    self.access.push(zone);
+                }
+                self.space.zones.push(Zone { owner: Some(name.clone()), area: zone });
+            }
+            if let Some(g) = &mut self.egress {
+                g.add(&footprint);
+            }
         }
         self.placed[idx] = Some(Placement { spot, support });
-    }
-
-    /// The service depth kept clear in front of an object, m.
-    pub fn front_clearance(&self, idx: usize) -> f64 {
-        let o = &self.input.objects[idx];
-        if o.has_tag("electrical") {
-            // NEC 110.26(A)(1): 0.9 m working space for equipment up to 150 V to ground.
-            0.9
-        } else if o.has_tag("machine") || (o.has_tag("storage") && o.has_tag("tall")) {
-            0.9
-        } else if o.has_tag("conveyor") {
-            0.6
-        } else {
-            0.0
-        }
     }
 }
 
@@ -148,7 +151,19 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
     let plan = input.plan;
     let door = door_for(plan.room.kind, plan.room.door, &size);
     let mut space = Space::new(size.width, size.depth, size.height);
-    space.zones.push(Zone { owner: None, area: door_zone(&door, &size) });
+    let door_area = door_zone(&door, &size);
+    space.zones.push(Zone { owner: None, area: door_area });
+    let (profile, unknown_profile) = match rules::profile(&plan.rules_profile) {
+        Some(p) => (p, None),
+        None => (
+            rules::profile("general").unwrap_or(Profile { name: "general".into(), rules: Vec::new() }),
+            Some(format!(
+                "rules profile '{}' is unknown (known: {}); used 'general'",
+                plan.rules_profile,
+                rules::profile_names().join(", ")
+            )),
+        ),
+    };
     let local: Vec<Vec<Aabb>> = input.objects.iter().map(|o| o.asset.collision_aabbs()).collect();
     let bounds: Vec<Aabb> = local.iter().map(|b| crate::space::union(b)).collect();
     let mut ctx = Ctx {
@@ -167,7 +182,15 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
         group_failures: BTreeMap::new(),
         cursor: BTreeMap::new(),
         grid_cache: BTreeMap::new(),
+        clearances: input.objects.iter().map(|o| profile.clearance(&o.tags)).collect(),
+        egress: profile.egress().map(|(_, w, _)| EgressGrid::new([size.width / 2.0, size.depth / 2.0], w, &door_area)),
+        profile,
+        access: Vec::new(),
+        door_zone: door_area,
     };
+    if let Some(w) = unknown_profile {
+        ctx.warn("rules_profile_unknown", w);
+    }
 
     // 1. Furniture and fixtures on the floor, targets before the things related to them.
     let is_small = |i: usize| input.objects[i].asset.placement == PlacementKind::OnSurface;
@@ -250,6 +273,7 @@ fn finish(ctx: Ctx<'_>, size: Dims, door: DoorLayout) -> AttemptResult {
         }
     }
     scene.robots = ctx.robots.into_iter().flatten().collect();
+    scene.violations = rules::check(input, &scene, &ctx.profile, &ctx.door_zone);
     scene.warnings = ctx.warnings;
     AttemptResult { scene, floor_failures: ctx.floor_failures }
 }

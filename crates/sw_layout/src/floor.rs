@@ -12,6 +12,9 @@ use crate::attempt::Ctx;
 use crate::frames::{QUARTER_TURNS, Spot, yaw_facing};
 use crate::space::{FLOOR_GAP, WALL_GAP, union};
 
+/// Candidates of one object that may be tested against the egress routes.
+const EGRESS_CHECKS: u32 = 60;
+
 /// Along-wall and grid resolution of candidate positions, m.
 const STEP: f64 = 0.05;
 
@@ -95,16 +98,40 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
         .collect();
     let ignore: Vec<&str> = ignore_zones.iter().map(String::as_str).collect();
     let (specific, defaults, grid) = candidates(ctx, idx);
-    let mut found: Option<(Spot, u8)> = specific.into_iter().find(|(spot, _)| fits_floor(ctx, idx, spot, &ignore));
+    // Egress is checked on candidates that fit, up to a budget; past it, what blocks a
+    // route is reported by the rules check rather than searched for indefinitely.
+    // Placing something in front of equipment on request blocks its access by design.
+    let in_front = rels.iter().any(|r| matches!(r, RelationKind::InFrontOf { .. }));
+    let mut egress_budget = if in_front { 0 } else { EGRESS_CHECKS };
+    let mut acceptable = |ctx: &mut Ctx<'_>, spot: &Spot| -> bool {
+        if !fits_floor(ctx, idx, spot, &ignore) {
+            return false;
+        }
+        if egress_budget == 0 {
+            return true;
+        }
+        egress_budget -= 1;
+        keeps_egress(ctx, idx, spot)
+    };
+    let mut found: Option<(Spot, u8)> = None;
+    for (spot, tier) in specific {
+        if acceptable(ctx, &spot) {
+            found = Some((spot, tier));
+            break;
+        }
+    }
     if found.is_none() {
         // Defaults and the free grid are the same list for every instance of a group:
         // start where the previous instance found its place (space only fills up).
         let start = ctx.cursor.get(&group).copied().unwrap_or(0);
         let all = defaults.len() + grid.len();
         let at = |k: usize| if k < defaults.len() { defaults[k] } else { grid[k - defaults.len()] };
-        if let Some(k) = (start..all).find(|&k| fits_floor(ctx, idx, &at(k), &ignore)) {
-            ctx.cursor.insert(group.clone(), k);
-            found = Some((at(k), 2));
+        for k in start..all {
+            if acceptable(ctx, &at(k)) {
+                ctx.cursor.insert(group.clone(), k);
+                found = Some((at(k), 2));
+                break;
+            }
         }
     }
     let Some((spot, tier)) = found else {
@@ -139,24 +166,50 @@ pub(crate) fn fits_floor(ctx: &Ctx<'_>, idx: usize, spot: &Spot, ignore_zones: &
     if !ctx.space.fits(&boxes, FLOOR_GAP, &[], true, ignore_zones) {
         return false;
     }
-    match front_zone(ctx, idx, spot) {
-        Some(z) => {
-            let inside = ctx.space.inside(&Aabb { min: [z.min[0], z.min[1], 0.0], max: [z.max[0], z.max[1], 0.0] });
-            inside && ctx.space.zone_is_clear(&z, &[])
-        }
+    // Its own keep-clear zones must be inside the room and free of floor objects.
+    zones(ctx, idx, spot).iter().all(|(z, _)| {
+        ctx.space.inside(&Aabb { min: [z.min[0], z.min[1], 0.0], max: [z.max[0], z.max[1], 0.0] })
+            && ctx.space.zone_is_clear(z, &[])
+    })
+}
+
+/// True when placing object `idx` at `spot` keeps every working front reachable from
+/// the door by a route of the profile's egress width.
+pub(crate) fn keeps_egress(ctx: &mut Ctx<'_>, idx: usize, spot: &Spot) -> bool {
+    let footprint = union(&spot.boxes(&ctx.local[idx]));
+    let mut fronts = ctx.access.clone();
+    fronts.extend(zones(ctx, idx, spot).into_iter().filter(|(_, front)| *front).map(|(z, _)| z));
+    match &mut ctx.egress {
+        Some(g) => g.keeps_connected(&footprint, &fronts),
         None => true,
     }
 }
 
-/// The working space kept clear in front of an object (its +Y side), if it needs one.
-pub(crate) fn front_zone(ctx: &Ctx<'_>, idx: usize, spot: &Spot) -> Option<Aabb> {
-    let c = ctx.front_clearance(idx);
-    if c <= 0.0 {
-        return None;
+/// The keep-clear zones the rules ask around an object at `spot` (world frame), each with
+/// whether it is its working front.
+pub(crate) fn zones(ctx: &Ctx<'_>, idx: usize, spot: &Spot) -> Vec<(Aabb, bool)> {
+    let c = &ctx.clearances[idx];
+    if c.is_empty() {
+        return Vec::new();
     }
     let b = ctx.bounds[idx];
-    let local = Aabb { min: [b.min[0], b.max[1], 0.0], max: [b.max[0], b.max[1] + c, 2.0] };
-    Some(local.transformed(&spot.pose()))
+    let width = (b.max[0] - b.min[0]).max(c.min_width);
+    let cx = 0.5 * (b.min[0] + b.max[0]);
+    let mut out = Vec::new();
+    if c.front > 0.0 {
+        out.push((
+            Aabb { min: [cx - width / 2.0, b.max[1], 0.0], max: [cx + width / 2.0, b.max[1] + c.front, 2.0] },
+            true,
+        ));
+    }
+    if c.back > 0.0 {
+        out.push((Aabb { min: [b.min[0], b.min[1] - c.back, 0.0], max: [b.max[0], b.min[1], 2.0] }, false));
+    }
+    if c.sides > 0.0 {
+        out.push((Aabb { min: [b.min[0] - c.sides, b.min[1], 0.0], max: [b.min[0], b.max[1], 2.0] }, false));
+        out.push((Aabb { min: [b.max[0], b.min[1], 0.0], max: [b.max[0] + c.sides, b.max[1], 2.0] }, false));
+    }
+    out.into_iter().map(|(z, f)| (z.transformed(&spot.pose()), f)).collect()
 }
 
 /// Half extents of the object's footprint at a yaw, and the local bounds.
@@ -511,9 +564,12 @@ fn in_front_of(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spot> {
     for (ti, ts) in targets_for(ctx, target, k) {
         let tb = ctx.bounds[ti];
         for d in [0.2, 0.35, 0.5, 0.7, 0.9] {
-            let p = ts.apply([0.5 * (tb.min[0] + tb.max[0]), tb.max[1] + d + b.max[1], 0.0]);
-            out.push(Spot::new(p[0], p[1], 0.0, ts.yaw + PI));
-            out.push(Spot::new(p[0], p[1], 0.0, ts.yaw));
+            // Centred on the target first, then shifted sideways (a corner may not leave room).
+            for shift in [0.0, -0.1, 0.1, -0.2, 0.2, -0.35, 0.35, -0.5, 0.5] {
+                let p = ts.apply([0.5 * (tb.min[0] + tb.max[0]) + shift, tb.max[1] + d + b.max[1], 0.0]);
+                out.push(Spot::new(p[0], p[1], 0.0, ts.yaw + PI));
+                out.push(Spot::new(p[0], p[1], 0.0, ts.yaw));
+            }
         }
     }
     out

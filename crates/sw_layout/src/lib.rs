@@ -13,6 +13,7 @@ mod attempt;
 mod floor;
 mod frames;
 mod robots;
+pub mod rules;
 mod space;
 mod surface;
 

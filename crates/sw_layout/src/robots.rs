@@ -7,7 +7,7 @@ use sw_geom::{Aabb, SupportSurface};
 use sw_plan::{PlacedRobot, Support};
 
 use crate::attempt::{Ctx, round};
-use crate::floor::{beside, fits_floor, free_grid};
+use crate::floor::{beside, fits_floor, free_grid, keeps_egress};
 use crate::frames::{Spot, robot_yaw_facing};
 use crate::space::FLOOR_GAP;
 use crate::{RobotItem, RobotMount};
@@ -39,6 +39,18 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>) {
             ctx.floor_failures += 1;
         }
     }
+}
+
+/// The robot-space rule: an arm's reach plus margin stays off the doorway.
+fn clear_of_doorway(ctx: &Ctx<'_>, robot: &RobotItem, spot: &Spot) -> bool {
+    let Some((_, margin, _)) = ctx.profile.robot_space() else { return true };
+    if !robot.is_arm {
+        return true;
+    }
+    let z = &ctx.door_zone;
+    let dx = (z.min[0] - spot.x).max(spot.x - z.max[0]).max(0.0);
+    let dy = (z.min[1] - spot.y).max(spot.y - z.max[1]).max(0.0);
+    dx.hypot(dy) >= robot.reach + margin
 }
 
 fn robot_boxes(robot: &RobotItem, spot: &Spot) -> Vec<Aabb> {
@@ -89,7 +101,7 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
                 for yaw in spots {
                     let spot = Spot::new(p[0], p[1], p[2], yaw);
                     let boxes = robot_boxes(robot, &spot);
-                    if ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) {
+                    if ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) && clear_of_doorway(ctx, robot, &spot) {
                         let host_name = ctx.input.objects[hi].name.clone();
                         let coverage = coverage(&spot, robot, &hspot, &surf);
                         commit(ctx, ri, robot, spot, boxes, "surface", Some(host_name), Some(coverage));
@@ -143,7 +155,7 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         candidates.push((s, None));
     }
     for (spot, work) in candidates {
-        if !fits_floor(ctx, ci, &spot, &[]) {
+        if !fits_floor(ctx, ci, &spot, &[]) || !keeps_egress(ctx, ci, &spot) {
             continue;
         }
         let base = spot.apply([0.0, 0.0, top]);
@@ -151,7 +163,7 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         let yaw = robot_yaw_facing(tx - base[0], ty - base[1]);
         let rspot = Spot::new(base[0], base[1], base[2], yaw);
         let boxes = robot_boxes(robot, &rspot);
-        if !ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) {
+        if !ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) || !clear_of_doorway(ctx, robot, &rspot) {
             continue;
         }
         ctx.commit(ci, spot, Support::Floor);
@@ -211,7 +223,11 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
             })
             .collect();
         let inside = ctx.space.inside(&crate::space::union(&inflated));
-        if inside && ctx.space.fits(&boxes, MOBILE_GAP.max(FLOOR_GAP), &[], true, &[]) {
+        let fronts = ctx.access.clone();
+        let keeps_routes = || -> bool {
+            ctx.egress.clone().is_none_or(|mut g| g.keeps_connected(&crate::space::union(&boxes), &fronts))
+        };
+        if inside && ctx.space.fits(&boxes, MOBILE_GAP.max(FLOOR_GAP), &[], true, &[]) && keeps_routes() {
             commit(ctx, ri, robot, spot, boxes, "floor", None, None);
             return true;
         }
@@ -230,6 +246,11 @@ fn commit(
     mounted_on: Option<String>,
     reach_coverage: Option<f64>,
 ) {
+    if mount == "floor"
+        && let Some(g) = &mut ctx.egress
+    {
+        g.add(&crate::space::union(&boxes));
+    }
     ctx.space.add(&robot.name, boxes, mount == "floor");
     ctx.robots[ri] = Some(PlacedRobot {
         name: robot.name.clone(),

@@ -309,3 +309,41 @@ fn a_small_kitchen_layout_is_stable() {
     check_invariants(&f, &scene);
     insta::assert_json_snapshot!("kitchen_layout", scene);
 }
+
+#[test]
+fn a_shelf_asked_to_stand_in_front_of_an_electrical_panel_does_and_the_violation_is_named() {
+    let mut plan = room(RoomKind::Workshop, Dims::new(10.0, 8.0, 4.0), true);
+    plan.rules_profile = "industrial".into();
+    plan.objects.push(group("panel", "electrical_panel", 1));
+    plan.objects.push(group("shelf", "shelf", 1));
+    plan.relations
+        .push(Relation { subject: "panel".into(), kind: RelationKind::AgainstWall { wall: Some(Wall::North) } });
+    plan.relations.push(Relation { subject: "shelf".into(), kind: RelationKind::InFrontOf { target: "panel".into() } });
+    let f = forge(plan, 0);
+    let scene = solve_forged(&f, Vec::new(), 0);
+    check_invariants(&f, &scene);
+    assert!(scene.warnings.is_empty(), "{:?}", scene.warnings);
+    let v = scene
+        .violations
+        .iter()
+        .find(|v| v.rule.starts_with("nec_working_space"))
+        .expect("the NEC violation is reported");
+    assert!(v.requested, "{v:?}");
+    assert_eq!(v.objects, ["electrical_panel_1", "shelf_1"]);
+    assert!(v.measured < v.required && v.required == 1.0, "{v:?}");
+    assert!(v.standard.contains("NEC 110.26"));
+}
+
+#[test]
+fn by_default_the_rules_are_met() {
+    let mut plan = room(RoomKind::Workshop, Dims::new(10.0, 8.0, 4.0), true);
+    plan.rules_profile = "industrial".into();
+    plan.objects.push(group("panel", "electrical_panel", 2));
+    plan.objects.push(group("machine", "machine", 2));
+    plan.objects.push(group("shelf", "shelf", 3));
+    plan.objects.push(group("bench", "workbench", 2));
+    let f = forge(plan, 5);
+    let scene = solve_forged(&f, Vec::new(), 5);
+    check_invariants(&f, &scene);
+    assert!(scene.violations.is_empty(), "{:#?}", scene.violations);
+}
