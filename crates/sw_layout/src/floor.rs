@@ -242,6 +242,30 @@ fn candidates(ctx: &mut Ctx<'_>, idx: usize) -> Candidates {
             specific.extend(set.drain(..).map(|s| (s, 1)));
         }
     }
+    // Chairs with nowhere said go to the tables and desks.
+    if positional.is_empty() && ctx.input.objects[idx].has_tag("seating") {
+        let group = ctx.input.objects[idx].group.clone();
+        let k = ctx.instances(&group).iter().position(|&i| i == idx).unwrap_or(0);
+        let tables: Vec<String> = {
+            let mut v: Vec<String> = Vec::new();
+            for (i, o) in ctx.input.objects.iter().enumerate() {
+                let table = o.has_tag("surface") && o.has_tag("furniture") && !o.has_tag("seating");
+                if table && ctx.placed[i].is_some() && !v.contains(&o.group) {
+                    v.push(o.group.clone());
+                }
+            }
+            v
+        };
+        if !tables.is_empty() {
+            // Spread the chairs over every table, round robin.
+            let all: Vec<(usize, Spot)> = tables.iter().flat_map(|t| ctx.placed_instances(t)).collect();
+            let n = all.len().max(1);
+            let (ti, _) = all[k % n];
+            let target = ctx.input.objects[ti].group.clone();
+            let within = ctx.placed_instances(&target).iter().position(|(i, _)| *i == ti).unwrap_or(0);
+            specific.extend(around(ctx, idx, &target, within, k / n).into_iter().map(|s| (s, 0)));
+        }
+    }
     let defaults = defaults(ctx, idx);
     let grid = free_grid(ctx, idx, false);
     (specific, defaults, grid)
@@ -407,7 +431,7 @@ fn generate(ctx: &mut Ctx<'_>, idx: usize, rel: &RelationKind) -> Vec<Spot> {
         RelationKind::InCenter => free_grid(ctx, idx, true).to_vec(),
         RelationKind::NextTo { target } => beside(ctx, idx, target, k),
         RelationKind::InFrontOf { target } => in_front_of(ctx, idx, target, k),
-        RelationKind::Around { target } => around(ctx, idx, target, k),
+        RelationKind::Around { target } => around(ctx, idx, target, k, k),
         RelationKind::Between { first, second } => between(ctx, first, second, k),
         RelationKind::Under { target } => under(ctx, target, k),
         RelationKind::InRow => row(ctx, idx, &group, k),
@@ -576,7 +600,7 @@ fn in_front_of(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spot> {
 }
 
 /// Around a target: on each side, facing it, tucked in as far as collision allows.
-fn around(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spot> {
+fn around(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize, seat: usize) -> Vec<Spot> {
     let b = footprint(ctx, idx);
     let depth_front = b.max[1];
     let mut out = Vec::new();
@@ -591,10 +615,10 @@ fn around(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spot> {
         ([1.0, 0.0], 0.5 * (tb.max[1] - tb.min[1]), tb.max[0]),
         ([-1.0, 0.0], 0.5 * (tb.max[1] - tb.min[1]), -tb.min[0]),
     ];
-    let rot = (k / 4) % 2;
+    let rot = (seat / 4) % 2;
     for tuck in [-0.3, -0.2, -0.1, 0.0, 0.05, 0.15, 0.3] {
         for s in 0..4 {
-            let (n, half_len, edge) = sides[(s + k + rot) % 4];
+            let (n, half_len, edge) = sides[(s + seat + rot) % 4];
             for along in [0.0, -0.5, 0.5, -0.8, 0.8] {
                 let t = along * (half_len - 0.25).max(0.0);
                 let dist = edge + depth_front + FLOOR_GAP + tuck;

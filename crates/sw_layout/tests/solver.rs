@@ -347,3 +347,23 @@ fn by_default_the_rules_are_met() {
     check_invariants(&f, &scene);
     assert!(scene.violations.is_empty(), "{:#?}", scene.violations);
 }
+
+#[test]
+fn chairs_with_nowhere_said_go_to_the_tables() {
+    let mut plan = room(RoomKind::Office, Dims::new(8.0, 6.0, 3.0), true);
+    plan.objects.push(group("table", "table", 2));
+    plan.objects.push(group("chair", "chair", 8));
+    let f = forge(plan, 2);
+    let scene = solve_forged(&f, Vec::new(), 2);
+    check_invariants(&f, &scene);
+    let tables: Vec<_> = scene.objects.iter().filter(|o| o.category == "table").collect();
+    for c in scene.objects.iter().filter(|o| o.category == "chair") {
+        let d = tables.iter().map(|t| (c.pos[0] - t.pos[0]).hypot(c.pos[1] - t.pos[1])).fold(f64::INFINITY, f64::min);
+        assert!(d < 1.3, "{} is {d:.2} m from the nearest table", c.name);
+    }
+    // Both tables get chairs.
+    for t in &tables {
+        let n = scene.objects.iter().filter(|c| c.category == "chair" && (c.pos[0] - t.pos[0]).hypot(c.pos[1] - t.pos[1]) < 1.3).count();
+        assert!(n >= 2, "{} has {n} chairs", t.name);
+    }
+}
