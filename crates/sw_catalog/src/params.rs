@@ -95,7 +95,41 @@ impl Params {
             }
             values.push((def.name.to_string(), clamped));
         }
+        if cat.has_tag("round") || cat.has_tag("uniform") {
+            one_size(cat, req, &mut values, &mut notes);
+        }
         Ok((Params { values }, notes))
+    }
+}
+
+/// A round thing has one diameter: `depth` follows `width`. A uniform thing (a cube, a
+/// ball) has one size: `height` follows it too. The size comes from `width` unless only
+/// another of them was given (or scaled) explicitly.
+fn one_size(cat: &Category, req: &AssetRequest, values: &mut [(String, f64)], notes: &mut Vec<String>) {
+    let uniform = cat.has_tag("uniform");
+    let axes: &[&str] = if uniform { &["width", "depth", "height"] } else { &["width", "depth"] };
+    let given = |n: &str| req.overrides.iter().any(|(o, _)| o == n);
+    let index = |n: &str| values.iter().position(|(v, _)| v == n);
+    let Some(idx) = axes.iter().map(|a| index(a)).collect::<Option<Vec<usize>>>() else {
+        return;
+    };
+    // The axis whose scale moved furthest from 1, or the only one given.
+    let scaled = req.scale.map(|s| (0..axes.len()).max_by(|&a, &b| (s[a] - 1.0).abs().total_cmp(&(s[b] - 1.0).abs())));
+    let source = if given("width") {
+        0
+    } else if let Some(k) = axes.iter().position(|a| given(a)) {
+        k
+    } else {
+        scaled.flatten().unwrap_or(0)
+    };
+    let v = values[idx[source]].1;
+    let conflict = axes.iter().enumerate().any(|(k, a)| k != source && given(a) && (values[idx[k]].1 - v).abs() > 1e-9);
+    if conflict {
+        let what = if uniform { "its sizes follow" } else { "its depth follows" };
+        notes.push(format!("{} has one size: {what} its {} ({})", cat.display, axes[source], trim(v)));
+    }
+    for &i in &idx {
+        values[i].1 = v;
     }
 }
 

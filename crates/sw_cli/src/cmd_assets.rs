@@ -36,12 +36,18 @@ pub(crate) enum AssetsCommand {
         #[arg(long, default_value_t = 640)]
         size: u32,
     },
-    /// A contact sheet of every category.
+    /// A contact sheet of every category (or of the listed ones).
     Sheet {
         #[arg(long)]
         out: PathBuf,
         #[arg(long, default_value_t = 0)]
         seed: u64,
+        /// Only these categories, comma-separated.
+        #[arg(long, value_delimiter = ',')]
+        only: Vec<String>,
+        /// Tiles per row.
+        #[arg(long, default_value_t = 8)]
+        columns: u32,
     },
 }
 
@@ -186,18 +192,22 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
             write_png(&render_asset(&a, size, size), &out)?;
             Ok(0)
         }
-        AssetsCommand::Sheet { out, seed } => {
-            let cats = sw_catalog::categories();
-            let tile = 240u32;
-            let cols = 6u32;
+        AssetsCommand::Sheet { out, seed, only, columns } => {
+            let cats: Vec<&'static sw_catalog::Category> = if only.is_empty() {
+                sw_catalog::categories().iter().collect()
+            } else {
+                only.iter().map(|n| find(n)).collect::<Result<_, _>>()?
+            };
+            let tile = 200u32;
+            let cols = columns.clamp(1, 32);
             let rows = (cats.len() as u32).div_ceil(cols);
-            let mut sheet = Image::new(cols * tile, rows * (tile + 24), [255, 255, 255]);
+            let mut sheet = Image::new(cols * tile, rows * (tile + 22), [255, 255, 255]);
             for (i, c) in cats.iter().enumerate() {
                 let a = build(c, seed)?;
                 let img = render_asset(&a, tile, tile);
-                let (x, y) = ((i as u32 % cols) * tile, (i as u32 / cols) * (tile + 24));
+                let (x, y) = ((i as u32 % cols) * tile, (i as u32 / cols) * (tile + 22));
                 sheet.blit(&img, x, y);
-                sheet.text(x + 6, y + tile + 6, c.name, 2, [20, 20, 30]);
+                sheet.text(x + 5, y + tile + 5, c.name, 2, [20, 20, 30]);
             }
             write_png(&sheet, &out)?;
             Ok(0)
@@ -205,10 +215,11 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
     }
 }
 
-/// Draws an asset's visual meshes in their materials from a three-quarter view.
+/// Draws an asset's visual meshes in their materials from a three-quarter view of its
+/// front (assets face +Y).
 pub(crate) fn render_asset(a: &Asset, width: u32, height: u32) -> Image {
     let poses = a.link_poses();
-    let cam = Camera::framing(&a.bounds(), -1.05, 0.5);
+    let cam = Camera::framing(&a.bounds(), 1.15, 0.45);
     let mut r = Renderer::new(width, height, &cam, [238, 241, 246]);
     for (link, pose) in a.links.iter().zip(&poses) {
         for v in &link.visuals {

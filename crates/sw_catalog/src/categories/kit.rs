@@ -115,7 +115,7 @@ pub(crate) fn decal(b: &mut AssetBuilder, center: [f64; 3], size: [f64; 3], mate
 
 /// The centre and half size of the box between two corners. A corner at 0 stays exactly
 /// at 0 (`(0 + m) / 2 - (m - 0) / 2 == 0`).
-fn center_half(min: [f64; 3], max: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+pub(crate) fn center_half(min: [f64; 3], max: [f64; 3]) -> ([f64; 3], [f64; 3]) {
     (std::array::from_fn(|i| (min[i] + max[i]) * 0.5), std::array::from_fn(|i| (max[i] - min[i]) * 0.5))
 }
 

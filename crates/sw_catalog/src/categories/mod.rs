@@ -4,7 +4,9 @@ mod containers;
 mod furniture;
 mod industrial;
 mod kit;
+mod parts;
 mod robot_bases;
+mod shapes;
 mod storage;
 
 use crate::Category;

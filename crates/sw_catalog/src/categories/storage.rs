@@ -6,6 +6,7 @@ use super::kit::{
     Axis, DARK, FRAME_PAINT, INK, LABEL_WHITE, OFFICE_PAINT, RACK_BLUE, RACK_ORANGE, SAFETY_YELLOW, STEEL, WOOD,
     decal_between, fit, ordered, pick, shade, slab, strut,
 };
+use super::parts::{Hinge, MOVING_GAP, carcass, decal_on, hinged_door};
 use crate::{Category, ParamDef, Params};
 
 pub(crate) const SHELF: Category = Category {
@@ -219,8 +220,8 @@ pub(crate) const CABINET: Category = Category {
     build: build_cabinet,
 };
 
-/// A closed carcass on a recessed plinth; the doors are drawn on the front (closed, not
-/// articulated), with bar handles.
+/// An open-fronted carcass on a recessed plinth with inner shelves, closed by one or two
+/// hinged doors (MuJoCo hinge joints, opening outwards up to 100°) with bar handles.
 fn build_cabinet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
     let pl = fit(b, "cabinet plinth", p.get("plinth"), 0.0, h * 0.1);
@@ -230,9 +231,19 @@ fn build_cabinet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let plinth = b.material("plinth", pick(rng, DARK), false);
     let handles = b.material("handles", if rng.chance(0.6) { pick(rng, STEEL) } else { pick(rng, DARK) }, false);
     let (hw, hd) = (w / 2.0, d / 2.0);
+    let dt = 0.018; // door leaf
+    let t = 0.018; // carcass panels
+    let opening = hd - dt - MOVING_GAP;
 
     slab(b, [-(hw - 0.02), -hd, 0.0], [hw - 0.02, hd - 0.04, pl], plinth);
-    let top = slab(b, [-hw, -hd, pl], [hw, hd, h], body);
+    let top = carcass(b, -hw, hw, -hd, opening, pl, h, t, body);
+    // Inner shelves about every 40 cm (collision too: a robot can put things inside).
+    let inner = h - pl - 2.0 * t;
+    let shelves = ((inner / 0.4).round() as usize).saturating_sub(1);
+    for k in 1..=shelves {
+        let z = pl + t + inner * k as f64 / (shelves + 1) as f64;
+        slab(b, [-hw + t * 0.5, -hd + t * 0.75, z - t], [hw - t * 0.5, opening - 0.01, z], body);
+    }
 
     let n_doors = if w < 0.6 { 1 } else { 2 };
     let (edge, gap) = (0.006, 0.004);
@@ -240,30 +251,36 @@ fn build_cabinet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (z0, z1) = (pl + edge, h - edge);
     let handle_h = (0.15f64).min((z1 - z0) * 0.3);
     let handle_z = (1.0f64).min(z1 - 0.12 - handle_h / 2.0).max(z0 + handle_h / 2.0 + 0.02);
+    let vents = rng.chance(0.35) && z1 - z0 > 0.5;
+    let vent_m = vents.then(|| b.material("vents", shade(INK, 3.0), false));
+    let leaf_mass = door_w * (z1 - z0) * dt * 650.0;
     for i in 0..n_doors {
         let x0 = -hw + edge + i as f64 * (door_w + gap);
-        decal_between(b, [x0, hd - 0.001, z0], [x0 + door_w, hd + 0.002, z1], doors);
-        // The handle sits at the door's free edge: the right one of a single door.
-        let hx = if n_doors == 1 || i == 0 { x0 + door_w - 0.045 } else { x0 + 0.045 };
-        decal_between(
+        // A single door turns on its -X edge; a pair on their outer edges.
+        let hinge = if i == 0 { Hinge::MinX } else { Hinge::MaxX };
+        let link = hinged_door(
             b,
-            [hx - 0.008, hd + 0.002, handle_z - handle_h / 2.0],
-            [hx + 0.008, hd + 0.0045, handle_z + handle_h / 2.0],
+            &format!("door_{}", i + 1),
+            hinge,
+            [x0, x0 + door_w],
+            [z0, z1],
+            hd - dt,
+            dt,
+            doors,
             handles,
+            handle_z,
+            leaf_mass,
         );
-    }
-    // Ventilation louvres low on the doors of some cabinets.
-    if rng.chance(0.35) && z1 - z0 > 0.5 {
-        let vents = b.material("vents", shade(INK, 3.0), false);
-        for i in 0..n_doors {
-            let xc = -hw + edge + i as f64 * (door_w + gap) + door_w / 2.0;
+        // Ventilation louvres low on the door, in the door's frame.
+        if let Some(m) = vent_m {
+            let xc = if hinge == Hinge::MinX { door_w / 2.0 } else { -door_w / 2.0 };
             let lw = (door_w * 0.5).min(0.25);
             for k in 0..4 {
-                let z = z0 + 0.08 + k as f64 * 0.025;
-                decal_between(b, [xc - lw / 2.0, hd + 0.002, z], [xc + lw / 2.0, hd + 0.003, z + 0.008], vents);
+                let z = 0.08 + k as f64 * 0.025;
+                decal_on(b, link, [xc - lw / 2.0, dt / 2.0, z], [xc + lw / 2.0, dt / 2.0 + 0.001, z + 0.008], m);
             }
         }
     }
-    b.surface("top", top, [-hw, -hd], [hw, hd], None);
+    b.surface("top", top, [-hw + t / 2.0, -hd], [hw - t / 2.0, opening], None);
     0.0
 }
