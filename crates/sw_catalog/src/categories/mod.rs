@@ -1,5 +1,6 @@
 //! The categories, one module per family. `ALL` is the registry, in a stable order.
 
+mod blocks;
 mod containers;
 mod furniture;
 mod industrial;
@@ -8,6 +9,7 @@ mod parts;
 mod robot_bases;
 mod shapes;
 mod storage;
+mod tableware;
 
 use crate::Category;
 
@@ -27,4 +29,14 @@ pub(crate) static ALL: &[Category] = &[
     industrial::MACHINE,
     robot_bases::PEDESTAL,
     robot_bases::MOBILE_CART,
+    tableware::MUG,
+    tableware::CUP,
+    tableware::PLATE,
+    tableware::BOWL,
+    tableware::BOTTLE,
+    tableware::DRINK_CAN,
+    tableware::TRAY,
+    blocks::CUBE,
+    blocks::CYLINDER,
+    blocks::SPHERE,
 ];
