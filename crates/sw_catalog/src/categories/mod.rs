@@ -5,6 +5,7 @@ mod containers;
 mod furniture;
 mod industrial;
 mod kit;
+mod office;
 mod parts;
 mod robot_bases;
 mod shapes;
@@ -36,6 +37,10 @@ pub(crate) static ALL: &[Category] = &[
     tableware::BOTTLE,
     tableware::DRINK_CAN,
     tableware::TRAY,
+    office::DESK,
+    office::FILING_CABINET,
+    office::WHITEBOARD,
+    office::WATER_COOLER,
     blocks::CUBE,
     blocks::CYLINDER,
     blocks::SPHERE,
