@@ -1,11 +1,13 @@
 //! Boxes, crates, bins, pallets: the things that get stacked and carried.
 
-use sw_geom::{AssetBuilder, PlacementKind, Rng};
+use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng};
 
 use super::kit::{
     CARDBOARD, INK, LABEL_WHITE, PLASTIC, WOOD, block, collider_between, decal, decal_between, fit, ordered, pick,
     shade, slab,
 };
+use super::parts::{round_collider, vessel_collider};
+use super::shapes::{ROUND, revolve};
 use crate::{Category, ParamDef, Params};
 
 pub(crate) const CARDBOARD_BOX: Category = Category {
@@ -278,4 +280,145 @@ fn build_pallet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     }
     b.surface("top", top, [-hw, -hd], [hw, hd], None);
     25.0 * (w * d / 0.96) * (h / 0.144)
+}
+
+pub(crate) const DRUM: Category = Category {
+    name: "drum",
+    display: "drum",
+    synonyms: &[
+        "barrel",
+        "oil drum",
+        "steel drum",
+        "plastic drum",
+        "chemical drum",
+        "55 gallon drum",
+        "oil barrel",
+        "keg",
+    ],
+    tags: &["warehouse", "industrial", "garage", "logistics", "container", "round", "heavy"],
+    placement: PlacementKind::Floor,
+    params: &[
+        ParamDef::new("width", 0.585, 0.35, 0.7, 0.04, "diameter"),
+        ParamDef::new("depth", 0.585, 0.35, 0.7, 0.04, "diameter (as width)"),
+        ParamDef::new("height", 0.88, 0.45, 1.0, 0.05, "floor to the top chime"),
+        ParamDef::new("fill", 0.5, 0.0, 1.0, 0.8, "how full (for the mass)"),
+    ],
+    movable: true,
+    vary_per_instance: true,
+    build: build_drum,
+};
+
+/// A steel drum with two rolling hoops and chimes, or a blue plastic drum with a
+/// moulded rim; bungs on the lid. The lid is the support surface.
+fn build_drum(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    let (w, h) = (p.get("width"), p.get("height"));
+    let r = w / 2.0;
+    let plastic = rng.chance(0.3);
+    let rgba = if plastic {
+        [0.1, 0.3, 0.7, 1.0]
+    } else {
+        pick(
+            rng,
+            &[
+                [0.12, 0.3, 0.6, 1.0],
+                [0.7, 0.1, 0.08, 1.0],
+                [0.12, 0.12, 0.13, 1.0],
+                [0.2, 0.45, 0.25, 1.0],
+                [0.9, 0.7, 0.1, 1.0],
+            ],
+        )
+    };
+    let body = b.material("body", rgba, true);
+    let rim = b.material("rims", shade(rgba, 0.8), false);
+    let bung = b.material("bungs", if plastic { shade(rgba, 0.6) } else { [0.6, 0.61, 0.62, 1.0] }, false);
+    let rb = r - 0.008; // shell inside the hoops and chimes
+    let chime = (h * 0.02).min(0.015);
+    b.visual_mesh_on(
+        0,
+        &revolve(&[[0.0, chime], [rb, chime], [rb, h - chime], [0.0, h - chime]], ROUND),
+        Pose::IDENTITY,
+        body,
+    );
+    // Chimes (top and bottom rims) and, on steel drums, two rolling hoops.
+    let mut bands = vec![(0.0, chime + 0.002), (h - chime - 0.002, h)];
+    if !plastic {
+        for f in [0.33, 0.67] {
+            bands.push((h * f - 0.012, h * f + 0.012));
+        }
+    }
+    for (z0, z1) in bands {
+        let ring = revolve(&[[rb - 0.004, z0], [r, z0], [r, z1], [rb - 0.004, z1]], ROUND);
+        b.visual_mesh_on(0, &ring, Pose::IDENTITY, rim);
+    }
+    // Bungs on the lid, inside the chime.
+    for (x, rr) in [(-r * 0.55, 0.03), (r * 0.6, 0.018)] {
+        let m = revolve(
+            &[[0.0, h - chime - 0.001], [rr, h - chime - 0.001], [rr, h - chime + 0.008], [0.0, h - chime + 0.008]],
+            ROUND,
+        );
+        b.visual_mesh_on(0, &m, Pose::from_pos([x, 0.0, 0.0]), bung);
+    }
+    let top = round_collider(b, 0, [0.0, 0.0], r, 0.0, h);
+    let a = r / std::f64::consts::SQRT_2 - 1e-6;
+    b.surface("top", top, [-a, -a], [a, a], None);
+    let empty = if plastic { 9.0 } else { 18.0 } * (w * w * h) / (0.585 * 0.585 * 0.88);
+    empty + 180.0 * (w * w * h) / (0.585 * 0.585 * 0.88) * p.get("fill")
+}
+
+pub(crate) const TRASH_CAN: Category = Category {
+    name: "trash_can",
+    display: "trash can",
+    synonyms: &[
+        "garbage can",
+        "waste bin",
+        "wastebasket",
+        "waste basket",
+        "rubbish bin",
+        "dustbin",
+        "garbage bin",
+        "recycling bin",
+        "trash bin",
+    ],
+    tags: &["office", "kitchen", "retail", "hospital", "container", "round", "open", "small"],
+    placement: PlacementKind::Floor,
+    params: &[
+        ParamDef::new("width", 0.4, 0.25, 0.6, 0.12, "rim diameter"),
+        ParamDef::new("depth", 0.4, 0.25, 0.6, 0.12, "rim diameter (as width)"),
+        ParamDef::new("height", 0.65, 0.3, 1.0, 0.15, "floor to rim"),
+    ],
+    movable: true,
+    vary_per_instance: true,
+    build: build_trash_can,
+};
+
+/// A tapered open can with a rolled rim; things can be dropped inside.
+fn build_trash_can(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    let (w, h) = (p.get("width"), p.get("height"));
+    let r = w / 2.0;
+    let rb = r * rng.range(0.78, 0.9);
+    let t = 0.006;
+    let rgba = pick(
+        rng,
+        &[
+            [0.2, 0.2, 0.22, 1.0],
+            [0.6, 0.62, 0.64, 1.0],
+            [0.12, 0.35, 0.65, 1.0],
+            [0.2, 0.5, 0.25, 1.0],
+            [0.9, 0.9, 0.88, 1.0],
+        ],
+    );
+    let body = b.material("body", rgba, true);
+    let rim = b.material("rim", shade(rgba, 0.75), false);
+    let floor = 0.01;
+    let mesh = revolve(
+        &[[0.0, 0.0], [rb, 0.0], [r - 0.006, h - 0.02], [r - 0.006 - t, h - 0.02], [rb - t, floor], [0.0, floor]],
+        ROUND,
+    );
+    b.visual_mesh_on(0, &mesh, Pose::IDENTITY, body);
+    let band = revolve(&[[r - 0.012, h - 0.025], [r, h - 0.025], [r, h], [r - 0.012, h]], ROUND);
+    b.visual_mesh_on(0, &band, Pose::IDENTITY, rim);
+    let inside = vessel_collider(b, [0.0, 0.0], rb, r, 0.012, floor, 0.0, h, 16);
+    let a = inside.half.min(rb * 0.65);
+    b.surface("inside", inside.floor, [-a, -a], [a, a], None);
+    (std::f64::consts::PI * r * (r + 2.0 * h) * t * 950.0).max(0.3)
 }

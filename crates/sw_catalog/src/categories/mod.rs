@@ -5,6 +5,7 @@ mod containers;
 mod furniture;
 mod industrial;
 mod kit;
+mod kitchen;
 mod office;
 mod parts;
 mod robot_bases;
@@ -41,7 +42,17 @@ pub(crate) static ALL: &[Category] = &[
     office::FILING_CABINET,
     office::WHITEBOARD,
     office::WATER_COOLER,
+    containers::DRUM,
+    containers::TRASH_CAN,
+    furniture::DINING_TABLE,
+    furniture::STOOL,
+    furniture::SOFA,
     blocks::CUBE,
     blocks::CYLINDER,
     blocks::SPHERE,
+    kitchen::COUNTER,
+    kitchen::SINK,
+    kitchen::FRIDGE,
+    kitchen::STOVE,
+    kitchen::MICROWAVE,
 ];
