@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use sw_pipeline::{Event, Options, Outcome};
-use sw_plan::{Report, Status, Verification};
+use sw_plan::{AnomalyKind, AnomalyRequest, Report, Status, Verification};
 
 use crate::Failure;
 use crate::output::{print, print_json};
@@ -28,6 +28,20 @@ pub(crate) struct GenerateArgs {
     /// Skip the MuJoCo verification.
     #[arg(long)]
     no_verify: bool,
+    /// Industrial rules profile to check instead of the room kind's (warehouse,
+    /// industrial, laboratory, data_centre, kitchen, commercial, agricultural, general).
+    #[arg(long)]
+    rules: Option<String>,
+    /// Inject labelled anomalies: overlap, scale, misplacement, floating, rule-violation
+    /// (comma separated, or `all`).
+    #[arg(long, value_delimiter = ',')]
+    anomaly: Option<Vec<String>>,
+    /// Fraction of eligible objects to corrupt with --anomaly.
+    #[arg(long, default_value_t = 0.2)]
+    anomaly_rate: f64,
+    /// Write N structurally different layouts of the prompt into DIR/variation_1 … N.
+    #[arg(long)]
+    variations: Option<u32>,
     /// Print one JSON document instead of progress and a summary.
     #[arg(long)]
     json: bool,
@@ -87,7 +101,20 @@ impl Progress {
 
 pub(crate) fn run(a: GenerateArgs) -> Result<u8, Failure> {
     let prompt = a.prompt.to_str().ok_or_else(|| Failure::input("the prompt is not valid UTF-8 text"))?.to_string();
-    let opts = Options { seed: a.seed, verify: !a.no_verify, robots: a.robot.clone() };
+    let anomaly = match &a.anomaly {
+        None => None,
+        Some(kinds) => Some(AnomalyRequest { kinds: parse_anomalies(kinds)?, rate: a.anomaly_rate }),
+    };
+    let opts = Options {
+        seed: a.seed,
+        verify: !a.no_verify,
+        robots: a.robot.clone(),
+        rules_profile: a.rules.clone(),
+        anomaly,
+    };
+    if let Some(n) = a.variations {
+        return run_variations(&prompt, &a.out, n, &opts, a.json);
+    }
     let mut progress = Progress::new(a.json);
     let outcome =
         sw_pipeline::generate(&prompt, &a.out, &opts, &mut |e| progress.event(e)).map_err(|e| match e.exit_code() {
@@ -110,6 +137,65 @@ pub(crate) fn run(a: GenerateArgs) -> Result<u8, Failure> {
         eprintln!("error: the scene failed verification; see {}", outcome.out_dir.join("report.json").display());
     }
     Ok(code)
+}
+
+fn parse_anomalies(words: &[String]) -> Result<Vec<AnomalyKind>, Failure> {
+    let mut out = Vec::new();
+    for w in words {
+        let kinds: &[AnomalyKind] = match w.trim().to_lowercase().replace('_', "-").as_str() {
+            "overlap" => &[AnomalyKind::Overlap],
+            "scale" => &[AnomalyKind::Scale],
+            "misplacement" => &[AnomalyKind::Misplacement],
+            "floating" => &[AnomalyKind::Floating],
+            "rule-violation" => &[AnomalyKind::RuleViolation],
+            "all" => &[
+                AnomalyKind::Overlap,
+                AnomalyKind::Scale,
+                AnomalyKind::Misplacement,
+                AnomalyKind::Floating,
+                AnomalyKind::RuleViolation,
+            ],
+            other => {
+                return Err(Failure::input(format!(
+                    "unknown anomaly '{other}' (overlap, scale, misplacement, floating, rule-violation, all)"
+                )));
+            }
+        };
+        for k in kinds {
+            if !out.contains(k) {
+                out.push(*k);
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn run_variations(prompt: &str, out: &Path, n: u32, opts: &Options, json: bool) -> Result<u8, Failure> {
+    let mut progress = Progress::new(json);
+    let outcomes = sw_pipeline::generate_variations(prompt, out, n, opts, &mut |e| progress.event(e)).map_err(|e| {
+        match e.exit_code() {
+            2 => Failure::input(e.to_string()),
+            _ => Failure::internal(e.to_string()),
+        }
+    })?;
+    let ok = outcomes.iter().all(|o| sw_pipeline::succeeded(&o.report));
+    if json {
+        let list: Vec<serde_json::Value> = outcomes
+            .iter()
+            .map(|o| serde_json::json!({ "status": o.report.status, "out_dir": o.out_dir, "seed": o.report.seed }))
+            .collect();
+        print_json(&serde_json::json!({ "variations": list, "index": out.join("variations.json") }));
+    } else {
+        for o in &outcomes {
+            print(&format!(
+                "{}  seed {}  {}",
+                o.out_dir.join("scene.xml").display(),
+                o.report.seed,
+                verification_line(&o.report)
+            ));
+        }
+    }
+    Ok(if ok { 0 } else { 1 })
 }
 
 fn summary(o: &Outcome) -> String {
@@ -136,6 +222,13 @@ fn summary(o: &Outcome) -> String {
     }
     for l in &r.left_out {
         lines.push(format!("left out {} of {} {}: {}", l.requested - l.placed, l.requested, l.group, l.reason));
+    }
+    for v in &r.violations {
+        let how = if v.requested { "(as asked)" } else { "VIOLATED" };
+        lines.push(format!("rule     {} {how}: {} ({})", v.rule, v.message, v.standard));
+    }
+    for a in &o.layout.anomalies {
+        lines.push(format!("anomaly  {} {:?}: {}", a.object, a.kind, a.description));
     }
     for w in &r.warnings {
         lines.push(format!("warning  {}", w.message));
@@ -173,7 +266,12 @@ fn describe(v: &Verification) -> String {
     } else {
         format!("FAILED in {}: {}", v.engine, v.failures.join("; "))
     };
-    format!("{head} · compiled · {deep} contacts deeper than 1 mm at t = 0 · {settle}")
+    let expected = if v.expected.is_empty() {
+        String::new()
+    } else {
+        format!(" · {} findings explained by the injected anomalies", v.expected.len())
+    };
+    format!("{head} · compiled · {deep} contacts deeper than 1 mm at t = 0 · {settle}{expected}")
 }
 
 pub(crate) fn validate(dir: &Path, json: bool) -> Result<u8, Failure> {

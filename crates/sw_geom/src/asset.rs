@@ -250,6 +250,52 @@ impl Asset {
     pub fn param(&self, name: &str) -> Option<f64> {
         self.params.iter().find(|(n, _)| n == name).map(|(_, v)| *v)
     }
+
+    /// The same asset scaled uniformly by `factor` about its origin (the centre of its
+    /// footprint on the floor, so it still stands there). Mass scales with volume.
+    pub fn scaled(&self, factor: f64) -> Asset {
+        let f = if factor.is_finite() && factor > 0.0 { factor } else { 1.0 };
+        let scale3 = |p: [f64; 3]| p.map(|v| v * f);
+        let mut a = self.clone();
+        for link in &mut a.links {
+            link.pose.pos = scale3(link.pose.pos);
+            for v in &mut link.visuals {
+                for p in &mut v.mesh.vertices {
+                    *p = p.map(|c| (f64::from(c) * f) as f32);
+                }
+            }
+            for c in &mut link.collisions {
+                c.pose.pos = scale3(c.pose.pos);
+                c.shape = match c.shape {
+                    Shape::Box { half } => Shape::Box { half: scale3(half) },
+                    Shape::Cylinder { radius, half_height } => {
+                        Shape::Cylinder { radius: radius * f, half_height: half_height * f }
+                    }
+                    Shape::Sphere { radius } => Shape::Sphere { radius: radius * f },
+                    Shape::Capsule { radius, half_height } => {
+                        Shape::Capsule { radius: radius * f, half_height: half_height * f }
+                    }
+                };
+            }
+            if let Some(j) = &mut link.joint {
+                j.anchor = scale3(j.anchor);
+                if j.kind == JointKind::Slide {
+                    j.range = j.range.map(|r| r * f);
+                }
+            }
+            link.mass *= f * f * f;
+        }
+        for s in &mut a.surfaces {
+            s.z *= f;
+            s.min = s.min.map(|v| v * f);
+            s.max = s.max.map(|v| v * f);
+            s.clearance = s.clearance.map(|c| c * f);
+        }
+        if let MassModel::Free { mass } = a.mass {
+            a.mass = MassModel::Free { mass: mass * f * f * f };
+        }
+        a
+    }
 }
 
 /// Builds an [`Asset`] from solids: each solid adds a visual mesh (merged per material)
@@ -374,6 +420,21 @@ impl AssetBuilder {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn scaling_keeps_the_asset_on_the_floor_and_scales_mass_with_volume() {
+        let mut b = AssetBuilder::new("box", 1);
+        let m = b.material("m", [1.0; 4], true);
+        b.solid(Shape::Box { half: [0.2, 0.1, 0.15] }, Pose::from_pos([0.0, 0.0, 0.15]), m);
+        b.surface("top", 0.3, [-0.2, -0.1], [0.2, 0.1], None);
+        let a = b.build(PlacementKind::OnSurface, MassModel::Free { mass: 2.0 });
+        let s = a.scaled(2.0);
+        let bounds = s.bounds();
+        assert!(bounds.min[2].abs() < 1e-6 && (bounds.max[2] - 0.6).abs() < 1e-6);
+        assert!((s.surfaces[0].z - 0.6).abs() < 1e-9);
+        assert_eq!(s.mass, MassModel::Free { mass: 16.0 });
+        assert!(s.links[0].visuals[0].mesh.check().is_valid_solid());
+    }
 
     #[test]
     fn builder_merges_visuals_per_material_and_keeps_one_collision_per_solid() {

@@ -124,7 +124,7 @@ fn door_for(kind: RoomKind, wall: Wall, size: &Dims) -> DoorLayout {
 }
 
 /// The keep-clear rectangle in front of the doorway.
-fn door_zone(door: &DoorLayout, size: &Dims) -> Aabb {
+pub(crate) fn door_zone(door: &DoorLayout, size: &Dims) -> Aabb {
     let depth = 1.2f64.min(0.45 * size.depth.min(size.width));
     let (hw, hd) = (size.width / 2.0, size.depth / 2.0);
     let half = door.width / 2.0 + 0.2;

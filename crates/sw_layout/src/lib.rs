@@ -9,6 +9,7 @@
 //! satisfy the object's relations, with seeded variation among equals. When a room whose
 //! size the user did not fix is too small, it grows and the layout starts again.
 
+mod anomaly;
 mod attempt;
 mod floor;
 mod frames;
@@ -17,6 +18,7 @@ pub mod rules;
 mod space;
 mod surface;
 
+pub use anomaly::inject as inject_anomalies;
 use sw_geom::{Aabb, Asset};
 use sw_plan::{LaidOutScene, ScenePlan, Stage, Warning};
 
@@ -76,6 +78,15 @@ pub struct LayoutInput<'a> {
     pub objects: Vec<ObjectItem<'a>>,
     pub robots: Vec<RobotItem>,
     pub seed: u64,
+}
+
+/// Measures a layout against its plan's rules profile (after anomalies were injected, say).
+pub fn check_rules(input: &LayoutInput<'_>, scene: &LaidOutScene) -> Vec<sw_plan::Violation> {
+    let profile = rules::profile(&input.plan.rules_profile).or_else(|| rules::profile("general"));
+    match profile {
+        Some(p) => rules::check(input, scene, &p, &attempt::door_zone(&scene.room.door, &scene.room.size)),
+        None => Vec::new(),
+    }
 }
 
 /// How many times a room may grow by [`GROWTH`] before objects are left out.

@@ -363,7 +363,11 @@ fn chairs_with_nowhere_said_go_to_the_tables() {
     }
     // Both tables get chairs.
     for t in &tables {
-        let n = scene.objects.iter().filter(|c| c.category == "chair" && (c.pos[0] - t.pos[0]).hypot(c.pos[1] - t.pos[1]) < 1.3).count();
+        let n = scene
+            .objects
+            .iter()
+            .filter(|c| c.category == "chair" && (c.pos[0] - t.pos[0]).hypot(c.pos[1] - t.pos[1]) < 1.3)
+            .count();
         assert!(n >= 2, "{} has {n} chairs", t.name);
     }
 }

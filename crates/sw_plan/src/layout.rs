@@ -163,8 +163,17 @@ pub struct LeftOut {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct AnomalyLabel {
+    /// The corrupted object.
     pub object: String,
     pub kind: crate::AnomalyKind,
+    /// Penetration depth (overlap, rule violation), height (floating), distance moved
+    /// (misplacement) or scale factor (scale).
     pub magnitude: f64,
+    /// `m` or `x` (a factor).
     pub unit: String,
+    /// The other object involved (the one overlapped, the equipment whose space is taken).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub with: Option<String>,
+    /// What was done, in words.
+    pub description: String,
 }

@@ -34,4 +34,4 @@ pub use schema::{SchemaFile, schemas};
 pub use validate::{FieldError, MAX_ROBOT_COUNT as MAX_ROBOTS, PlanError, ValidationErrors};
 
 /// The version of the contract types. Written into every document.
-pub const SCHEMA_VERSION: u32 = 1;
+pub const SCHEMA_VERSION: u32 = 2;

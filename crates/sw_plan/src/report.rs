@@ -90,6 +90,9 @@ pub struct Verification {
     pub passed: bool,
     /// One line per failed check.
     pub failures: Vec<String>,
+    /// Findings explained by injected anomalies (expected, so they do not fail the scene).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub expected: Vec<String>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]

@@ -17,11 +17,20 @@ pub struct VerifyOptions {
     pub move_threshold: f64,
     /// Instance names of the robots; contacts and joints with these prefixes are theirs.
     pub robots: Vec<String>,
+    /// Bodies whose contacts and motion are expected (injected anomalies): reported in
+    /// `expected`, not as failures.
+    pub expected_bodies: Vec<String>,
 }
 
 impl Default for VerifyOptions {
     fn default() -> Self {
-        Self { contact_threshold: 0.001, settle_seconds: 2.0, move_threshold: 0.01, robots: Vec::new() }
+        Self {
+            contact_threshold: 0.001,
+            settle_seconds: 2.0,
+            move_threshold: 0.01,
+            robots: Vec::new(),
+            expected_bodies: Vec::new(),
+        }
     }
 }
 
@@ -46,7 +55,9 @@ pub fn verify_file(path: &Path, opts: &VerifyOptions) -> Verification {
         robots: Vec::new(),
         passed: false,
         failures: Vec::new(),
+        expected: Vec::new(),
     };
+    let is_expected = |name: &str| opts.expected_bodies.iter().any(|b| b == name);
     let model = match MjModel::from_xml(path) {
         Ok(m) => m,
         Err(e) => {
@@ -113,7 +124,13 @@ pub fn verify_file(path: &Path, opts: &VerifyOptions) -> Verification {
         }
     }
     deep.sort_by(|a, b| b.depth_m.total_cmp(&a.depth_m).then(a.body1.cmp(&b.body1)));
-    if !deep.is_empty() {
+    for d in deep.iter().filter(|d| is_expected(&d.body1) || is_expected(&d.body2)) {
+        v.expected.push(format!("{}–{} {:.1} mm deep at t = 0", d.body1, d.body2, d.depth_m * 1000.0));
+    }
+    let unexpected: Vec<&DeepContact> =
+        deep.iter().filter(|d| !is_expected(&d.body1) && !is_expected(&d.body2)).collect();
+    if !unexpected.is_empty() {
+        let deep = &unexpected;
         let list: Vec<String> =
             deep.iter().take(5).map(|d| format!("{}–{} {:.1} mm", d.body1, d.body2, d.depth_m * 1000.0)).collect();
         v.failures.push(format!(
@@ -205,7 +222,12 @@ pub fn verify_file(path: &Path, opts: &VerifyOptions) -> Verification {
         }
     }
     let unstable = nan || !engine_warnings.is_empty();
-    if !moved.is_empty() {
+    for m in moved.iter().filter(|m| is_expected(&m.body)) {
+        v.expected.push(format!("{} moved {:.1} cm in the settle", m.body, m.displacement_m * 100.0));
+    }
+    let unexpected_moves: Vec<&MovedBody> = moved.iter().filter(|m| !is_expected(&m.body)).collect();
+    if !unexpected_moves.is_empty() {
+        let moved = &unexpected_moves;
         let list: Vec<String> =
             moved.iter().take(5).map(|m| format!("{} {:.1} cm", m.body, m.displacement_m * 100.0)).collect();
         v.failures.push(format!(
