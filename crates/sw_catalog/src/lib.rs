@@ -107,10 +107,34 @@ pub fn generate(req: &AssetRequest) -> Result<Asset, CatalogError> {
     b.params(params.values().to_vec());
     let mass = (cat.build)(&params, &mut rng, &mut b);
     let mut asset = b.build(cat.placement, if cat.movable { MassModel::Free { mass } } else { MassModel::Static });
+    if let MassModel::Free { mass } = asset.mass {
+        asset.mass = MassModel::Free { mass: mass.max(inertia_floor_mass(&asset)) };
+    }
     if let Some(rgba) = req.color {
         for m in asset.materials.iter_mut().filter(|m| m.recolorable) {
             m.rgba = rgba;
         }
     }
     Ok(asset)
+}
+
+/// Smallest principal inertia a free body may have, kg·m². MJCF numbers are written with
+/// 6 decimals, and the inertia of a free body comes from its collision box and mass: a
+/// thin pen's 1e-7 would be written as 0, which MuJoCo refuses.
+const MIN_INERTIA: f64 = 1.2e-6;
+
+/// The mass below which the smallest principal inertia of the root link's collision box
+/// would fall under [`MIN_INERTIA`].
+fn inertia_floor_mass(a: &Asset) -> f64 {
+    let Some(root) = a.links.first() else {
+        return 0.0;
+    };
+    let b = root.collisions.iter().fold(sw_geom::Aabb::EMPTY, |acc, c| acc.union(&c.aabb()));
+    if b.is_empty() {
+        return 0.0;
+    }
+    let s = b.size();
+    let pairs = [s[1] * s[1] + s[2] * s[2], s[0] * s[0] + s[2] * s[2], s[0] * s[0] + s[1] * s[1]];
+    let least = pairs.iter().copied().fold(f64::INFINITY, f64::min);
+    if least > 0.0 { MIN_INERTIA * 12.0 / least } else { 0.0 }
 }

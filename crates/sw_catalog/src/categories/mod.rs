@@ -2,6 +2,7 @@
 
 mod blocks;
 mod containers;
+mod electronics;
 mod furniture;
 mod industrial;
 mod kit;
@@ -10,6 +11,7 @@ mod office;
 mod parts;
 mod robot_bases;
 mod shapes;
+mod stationery;
 mod storage;
 mod tableware;
 
@@ -55,4 +57,13 @@ pub(crate) static ALL: &[Category] = &[
     kitchen::FRIDGE,
     kitchen::STOVE,
     kitchen::MICROWAVE,
+    electronics::MONITOR,
+    electronics::LAPTOP,
+    electronics::KEYBOARD,
+    electronics::PRINTER,
+    electronics::DESK_LAMP,
+    electronics::PHONE,
+    stationery::BOOK,
+    stationery::PEN,
+    stationery::STAPLER,
 ];
