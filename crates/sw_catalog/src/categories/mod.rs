@@ -66,4 +66,7 @@ pub(crate) static ALL: &[Category] = &[
     stationery::BOOK,
     stationery::PEN,
     stationery::STAPLER,
+    storage::BOOKSHELF,
+    storage::GONDOLA_SHELF,
+    storage::LOCKER,
 ];

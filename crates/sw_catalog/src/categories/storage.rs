@@ -21,8 +21,6 @@ pub(crate) const SHELF: Category = Category {
         "metal shelf",
         "steel shelf",
         "wire shelf",
-        "bookshelf",
-        "bookcase",
         "shelving rack",
     ],
     tags: &["storage", "tall", "warehouse", "office", "lab", "kitchen", "retail", "furniture"],
@@ -279,6 +277,206 @@ fn build_cabinet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
                 let z = 0.08 + k as f64 * 0.025;
                 decal_on(b, link, [xc - lw / 2.0, dt / 2.0, z], [xc + lw / 2.0, dt / 2.0 + 0.001, z + 0.008], m);
             }
+        }
+    }
+    b.surface("top", top, [-hw + t / 2.0, -hd], [hw - t / 2.0, opening], None);
+    0.0
+}
+
+pub(crate) const BOOKSHELF: Category = Category {
+    name: "bookshelf",
+    display: "bookshelf",
+    synonyms: &["bookcase", "book shelf", "book case", "wooden shelf", "display shelf", "wall shelf unit"],
+    tags: &["furniture", "storage", "tall", "office", "home", "classroom"],
+    placement: PlacementKind::AgainstWall,
+    params: &[
+        ParamDef::new("width", 0.8, 0.4, 1.6, 0.15, "along X"),
+        ParamDef::new("depth", 0.3, 0.22, 0.45, 0.1, "along Y"),
+        ParamDef::new("height", 1.8, 0.7, 2.4, 0.12, "floor to top"),
+        ParamDef::new("board", 0.018, 0.012, 0.03, 0.15, "board thickness"),
+    ],
+    movable: false,
+    vary_per_instance: false,
+    build: build_bookshelf,
+};
+
+/// A closed wooden case: sides, top, back, a plinth and shelves about every 33 cm; each
+/// shelf is a surface with clearance to the one above, and the top is one too.
+fn build_bookshelf(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
+    let t = fit(b, "bookshelf board", p.get("board"), 0.005, w * 0.05);
+    let rgba = if rng.chance(0.75) { pick(rng, WOOD) } else { pick(rng, OFFICE_PAINT) };
+    let wood = b.material("wood", rgba, true);
+    let back = b.material("back", shade(rgba, 0.85), false);
+    let (hw, hd) = (w / 2.0, d / 2.0);
+    let bt = 0.006;
+    for (x0, x1) in [(-hw, -hw + t), (hw - t, hw)] {
+        slab(b, [x0, -hd, 0.0], [x1, hd, h], wood);
+    }
+    let top = slab(b, [-hw + t / 2.0, -hd, h - t], [hw - t / 2.0, hd, h], wood);
+    slab(b, [-hw + t / 2.0, -hd, t * 0.5], [hw - t / 2.0, -hd + bt, h - t * 0.5], back);
+    let plinth = (0.07f64).min(h * 0.1);
+    slab(b, [-hw + t / 2.0, hd - 0.03 - t, 0.0], [hw - t / 2.0, hd - 0.03, plinth], wood);
+    let inner = h - t - plinth;
+    let n = ((inner / 0.33).round() as usize).max(2);
+    let step = inner / n as f64;
+    let mut levels = Vec::with_capacity(n);
+    for k in 0..n {
+        let z = plinth + step * k as f64 + t;
+        levels.push(slab(b, [-hw + t / 2.0, -hd + bt / 2.0, z - t], [hw - t / 2.0, hd, z], wood));
+    }
+    for (k, z) in levels.iter().enumerate() {
+        let next = levels.get(k + 1).copied().unwrap_or(h);
+        let clearance = next - t - z;
+        b.surface(&format!("level_{}", k + 1), *z, [-hw + t, -hd + bt], [hw - t, hd], Some(clearance));
+    }
+    b.surface("top", top, [-hw + t / 2.0, -hd], [hw - t / 2.0, hd], None);
+    0.0
+}
+
+pub(crate) const GONDOLA_SHELF: Category = Category {
+    name: "gondola_shelf",
+    display: "gondola shelf",
+    synonyms: &[
+        "gondola",
+        "gondola shelving",
+        "store shelf",
+        "retail shelf",
+        "supermarket shelf",
+        "grocery shelf",
+        "shop shelf",
+    ],
+    tags: &["retail", "storage", "tall", "shop"],
+    placement: PlacementKind::AgainstWall,
+    params: &[
+        ParamDef::new("width", 1.25, 0.66, 1.33, 0.05, "one bay along X"),
+        ParamDef::new("depth", 0.5, 0.35, 0.7, 0.1, "base deck depth along Y, back panel included"),
+        ParamDef::new("height", 1.6, 1.2, 2.4, 0.12, "floor to the top of the back panel"),
+        ParamDef::new("levels", 4.0, 3.0, 6.0, 0.2, "shelves above the base deck"),
+    ],
+    movable: false,
+    vary_per_instance: false,
+    build: build_gondola_shelf,
+};
+
+/// A pegboard back panel on a kick-plate base, a wide base deck and cantilevered shelves
+/// that get shallower towards the top, with price strips on their front edges.
+fn build_gondola_shelf(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
+    let n = p.count("levels").clamp(3, 6);
+    let paint = pick(rng, &[[0.93, 0.93, 0.91, 1.0], [0.25, 0.26, 0.28, 1.0], [0.72, 0.74, 0.76, 1.0]]);
+    let frame = b.material("frame", paint, true);
+    let decks = b.material("decks", shade(paint, 0.95), false);
+    let strips =
+        b.material("price_strips", pick(rng, &[LABEL_WHITE, [0.9, 0.2, 0.15, 1.0], [0.95, 0.8, 0.1, 1.0]]), false);
+    let holes = b.material("pegboard", shade(paint, 0.7), false);
+    let (hw, hd) = (w / 2.0, d / 2.0);
+    let panel = 0.05;
+    slab(b, [-hw, -hd, 0.0], [hw, -hd + panel, h], frame);
+    let base_h = 0.15;
+    let base = slab(b, [-hw, -hd + panel, 0.0], [hw, hd, base_h], decks);
+    decal_between(b, [-hw + 0.01, hd - 0.001, base_h - 0.04], [hw - 0.01, hd + 0.002, base_h - 0.005], strips);
+    let step = (h - base_h) / (n as f64 + 0.6);
+    let dt = 0.02;
+    let mut tops = vec![base];
+    for k in 1..=n {
+        let z = base_h + step * k as f64;
+        let depth = (d - panel) * (1.0 - 0.25 * k as f64 / n as f64);
+        let y1 = -hd + panel + depth;
+        tops.push(slab(b, [-hw + 0.01, -hd + panel, z - dt], [hw - 0.01, y1, z], decks));
+        decal_between(b, [-hw + 0.012, y1 - 0.001, z - 0.04], [hw - 0.012, y1 + 0.002, z - 0.002], strips);
+    }
+    // Pegboard holes on the panel face above the base.
+    let rows = ((h - base_h - 0.1) / 0.1) as usize;
+    for r in 0..rows {
+        let z = base_h + 0.06 + r as f64 * 0.1;
+        decal_between(b, [-hw + 0.03, -hd + panel - 0.0005, z], [hw - 0.03, -hd + panel + 0.001, z + 0.006], holes);
+    }
+    for k in 0..tops.len() {
+        let z = tops[k];
+        let (x0, x1) = if k == 0 { (-hw, hw) } else { (-hw + 0.01, hw - 0.01) };
+        let y1 = if k == 0 { hd } else { -hd + panel + (d - panel) * (1.0 - 0.25 * k as f64 / n as f64) };
+        let clearance = tops.get(k + 1).map(|next| next - dt - z);
+        let name = if k == 0 { "base_deck".to_string() } else { format!("level_{k}") };
+        b.surface(&name, z, [x0, -hd + panel], [x1, y1], clearance);
+    }
+    0.0
+}
+
+pub(crate) const LOCKER: Category = Category {
+    name: "locker",
+    display: "locker",
+    synonyms: &[
+        "lockers",
+        "steel locker",
+        "locker bank",
+        "staff locker",
+        "gym locker",
+        "wardrobe locker",
+        "locker cabinet",
+    ],
+    tags: &["storage", "tall", "office", "workshop", "hospital", "classroom"],
+    placement: PlacementKind::AgainstWall,
+    params: &[
+        ParamDef::new("width", 0.9, 0.3, 1.6, 0.2, "along X, all columns"),
+        ParamDef::new("depth", 0.45, 0.3, 0.6, 0.08, "along Y, doors included"),
+        ParamDef::new("height", 1.8, 0.9, 2.0, 0.06, "floor to top"),
+    ],
+    movable: false,
+    vary_per_instance: false,
+    build: build_locker,
+};
+
+/// Columns about 30 cm wide, each a compartment with a hinged steel door (a joint),
+/// ventilation slots and a handle, on a plinth.
+fn build_locker(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
+    let paint = pick(
+        rng,
+        &[
+            [0.75, 0.77, 0.79, 1.0],
+            [0.2, 0.35, 0.6, 1.0],
+            [0.3, 0.5, 0.35, 1.0],
+            [0.85, 0.3, 0.15, 1.0],
+            [0.3, 0.31, 0.33, 1.0],
+        ],
+    );
+    let body = b.material("body", shade(paint, 0.9), true);
+    let doors = b.material("doors", paint, true);
+    let handles = b.material("handles", pick(rng, DARK), false);
+    let vents = b.material("vents", shade(INK, 2.0), false);
+    let (hw, hd) = (w / 2.0, d / 2.0);
+    let dt = 0.02;
+    let opening = hd - dt - MOVING_GAP;
+    let t = 0.012;
+    let pl = 0.08f64.min(h * 0.08);
+    slab(b, [-hw + 0.01, -hd, 0.0], [hw - 0.01, opening - 0.02, pl], body);
+    let top = carcass(b, -hw, hw, -hd, opening, pl, h, t, body);
+    let n = ((w / 0.3).round() as usize).max(1);
+    let cw = w / n as f64;
+    for k in 1..n {
+        let x = -hw + cw * k as f64;
+        slab(b, [x - t / 2.0, -hd + t * 0.75, pl + t * 0.75], [x + t / 2.0, opening, h - t * 0.75], body);
+    }
+    for k in 0..n {
+        let x0 = -hw + cw * k as f64 + 0.003;
+        let x1 = x0 + cw - 0.006;
+        let link = hinged_door(
+            b,
+            &format!("door_{}", k + 1),
+            Hinge::MinX,
+            [x0, x1],
+            [pl + 0.003, h - 0.003],
+            hd - dt,
+            dt,
+            doors,
+            handles,
+            1.1,
+            (cw * h * 8.0).max(1.0),
+        );
+        for s in 0..5 {
+            let z = h - pl - 0.15 - s as f64 * 0.02;
+            decal_on(b, link, [cw * 0.3, dt / 2.0, z], [cw * 0.7, dt / 2.0 + 0.001, z + 0.008], vents);
         }
     }
     b.surface("top", top, [-hw + t / 2.0, -hd], [hw - t / 2.0, opening], None);
