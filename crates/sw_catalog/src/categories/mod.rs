@@ -7,6 +7,7 @@ mod furniture;
 mod industrial;
 mod kit;
 mod kitchen;
+mod lab;
 mod office;
 mod parts;
 mod robot_bases;
@@ -69,4 +70,9 @@ pub(crate) static ALL: &[Category] = &[
     storage::BOOKSHELF,
     storage::GONDOLA_SHELF,
     storage::LOCKER,
+    lab::FUME_HOOD,
+    lab::MICROSCOPE,
+    lab::CENTRIFUGE,
+    lab::TEST_TUBE_RACK,
+    lab::BEAKER,
 ];
