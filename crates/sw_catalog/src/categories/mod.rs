@@ -1,6 +1,7 @@
 //! The categories, one module per family. `ALL` is the registry, in a stable order.
 
 mod blocks;
+mod building;
 mod containers;
 mod electronics;
 mod furniture;
@@ -11,6 +12,7 @@ mod lab;
 mod office;
 mod parts;
 mod robot_bases;
+mod safety;
 mod shapes;
 mod stationery;
 mod storage;
@@ -75,4 +77,13 @@ pub(crate) static ALL: &[Category] = &[
     lab::CENTRIFUGE,
     lab::TEST_TUBE_RACK,
     lab::BEAKER,
+    safety::FIRE_EXTINGUISHER,
+    safety::EYEWASH_STATION,
+    safety::SAFETY_FENCE,
+    safety::WELDING_SCREEN,
+    safety::TRAFFIC_CONE,
+    building::DOOR,
+    building::ROLL_UP_DOOR,
+    building::WINDOW,
+    building::LADDER,
 ];
