@@ -184,8 +184,6 @@ pub(crate) const ELECTRICAL_PANEL: Category = Category {
         "electrical cabinet",
         "electric panel",
         "electrical enclosure",
-        "switchboard",
-        "switchgear",
         "switch cabinet",
         "distribution board",
         "distribution panel",

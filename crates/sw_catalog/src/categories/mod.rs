@@ -3,6 +3,7 @@
 mod blocks;
 mod building;
 mod containers;
+mod datacentre;
 mod electronics;
 mod furniture;
 mod industrial;
@@ -86,4 +87,9 @@ pub(crate) static ALL: &[Category] = &[
     building::ROLL_UP_DOOR,
     building::WINDOW,
     building::LADDER,
+    datacentre::SERVER_RACK,
+    datacentre::SWITCHGEAR,
+    datacentre::TRANSFORMER,
+    datacentre::COOLING_UNIT,
+    datacentre::CABLE_TRAY,
 ];
