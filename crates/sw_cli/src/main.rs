@@ -20,6 +20,9 @@ use clap::{Parser, Subcommand};
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// A directory of MJCF/URDF robots to register (repeatable; also SCENEWRIGHT_ROBOTS).
+    #[arg(long, global = true, value_name = "DIR")]
+    robots_dir: Vec<PathBuf>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -111,6 +114,9 @@ fn main() -> ExitCode {
         eprintln!("error: interrupted; no package was written");
         std::process::exit(130);
     });
+    if !cli.robots_dir.is_empty() {
+        sw_robots::configure(sw_robots::Config { packs_dir: None, user_dirs: cli.robots_dir.clone() });
+    }
     let result = match cli.command {
         Command::Generate(a) => cmd_generate::run(a),
         Command::Validate { dir, json } => cmd_generate::validate(&dir, json),

@@ -931,10 +931,16 @@ fn validate_reports_a_box_sunk_into_the_floor() {
 fn robots_list_json_names_the_builtin_robots() {
     let run = scenewright(["robots", "list", "--json"]);
     run.expect_code(0, "robots list --json");
-    let names = texts(&run.json(), "name");
-    for r in ["ur5e", "turtlebot3"] {
+    let names = texts(&run.json()["robots"], "name");
+    for r in ["ur5e", "ur10e", "panda", "kinova_gen3", "turtlebot3", "mobile_manipulator"] {
         assert!(names.iter().any(|n| n == r), "robots list lacks {r}: {names:?}");
     }
+    // The test set-up fetches the robot packs; they are listed with their licences.
+    for r in ["robosuite_panda", "menagerie_ur5e"] {
+        assert!(names.iter().any(|n| n == r), "robots list lacks the pack robot {r}: {names:?}");
+    }
+    let packs = run.json()["packs"].clone();
+    assert!(packs.as_array().is_some_and(|p| p.len() == 2 && p.iter().all(|x| x["present"] == true)), "{packs}");
     let run = scenewright(["robots", "list"]);
     run.expect_code(0, "robots list");
     assert!(run.stdout.contains("ur5e") && run.stdout.contains("turtlebot3"), "{}", run.describe());

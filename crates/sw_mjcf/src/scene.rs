@@ -7,7 +7,8 @@ use std::collections::BTreeMap;
 use sw_geom::{Aabb, Asset, Link, MassModel, Pose, Shape, fnv1a, write_stl};
 use sw_plan::{LaidOutScene, PlacedObject, Wall};
 
-use crate::merge::{MERGED_SECTIONS, MergeError, PreparedRobot, parse_list, prepare_robot};
+use crate::merge::{MERGED_SECTIONS, parse_list, prepare_robot};
+use crate::robot::{MergeError, PreparedRobot, RobotFile, RobotSource};
 use crate::xml::{Element, num, nums};
 
 /// Simulation timestep of generated scenes, s.
@@ -17,9 +18,7 @@ pub const TIMESTEP: f64 = 0.002;
 #[derive(Debug, Clone)]
 pub struct RobotInput<'a> {
     pub name: &'a str,
-    /// Where the MJCF came from, for error messages ("built-in ur5e").
-    pub source: &'a str,
-    pub mjcf: &'a str,
+    pub model: &'a RobotSource,
 }
 
 /// Everything the writer needs.
@@ -47,6 +46,10 @@ pub struct SceneFiles {
     pub scene_xml: String,
     pub scene_only_xml: String,
     pub meshes: Vec<MeshFile>,
+    /// Files the robots reference, to copy into `assets/` (each destination once).
+    pub robot_files: Vec<RobotFile>,
+    /// What the merger dropped or adjusted in the robots' models.
+    pub notes: Vec<String>,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -73,12 +76,67 @@ pub fn write_scene(input: &SceneInput<'_>) -> Result<SceneFiles, BridgeError> {
             .find(|r| r.name == placed.name)
             .ok_or_else(|| BridgeError::MissingRobot(placed.name.clone()))?;
         let mount = Pose::from_pos_yaw(placed.pos, placed.yaw);
-        robots.push(prepare_robot(r.source, r.mjcf, &placed.name, &mount)?);
+        robots.push(prepare_robot(r.model, &placed.name, &mount)?);
+    }
+    let mut robot_files: Vec<RobotFile> = robots.iter().flat_map(|r| r.files.iter().cloned()).collect();
+    robot_files.sort();
+    robot_files.dedup_by(|a, b| a.dest == b.dest);
+    let mut notes: Vec<String> = Vec::new();
+    for n in robots.iter().flat_map(|r| &r.notes) {
+        if !notes.contains(n) {
+            notes.push(n.clone());
+        }
     }
     let mut meshes = MeshTable::default();
     let with = build(input, &robots, &mut meshes);
     let without = build(input, &[], &mut meshes);
-    Ok(SceneFiles { scene_xml: with.to_document(), scene_only_xml: without.to_document(), meshes: meshes.files })
+    Ok(SceneFiles {
+        scene_xml: with.to_document(),
+        scene_only_xml: without.to_document(),
+        meshes: meshes.files,
+        robot_files,
+        notes,
+    })
+}
+
+/// One robot alone, as a loadable MJCF document: at the origin, names prefixed with
+/// `prefix`, a `home` keyframe, and file references pointing at the robot's files where
+/// they are (absolute paths), so that MuJoCo can load it without a package.
+pub fn robot_document(model: &RobotSource, prefix: &str) -> Result<String, MergeError> {
+    let r = prepare_robot(model, prefix, &Pose::IDENTITY)?;
+    let mut root = Element::new("mujoco").with("model", model.model.clone());
+    root.children.push(Element::new("compiler").with("angle", "radian").with("autolimits", "true"));
+    root.children.push(Element::new("option").with("timestep", num(TIMESTEP)).with("integrator", "implicitfast"));
+    let mut defaults = Element::new("default");
+    defaults.children.extend(r.defaults.iter().cloned());
+    root.children.push(defaults);
+    let mut asset = Element::new("asset");
+    for a in &r.assets {
+        let mut a = a.clone();
+        let keys: Vec<String> = a.attrs.iter().filter(|(k, _)| k.starts_with("file")).map(|(k, _)| k.clone()).collect();
+        for k in keys {
+            if let Some(f) = r.files.iter().find(|f| Some(f.dest.as_str()) == a.get(&k)) {
+                a.set(&k, f.source.to_string_lossy().into_owned());
+            }
+        }
+        asset.children.push(a);
+    }
+    root.children.push(asset);
+    let mut world = Element::new("worldbody");
+    world.children.extend(r.bodies.iter().cloned());
+    let key = home_key(&world, std::slice::from_ref(&r));
+    root.children.push(world);
+    for section in MERGED_SECTIONS {
+        if let Some(items) = r.sections.get(*section) {
+            let mut s = Element::new(section);
+            s.children = items.clone();
+            root.children.push(s);
+        }
+    }
+    if let Some(key) = key {
+        root.children.push(Element::new("keyframe").child(key));
+    }
+    Ok(root.to_document())
 }
 
 #[derive(Debug, Default)]
@@ -193,9 +251,7 @@ fn build(input: &SceneInput<'_>, robots: &[PreparedRobot], meshes: &mut MeshTabl
                 .child(Element::new("site").with("group", "5").with("type", "box").with("rgba", "0.2 0.8 0.3 0.3")),
         );
     for r in robots {
-        if let Some(dflt) = &r.defaults {
-            defaults.children.push(dflt.clone());
-        }
+        defaults.children.extend(r.defaults.iter().cloned());
     }
     root.children.push(defaults);
 
@@ -533,7 +589,7 @@ fn inertial(link: &Link, mass: f64) -> Element {
 
 /// The `home` keyframe over every joint of the model: free bodies at their written
 /// pose, robot joints at their own home, everything else at zero.
-fn home_key(world: &Element, robots: &[PreparedRobot]) -> Option<Element> {
+pub(crate) fn home_key(world: &Element, robots: &[PreparedRobot]) -> Option<Element> {
     let robot_home: BTreeMap<&str, &Vec<f64>> =
         robots.iter().flat_map(|r| r.home_qpos.iter().map(|(k, v)| (k.as_str(), v))).collect();
     let mut qpos: Vec<f64> = Vec::new();
@@ -541,22 +597,20 @@ fn home_key(world: &Element, robots: &[PreparedRobot]) -> Option<Element> {
         for c in &body.children {
             match c.name.as_str() {
                 "freejoint" => push_free(body, qpos),
-                "joint" => match c.get("type").unwrap_or("hinge") {
-                    "free" => push_free(body, qpos),
-                    "ball" => qpos.extend([1.0, 0.0, 0.0, 0.0]),
-                    _ => {
-                        let name = c.get("name").unwrap_or_default();
-                        let v = robot_home
-                            .get(name)
-                            .and_then(|v| v.first().copied())
-                            .unwrap_or_else(|| c.get("ref").and_then(|r| r.parse().ok()).unwrap_or(0.0));
-                        qpos.push(v);
+                "joint" => {
+                    let name = c.get("name").unwrap_or_default();
+                    // Robot joints carry their home with the width their (resolved) type has.
+                    match (c.get("type"), robot_home.get(name)) {
+                        (Some("free"), _) => push_free(body, qpos),
+                        (_, Some(v)) if v.len() != 7 => qpos.extend(v.iter().copied()),
+                        (Some("ball"), _) => qpos.extend([1.0, 0.0, 0.0, 0.0]),
+                        _ => qpos.push(c.get("ref").and_then(|r| r.parse().ok()).unwrap_or(0.0)),
                     }
-                },
+                }
                 _ => {}
             }
         }
-        for c in body.children.iter().filter(|c| c.name == "body") {
+        for c in body.children.iter().filter(|c| c.name == "body" || c.name == "frame") {
             visit(c, robot_home, qpos);
         }
     }

@@ -58,12 +58,12 @@ fn scene() -> (LaidOutScene, Vec<sw_geom::Asset>) {
 
 fn write_with_ur5e(prompt: &str) -> sw_mjcf::SceneFiles {
     let (layout, assets) = scene();
-    let ur5e = sw_robots::find("ur5e").unwrap();
+    let ur5e = sw_robots::find("ur5e").unwrap().model().unwrap();
     write_scene(&SceneInput {
         prompt,
         layout: &layout,
         assets: assets.iter().collect(),
-        robots: vec![RobotInput { name: "ur5e_1", source: "built-in ur5e", mjcf: ur5e.mjcf }],
+        robots: vec![RobotInput { name: "ur5e_1", model: &ur5e }],
     })
     .unwrap()
 }

@@ -126,14 +126,15 @@ pub fn forge(plan: &ScenePlan, seed: u64) -> Forged {
                     _ => carrier("pedestal", &mut out),
                 },
             };
+            let facts = crate::robot_facts::facts(def);
             out.robots.push(RobotItem {
                 name,
                 group: r.id.clone(),
                 model: def.name.to_string(),
                 is_arm,
-                keepout: def.keepout.iter().map(|(lo, hi)| sw_geom::Aabb { min: *lo, max: *hi }).collect(),
-                base_radius: def.base_radius,
-                reach: def.reach,
+                keepout: facts.keepout.iter().map(|(lo, hi)| sw_geom::Aabb { min: *lo, max: *hi }).collect(),
+                base_radius: facts.base_radius,
+                reach: facts.reach,
                 mount,
                 near: r.near.clone(),
             });

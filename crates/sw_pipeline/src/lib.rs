@@ -9,6 +9,7 @@
 mod forge;
 mod package;
 mod report;
+mod robot_facts;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -21,6 +22,7 @@ use tracing::info_span;
 
 pub use forge::{Forged, ForgedObject, forge};
 pub use package::{OutputError, discard_staged_packages, validate_dir};
+pub use robot_facts::measure as measure_robot;
 
 /// How to run the pipeline.
 #[derive(Debug, Clone)]
@@ -164,8 +166,13 @@ pub fn generate(
         let t = stage(Stage::Bridge, on_event);
         let files = {
             let _s = info_span!("stage", stage = "bridge").entered();
-            package::bridge(prompt, &layout, &forged).map_err(|e| PipelineError::Internal(e.to_string()))?
+            package::bridge(prompt, &layout, &forged)?
         };
+        if round == 0 {
+            for n in &files.notes {
+                warnings.push(Warning::new(Stage::Bridge, "robot_model_adjusted", n.clone()));
+            }
+        }
         staging.write_scene(&files, &plan, &layout)?;
         finish(
             Stage::Bridge,
@@ -218,9 +225,12 @@ fn robots_override(models: &[String]) -> Result<Vec<RobotPlan>, PipelineError> {
         if m.is_empty() || m == "none" {
             continue;
         }
-        let def = sw_robots::find(&m).ok_or_else(|| {
-            let known: Vec<&str> = sw_robots::registry().iter().map(|r| r.name).collect();
-            PipelineError::Input(format!("unknown robot '{m}' (known: {})", known.join(", ")))
+        let def = sw_robots::find(&m).ok_or_else(|| match sw_robots::why_missing(&m) {
+            Some(why) => PipelineError::Input(why),
+            None => {
+                let known: Vec<&str> = sw_robots::registry().iter().map(|r| r.name).collect();
+                PipelineError::Input(format!("unknown robot '{m}' (known: {})", known.join(", ")))
+            }
         })?;
         match out.iter_mut().find(|r| r.model == def.name) {
             Some(r) => r.count += 1,

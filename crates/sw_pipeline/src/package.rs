@@ -7,6 +7,7 @@ use fs_err as fs;
 use sw_mjcf::{RobotInput, SceneFiles, SceneInput};
 use sw_plan::{LaidOutScene, Report, ScenePlan, Timings, Verification};
 
+use crate::PipelineError;
 use crate::forge::Forged;
 
 /// An output directory that cannot be used. Nothing is written when this is returned.
@@ -69,7 +70,10 @@ pub(crate) fn check_destination(dest: &Path) -> Result<(), OutputError> {
                 let reason = format!("'{}' is not a directory", p.display());
                 return Err(OutputError::Unwritable { path: dest.to_path_buf(), reason });
             }
-            let probe = p.join(format!(".scenewright-probe-{}", std::process::id()));
+            // Unique per call: several runs in one process (threads, a server) probe at once.
+            static PROBES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+            let k = PROBES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            let probe = p.join(format!(".scenewright-probe-{}-{k}", std::process::id()));
             std::fs::create_dir(&probe).map_err(|e| unwritable(dest, &e))?;
             let _ = std::fs::remove_dir(&probe);
             break;
@@ -135,6 +139,18 @@ impl Staging {
         for m in &files.meshes {
             self.write(&format!("assets/{}", m.file_name), &m.bytes)?;
         }
+        // The robots' own meshes and textures, copied (never linked: the package must not
+        // share files with the cache it came from).
+        for f in &files.robot_files {
+            let to = assets.join(&f.dest);
+            if let Some(dir) = to.parent() {
+                std::fs::create_dir_all(dir).map_err(|e| unwritable(dir, &e))?;
+            }
+            std::fs::copy(&f.source, &to).map_err(|e| OutputError::Unwritable {
+                path: self.dest.join("assets").join(&f.dest),
+                reason: format!("copying {} ({}): {e}", f.source.display(), f.element),
+            })?;
+        }
         self.write("scene.xml", files.scene_xml.as_bytes())?;
         self.write("scene_only.xml", files.scene_only_xml.as_bytes())?;
         self.json("plan.json", plan)?;
@@ -168,23 +184,38 @@ impl Drop for Staging {
     }
 }
 
-/// L4: MJCF and meshes for the layout, with the robots merged.
-pub(crate) fn bridge(prompt: &str, layout: &LaidOutScene, forged: &Forged) -> Result<SceneFiles, sw_mjcf::BridgeError> {
+/// L4: MJCF and meshes for the layout, with the robots merged. A robot model that cannot
+/// be read or merged, or a file it references that is missing, is bad input (it names the
+/// file and the element); anything else is an internal error.
+pub(crate) fn bridge(prompt: &str, layout: &LaidOutScene, forged: &Forged) -> Result<SceneFiles, PipelineError> {
     let assets: Vec<&sw_geom::Asset> = layout
         .objects
         .iter()
         .filter_map(|o| forged.objects.iter().find(|f| f.name == o.name).map(|f| &f.asset))
         .collect();
-    let sources: Vec<(String, String, &'static str)> = layout
-        .robots
-        .iter()
-        .filter_map(|r| sw_robots::find(&r.model).map(|d| (r.name.clone(), format!("built-in {}", d.name), d.mjcf)))
-        .collect();
-    let robots: Vec<RobotInput<'_>> = sources
-        .iter()
-        .map(|(name, source, mjcf)| RobotInput { name: name.as_str(), source: source.as_str(), mjcf })
-        .collect();
-    sw_mjcf::write_scene(&SceneInput { prompt, layout, assets, robots })
+    let mut sources: Vec<(String, sw_mjcf::RobotSource)> = Vec::new();
+    for r in &layout.robots {
+        let def = sw_robots::find(&r.model)
+            .ok_or_else(|| PipelineError::Input(format!("robot model '{}' is not registered", r.model)))?;
+        let model = def.model().map_err(|e| PipelineError::Input(format!("robot {}: {e}", def.name)))?;
+        sources.push((r.name.clone(), model));
+    }
+    let robots: Vec<RobotInput<'_>> =
+        sources.iter().map(|(name, model)| RobotInput { name: name.as_str(), model }).collect();
+    let files = sw_mjcf::write_scene(&SceneInput { prompt, layout, assets, robots }).map_err(|e| match e {
+        sw_mjcf::BridgeError::Merge(m) => PipelineError::Input(format!("robot model: {m}")),
+        other => PipelineError::Internal(other.to_string()),
+    })?;
+    for f in &files.robot_files {
+        if !f.source.is_file() {
+            return Err(PipelineError::Input(format!(
+                "{}: the file it references is missing: {}",
+                f.element,
+                f.source.display()
+            )));
+        }
+    }
+    Ok(files)
 }
 
 /// Re-verifies a package directory in MuJoCo.

@@ -733,11 +733,12 @@ fn robot_names_map_to_registered_models() {
     let cases: &[(&str, &str, bool)] = &[
         ("a lab with a UR5e", "ur5e", false),
         ("a lab with a UR5", "ur5e", true),
-        ("a lab with a UR10", "ur5e", true),
-        ("a lab with a Franka", "ur5e", true),
-        ("a lab with a Panda", "ur5e", true),
-        ("a lab with a Franka Panda", "ur5e", true),
-        ("a lab with a Kinova", "ur5e", true),
+        ("a lab with a UR10", "ur10e", true),
+        ("a lab with a Franka", "panda", true),
+        ("a lab with a Panda", "panda", false),
+        ("a lab with a Franka Panda", "panda", false),
+        ("a lab with a Kinova", "kinova_gen3", true),
+        ("a lab with a UR3", "ur5e", true),
         ("a lab with a robot arm", "ur5e", true),
         ("a warehouse with a TurtleBot", "turtlebot3", false),
         ("a warehouse with a turtlebot3", "turtlebot3", false),
@@ -756,13 +757,14 @@ fn robot_names_map_to_registered_models() {
 
 #[test]
 fn substituted_models_say_what_was_asked_for() {
-    let p = ok("a lab with a UR10 and a Kinova and a Franka");
+    // UR3e and UR16e have no model in the registry; the UR5e stands in, and says so.
+    let p = ok("a lab with a UR3 and a UR16e and a UR3e");
     let reason = |text: &str| {
         p.understanding.approximated.iter().find(|a| a.text == text).map(|a| a.reason.clone()).unwrap_or_default()
     };
-    assert!(reason("a UR10").contains("ur10"), "{}", dump(&p));
-    assert!(reason("a Kinova").contains("kinova"), "{}", dump(&p));
-    assert!(reason("a Franka").contains("panda"), "{}", dump(&p));
+    assert!(reason("a UR3").contains("ur3e"), "{}", dump(&p));
+    assert!(reason("a UR16e").contains("ur16e"), "{}", dump(&p));
+    assert!(reason("a UR3e").contains("ur3e"), "{}", dump(&p));
     assert!(p.understanding.approximated.iter().all(|a| a.became == "ur5e"));
     // Three robot groups of the same model get distinct ids.
     assert_eq!(p.robots.len(), 3);
@@ -796,21 +798,21 @@ fn too_many_robots_are_clamped_with_a_note() {
 
 #[test]
 fn arms_mount_on_the_named_surface() {
-    let cases: &[(&str, &str)] = &[
-        ("a lab with a workbench and a UR5e on the bench", "workbench"),
-        ("a lab with a table and a UR5e on the table", "table"),
-        ("a lab with a UR5e on the workbench", "workbench"),
-        ("a workshop with a workbench with a UR5e on it", "workbench"),
-        ("a workshop with a workbench with a UR5e", "workbench"),
-        ("a lab with a table against the wall and a UR5e on it", "table"),
-        ("a lab with a Franka on the table", "table"),
-        ("a lab with two Pandas on a workbench", "workbench"),
+    let cases: &[(&str, &str, &str)] = &[
+        ("a lab with a workbench and a UR5e on the bench", "workbench", "ur5e"),
+        ("a lab with a table and a UR5e on the table", "table", "ur5e"),
+        ("a lab with a UR5e on the workbench", "workbench", "ur5e"),
+        ("a workshop with a workbench with a UR5e on it", "workbench", "ur5e"),
+        ("a workshop with a workbench with a UR5e", "workbench", "ur5e"),
+        ("a lab with a table against the wall and a UR5e on it", "table", "ur5e"),
+        ("a lab with a Franka on the table", "table", "panda"),
+        ("a lab with two Pandas on a workbench", "workbench", "panda"),
     ];
-    for (prompt, target) in cases {
+    for (prompt, target, model) in cases {
         let p = ok(prompt);
         let g = group(&p, target);
         assert_eq!(g.count, 1, "{prompt:?}");
-        assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: g.id.clone() }, "{prompt:?}");
+        assert_eq!(robot(&p, model).mount, Mount::OnSurface { target: g.id.clone() }, "{prompt:?}");
         assert!(p.relations.iter().all(|r| r.subject != g.id || !matches!(r.kind, RelationKind::On { .. })));
     }
 }
@@ -825,19 +827,19 @@ fn on_the_bench_means_a_workbench() {
 
 #[test]
 fn arms_on_pedestals_carts_and_the_floor() {
-    let cases: &[(&str, Mount)] = &[
-        ("a lab with a UR5e on a pedestal", Mount::Pedestal),
-        ("a lab with a UR5e mounted on a steel pedestal", Mount::Pedestal),
-        ("a lab with a Kinova on a pedestal", Mount::Pedestal),
-        ("a lab with a UR5e on a mobile cart", Mount::MobileBase),
-        ("a lab with a UR10 on a mobile cart", Mount::MobileBase),
-        ("a lab with a mobile manipulator", Mount::MobileBase),
-        ("a lab with a UR5e on the floor", Mount::Floor),
-        ("a lab with a UR5e", Mount::Auto),
+    let cases: &[(&str, Mount, &str)] = &[
+        ("a lab with a UR5e on a pedestal", Mount::Pedestal, "ur5e"),
+        ("a lab with a UR5e mounted on a steel pedestal", Mount::Pedestal, "ur5e"),
+        ("a lab with a Kinova on a pedestal", Mount::Pedestal, "kinova_gen3"),
+        ("a lab with a UR5e on a mobile cart", Mount::MobileBase, "ur5e"),
+        ("a lab with a UR10 on a mobile cart", Mount::MobileBase, "ur10e"),
+        ("a lab with a mobile manipulator", Mount::MobileBase, "ur5e"),
+        ("a lab with a UR5e on the floor", Mount::Floor, "ur5e"),
+        ("a lab with a UR5e", Mount::Auto, "ur5e"),
     ];
-    for (prompt, mount) in cases {
+    for (prompt, mount, model) in cases {
         let p = ok(prompt);
-        assert_eq!(robot(&p, "ur5e").mount, *mount, "{prompt:?}");
+        assert_eq!(robot(&p, model).mount, *mount, "{prompt:?}");
         assert!(p.objects.is_empty(), "{prompt:?}: mounts are not scene objects\n{}", dump(&p));
         assert!(p.understanding.not_understood.is_empty(), "{prompt:?}: {:?}", not_understood(&p));
     }

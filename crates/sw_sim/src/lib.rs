@@ -3,10 +3,13 @@
 //! [`verify_file`] loads a package's `scene.xml` from disk exactly as a user would,
 //! resets to the `home` keyframe, reports every contact deeper than a threshold between
 //! different bodies at t = 0, then settles the scene for a few seconds with robots
-//! holding their pose and measures how far each free body moved.
+//! holding their pose and measures how far each free body moved. [`measure_robot`]
+//! measures a robot at its home pose for the registry's keep-out boxes.
 
+mod measure;
 mod snapshot;
 mod verify;
 
+pub use measure::{BodyBox, measure_robot};
 pub use snapshot::render_scene;
 pub use verify::{VerifyOptions, mujoco_version, verify_file};
