@@ -44,6 +44,8 @@ pub(crate) struct FileModel {
 #[derive(Debug, Clone)]
 pub(crate) struct FilePart {
     pub file: PathBuf,
+    /// How errors and notes name the file (default: its path).
+    pub label: Option<String>,
     pub prefix: String,
     pub attach_to: Option<String>,
     pub attach_pose: Pose,
@@ -52,7 +54,14 @@ pub(crate) struct FilePart {
 
 impl FilePart {
     pub fn main(file: PathBuf) -> Self {
-        Self { file, prefix: String::new(), attach_to: None, attach_pose: Pose::IDENTITY, fixes: PartFixes::default() }
+        Self {
+            file,
+            label: None,
+            prefix: String::new(),
+            attach_to: None,
+            attach_pose: Pose::IDENTITY,
+            fixes: PartFixes::default(),
+        }
     }
 }
 
@@ -115,7 +124,8 @@ fn read_part(p: &FilePart) -> Result<RobotPart, RobotError> {
     let dir = p.file.parent().map(Path::to_path_buf).unwrap_or_default();
     let mut includes = BTreeMap::new();
     read_includes(&text, &p.file, &dir, &mut includes, 0)?;
-    let mut part = RobotPart::new(&p.file.display().to_string(), &text);
+    let label = p.label.clone().unwrap_or_else(|| p.file.display().to_string());
+    let mut part = RobotPart::new(&label, &text);
     part.dir = Some(dir);
     part.includes = includes;
     part.prefix = p.prefix.clone();

@@ -527,6 +527,8 @@ fn def(pack: &Pack, r: &PackRobot, root: &Path) -> RobotDef {
             };
             FilePart {
                 file: root.join(p.file),
+                // Named inside the pack, so that reports read the same on every machine.
+                label: Some(format!("{}/{}", pack.dir, p.file)),
                 prefix: p.prefix.to_string(),
                 attach_to: p.attach_to.map(str::to_string),
                 attach_pose: Pose { pos: p.pos, quat: p.quat },
