@@ -6,6 +6,7 @@ mod containers;
 mod datacentre;
 mod electronics;
 mod furniture;
+mod garage;
 mod industrial;
 mod kit;
 mod kitchen;
@@ -18,6 +19,7 @@ mod shapes;
 mod stationery;
 mod storage;
 mod tableware;
+mod vehicles;
 
 use crate::Category;
 
@@ -92,4 +94,13 @@ pub(crate) static ALL: &[Category] = &[
     datacentre::TRANSFORMER,
     datacentre::COOLING_UNIT,
     datacentre::CABLE_TRAY,
+    vehicles::FORKLIFT,
+    vehicles::PALLET_JACK,
+    vehicles::HAND_TRUCK,
+    vehicles::CART,
+    vehicles::SHOPPING_CART,
+    garage::TOOL_CHEST,
+    garage::AIR_COMPRESSOR,
+    garage::CAR_LIFT,
+    garage::TIRE,
 ];
