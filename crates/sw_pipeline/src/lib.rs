@@ -10,19 +10,22 @@ mod forge;
 mod package;
 mod report;
 mod robot_facts;
+mod variations;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use serde::Serialize;
 use sw_plan::{
-    LaidOutScene, Mount, Report, RobotPlan, ScenePlan, Stage, StageTiming, Status, Timings, Verification, Warning,
+    AnomalyKind, AnomalyRequest, LaidOutScene, Mount, Report, RobotPlan, ScenePlan, Stage, StageTiming, Status,
+    Timings, Verification, Warning,
 };
 use tracing::info_span;
 
 pub use forge::{Forged, ForgedObject, forge};
 pub use package::{OutputError, discard_staged_packages, validate_dir};
 pub use robot_facts::measure as measure_robot;
+pub use variations::{generate_variations, structural_difference};
 
 /// How to run the pipeline.
 #[derive(Debug, Clone)]
@@ -33,11 +36,15 @@ pub struct Options {
     /// Replace the prompt's robots with these registry models (`--robot`); an empty list
     /// removes all robots.
     pub robots: Option<Vec<String>>,
+    /// Use this industrial rules profile instead of the room kind's (`--rules`).
+    pub rules_profile: Option<String>,
+    /// Inject controlled anomalies (`--anomaly`), labelled in layout.json.
+    pub anomaly: Option<AnomalyRequest>,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Self { seed: 0, verify: true, robots: None }
+        Self { seed: 0, verify: true, robots: None, rules_profile: None, anomaly: None }
     }
 }
 
@@ -122,12 +129,25 @@ pub fn generate(
     if let Some(models) = &opts.robots {
         plan.robots = robots_override(models)?;
     }
+    if let Some(p) = &opts.rules_profile {
+        let known = sw_layout::rules::profile_names();
+        if !known.contains(p) {
+            return Err(PipelineError::Input(format!("unknown rules profile '{p}' (known: {})", known.join(", "))));
+        }
+        plan.rules_profile = p.clone();
+    }
+    if let Some(a) = &opts.anomaly {
+        if !(a.rate.is_finite() && (0.0..=1.0).contains(&a.rate)) || a.kinds.is_empty() {
+            return Err(PipelineError::Input(format!("the anomaly rate must be in 0..1, got {}", a.rate)));
+        }
+        plan.anomaly = Some(a.clone());
+    }
     finish(Stage::Plan, t, report::plan_summary(&plan), &mut timings, on_event);
     let staging = package::Staging::create(out)?;
 
     // L2
     let t = stage(Stage::Forge, on_event);
-    let forged = {
+    let mut forged = {
         let _s = info_span!("stage", stage = "forge").entered();
         forge(&plan, opts.seed)
     };
@@ -155,9 +175,22 @@ pub fn generate(
             robots: forged.robots.clone(),
             seed: opts.seed,
         };
-        sw_layout::solve(&input)
+        let mut layout = sw_layout::solve(&input);
+        if let Some(a) = &plan.anomaly {
+            let notes = sw_layout::inject_anomalies(&input, &mut layout, a, opts.seed);
+            layout.warnings.extend(notes);
+            layout.violations = sw_layout::check_rules(&input, &layout);
+        }
+        layout
     };
+    // Scale anomalies change the geometry itself.
+    for label in layout.anomalies.iter().filter(|l| l.kind == AnomalyKind::Scale) {
+        if let Some(o) = forged.objects.iter_mut().find(|o| o.name == label.object) {
+            o.asset = o.asset.scaled(label.magnitude);
+        }
+    }
     finish(Stage::Layout, t, report::layout_summary(&layout), &mut timings, on_event);
+    let expected = report::anomaly_bodies(&layout);
 
     let mut warnings: Vec<Warning> = forged.warnings.clone();
     let mut verification: Option<Verification> = None;
@@ -193,13 +226,14 @@ pub fn generate(
             let _s = info_span!("stage", stage = "verify").entered();
             let vopts = sw_sim::VerifyOptions {
                 robots: layout.robots.iter().map(|r| r.name.clone()).collect(),
+                expected_bodies: expected.clone(),
                 ..Default::default()
             };
             sw_sim::verify_file(&staging.path().join("scene.xml"), &vopts)
         };
         finish(Stage::Verify, t, report::verify_summary(&v), &mut timings, on_event);
         let repairable = !v.passed && v.compiled && round < MAX_REPAIRS;
-        let removed = if repairable { report::repair(&mut layout, &v) } else { Vec::new() };
+        let removed = if repairable { report::repair(&mut layout, &v, &expected) } else { Vec::new() };
         verification = Some(v);
         if removed.is_empty() {
             break;
