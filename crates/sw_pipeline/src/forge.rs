@@ -82,6 +82,7 @@ pub fn forge(plan: &ScenePlan, seed: u64) -> Forged {
         })
         .map(|o| o.id.clone());
     let mut robot_counter: std::collections::BTreeMap<String, u32> = std::collections::BTreeMap::new();
+    let mut arms_on: std::collections::BTreeMap<String, u32> = std::collections::BTreeMap::new();
     for r in &plan.robots {
         let Some(def) = sw_robots::find(&r.model) else {
             out.warnings.push(Warning::new(
@@ -126,6 +127,27 @@ pub fn forge(plan: &ScenePlan, seed: u64) -> Forged {
                     _ => carrier("pedestal", &mut out),
                 },
             };
+            // One arm per work surface: the arms beyond that stand on pedestals beside it.
+            let mut near = r.near.clone();
+            let mount = match mount {
+                RobotMount::Surface { group } => {
+                    let used = arms_on.entry(group.clone()).or_insert(0);
+                    *used += 1;
+                    let capacity = plan.object(&group).map_or(0, |g| g.count);
+                    if *used > capacity {
+                        out.warnings.push(Warning::new(
+                            Stage::Forge,
+                            "robot_on_pedestal",
+                            format!("{name}: every {group} already carries an arm; it stands on a pedestal beside one"),
+                        ));
+                        near = Some(group);
+                        carrier("pedestal", &mut out)
+                    } else {
+                        RobotMount::Surface { group }
+                    }
+                }
+                m => m,
+            };
             let facts = crate::robot_facts::facts(def);
             out.robots.push(RobotItem {
                 name,
@@ -136,7 +158,7 @@ pub fn forge(plan: &ScenePlan, seed: u64) -> Forged {
                 base_radius: facts.base_radius,
                 reach: facts.reach,
                 mount,
-                near: r.near.clone(),
+                near,
             });
         }
     }

@@ -168,8 +168,16 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         let Some(count) = cap(count, robots_so_far, sw_plan::MAX_ROBOTS, "robots", &r.phrase, &mut approximated) else {
             continue;
         };
-        let def = sw_robots::find(r.word.wants).unwrap_or_else(|| sw_robots::default_of(r.word.kind));
-        if def.name != r.word.wants {
+        let found = sw_robots::find(r.word.wants);
+        let def = found.unwrap_or_else(|| sw_robots::default_of(r.word.kind));
+        if found.is_some() && def.name != r.word.wants {
+            // Registered under an alias (a pack model standing for the name).
+            approximated.push(Approximation {
+                text: r.phrase.clone(),
+                became: def.name.into(),
+                reason: format!("read as the {}", def.display),
+            });
+        } else if def.name != r.word.wants {
             approximated.push(Approximation {
                 text: r.phrase.clone(),
                 became: def.name.into(),
@@ -192,14 +200,14 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
             Mount::OnSurface { target } if dropped.contains(target) => Mount::Auto,
             m => m.clone(),
         };
-        if def.kind == sw_robots::RobotKind::MobileBase && !matches!(mount, Mount::Auto | Mount::Floor) {
+        if def.kind != sw_robots::RobotKind::Arm && !matches!(mount, Mount::Auto | Mount::Floor) {
             approximated.push(Approximation {
                 text: r.phrase.clone(),
                 became: "on the floor".into(),
                 reason: "mobile bases drive on the floor".into(),
             });
         }
-        let mount = if def.kind == sw_robots::RobotKind::MobileBase { Mount::Floor } else { mount };
+        let mount = if def.kind == sw_robots::RobotKind::Arm { mount } else { Mount::Floor };
         let near = r.near.clone().filter(|t| !dropped.contains(t));
         plan.robots.push(RobotPlan { id, model: def.name.into(), phrase: r.phrase.clone(), count, mount, near });
     }

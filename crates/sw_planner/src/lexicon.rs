@@ -225,7 +225,12 @@ const ROBOTS: &[(&str, Meaning)] = &[
     ("agv", robot("turtlebot3", RobotKind::MobileBase, false)),
     (
         "mobile manipulator",
-        Meaning::Robot(RobotWord { wants: "ur5e", kind: RobotKind::Arm, exact: false, on_mobile_base: true }),
+        Meaning::Robot(RobotWord {
+            wants: "mobile_manipulator",
+            kind: RobotKind::MobileManipulator,
+            exact: true,
+            on_mobile_base: false,
+        }),
     ),
 ];
 

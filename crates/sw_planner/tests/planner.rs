@@ -833,7 +833,7 @@ fn arms_on_pedestals_carts_and_the_floor() {
         ("a lab with a Kinova on a pedestal", Mount::Pedestal, "kinova_gen3"),
         ("a lab with a UR5e on a mobile cart", Mount::MobileBase, "ur5e"),
         ("a lab with a UR10 on a mobile cart", Mount::MobileBase, "ur10e"),
-        ("a lab with a mobile manipulator", Mount::MobileBase, "ur5e"),
+        ("a lab with a mobile manipulator", Mount::Floor, "mobile_manipulator"),
         ("a lab with a UR5e on the floor", Mount::Floor, "ur5e"),
         ("a lab with a UR5e", Mount::Auto, "ur5e"),
     ];
