@@ -95,7 +95,6 @@ pub(crate) const MACHINE: Category = Category {
         "machining center",
         "machining centre",
         "milling machine",
-        "lathe",
         "machine tool",
         "industrial machine",
         "production machine",

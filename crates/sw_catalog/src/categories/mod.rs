@@ -1,16 +1,20 @@
 //! The categories, one module per family. `ALL` is the registry, in a stable order.
 
+mod agriculture;
 mod blocks;
 mod building;
+mod care;
 mod containers;
 mod datacentre;
 mod electronics;
 mod furniture;
 mod garage;
+mod gases;
 mod industrial;
 mod kit;
 mod kitchen;
 mod lab;
+mod machine_tools;
 mod office;
 mod parts;
 mod robot_bases;
@@ -103,4 +107,18 @@ pub(crate) static ALL: &[Category] = &[
     garage::AIR_COMPRESSOR,
     garage::CAR_LIFT,
     garage::TIRE,
+    machine_tools::LATHE,
+    machine_tools::DRILL_PRESS,
+    machine_tools::FDM_PRINTER,
+    gases::GAS_CYLINDER,
+    gases::GAS_CYLINDER_RACK,
+    agriculture::POTTED_PLANT,
+    agriculture::PLANTER_BOX,
+    agriculture::SEEDLING_TRAY,
+    agriculture::HAY_BALE,
+    agriculture::FEED_SACK,
+    care::HOSPITAL_BED,
+    care::IV_POLE,
+    care::CHECKOUT_COUNTER,
+    care::VENDING_MACHINE,
 ];
