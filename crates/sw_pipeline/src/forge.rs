@@ -165,6 +165,22 @@ pub fn forge(plan: &ScenePlan, seed: u64) -> Forged {
     out
 }
 
+/// The same object with its footprint (width and depth) scaled by `factor`, kept within
+/// its category's ranges (the catalog clamps). Height is kept. Used to fit a crowded room.
+pub fn shrunk(o: &ForgedObject, factor: f64) -> Asset {
+    let a = &o.asset;
+    if sw_catalog::find(&o.category).is_none() {
+        let s = a.bounds().size();
+        let movable = a.is_free();
+        return sw_catalog::proxy_asset(&o.label, [s[0] * factor, s[1] * factor, s[2]], movable, None, a.seed);
+    }
+    let mut req = AssetRequest::new(&o.category, a.seed);
+    req.overrides =
+        a.params.iter().map(|(n, v)| (n.clone(), if n == "width" || n == "depth" { v * factor } else { *v })).collect();
+    req.color = a.materials.iter().find(|m| m.recolorable).map(|m| m.rgba);
+    sw_catalog::generate(&req).unwrap_or_else(|_| a.clone())
+}
+
 /// The seed of instance `k` of a group: independent of other groups and of order.
 fn instance_seed(seed: u64, group: &str, k: u32) -> u64 {
     Rng::derive(seed, &format!("{group}#{k}")).next_u64()

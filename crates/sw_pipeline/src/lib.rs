@@ -157,29 +157,39 @@ pub fn generate(
     let t = stage(Stage::Layout, on_event);
     let mut layout = {
         let _s = info_span!("stage", stage = "layout").entered();
-        let input = sw_layout::LayoutInput {
-            plan: &plan,
-            objects: forged
-                .objects
-                .iter()
-                .map(|o| sw_layout::ObjectItem {
-                    name: o.name.clone(),
-                    group: o.group.clone(),
-                    category: o.category.clone(),
-                    label: o.label.clone(),
-                    asset: &o.asset,
-                    tags: o.tags.clone(),
-                    carries_robot: o.carries_robot.clone(),
-                })
-                .collect(),
-            robots: forged.robots.clone(),
-            seed: opts.seed,
-        };
-        let mut layout = sw_layout::solve(&input);
+        let mut layout = lay_out(&plan, &forged, opts.seed, None);
+        // When objects do not fit, shrink what may shrink (within the catalog's ranges):
+        // each step scales the original assets of every group that has been short.
+        let original = forged.clone();
+        let mut shrunk_groups: Vec<String> = Vec::new();
+        for factor in SHRINK_STEPS {
+            let mut groups = shrunk_groups.clone();
+            groups.extend(layout.left_out.iter().filter(|l| plan.object(&l.group).is_some()).map(|l| l.group.clone()));
+            groups.sort();
+            groups.dedup();
+            if missing(&layout) == 0 || groups.is_empty() {
+                break;
+            }
+            let mut smaller = original.clone();
+            for o in smaller.objects.iter_mut().filter(|o| groups.contains(&o.group)) {
+                o.asset = forge::shrunk(o, factor);
+            }
+            let candidate = lay_out(&plan, &smaller, opts.seed, None);
+            if missing(&candidate) < missing(&layout) {
+                for g in &groups {
+                    smaller.warnings.push(Warning::new(
+                        Stage::Layout,
+                        "shrunk_to_fit",
+                        format!("{g}: footprints shrunk to {:.0} % to fit the room", factor * 100.0),
+                    ));
+                }
+                shrunk_groups = groups;
+                forged = smaller;
+                layout = candidate;
+            }
+        }
         if let Some(a) = &plan.anomaly {
-            let notes = sw_layout::inject_anomalies(&input, &mut layout, a, opts.seed);
-            layout.warnings.extend(notes);
-            layout.violations = sw_layout::check_rules(&input, &layout);
+            layout = lay_out(&plan, &forged, opts.seed, Some((a, &mut layout)));
         }
         layout
     };
@@ -250,6 +260,52 @@ pub fn generate(
     staging.write_report(&report, &timings)?;
     let out_dir = staging.commit()?;
     Ok(Outcome { plan, layout, report, timings, out_dir })
+}
+
+/// Footprint scales tried, in turn, for objects that did not fit.
+const SHRINK_STEPS: [f64; 2] = [0.85, 0.7];
+
+/// Object instances requested but not placed.
+fn missing(l: &LaidOutScene) -> u32 {
+    l.left_out.iter().map(|x| x.requested - x.placed).sum()
+}
+
+/// L3 on the forged assets; with `anomaly`, injects anomalies into the given layout instead
+/// of solving again, and measures the rules afterwards.
+fn lay_out(
+    plan: &ScenePlan,
+    forged: &Forged,
+    seed: u64,
+    anomaly: Option<(&AnomalyRequest, &mut LaidOutScene)>,
+) -> LaidOutScene {
+    let input = sw_layout::LayoutInput {
+        plan,
+        objects: forged
+            .objects
+            .iter()
+            .map(|o| sw_layout::ObjectItem {
+                name: o.name.clone(),
+                group: o.group.clone(),
+                category: o.category.clone(),
+                label: o.label.clone(),
+                asset: &o.asset,
+                tags: o.tags.clone(),
+                carries_robot: o.carries_robot.clone(),
+            })
+            .collect(),
+        robots: forged.robots.clone(),
+        seed,
+    };
+    match anomaly {
+        None => sw_layout::solve(&input),
+        Some((a, layout)) => {
+            let mut l = layout.clone();
+            let notes = sw_layout::inject_anomalies(&input, &mut l, a, seed);
+            l.warnings.extend(notes);
+            l.violations = sw_layout::check_rules(&input, &l);
+            l
+        }
+    }
 }
 
 fn robots_override(models: &[String]) -> Result<Vec<RobotPlan>, PipelineError> {

@@ -137,3 +137,17 @@ fn variations_are_structurally_different_valid_layouts() {
         std::fs::read_dir(&out).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().to_string()).collect();
     assert!(names.iter().all(|n| !n.starts_with('.')), "{names:?}");
 }
+
+#[test]
+fn what_does_not_fit_a_fixed_room_is_shrunk_within_its_ranges_before_anything_is_left_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let o =
+        generate("a 5 by 4 m room with 10 tables", &dir.path().join("p"), &Options::default(), &mut |_| {}).unwrap();
+    assert!(o.report.left_out.is_empty(), "{:?}", o.report.left_out);
+    assert!(o.report.warnings.iter().any(|w| w.code == "shrunk_to_fit"), "{:?}", o.report.warnings);
+    assert_eq!(o.report.status, Status::Verified);
+    // Never below the category's smallest table.
+    for t in &o.layout.objects {
+        assert!(t.size[0] >= 0.4 - 1e-6 && t.size[1] >= 0.4 - 1e-6, "{t:?}");
+    }
+}
