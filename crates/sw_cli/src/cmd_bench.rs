@@ -52,6 +52,8 @@ struct Validity {
     no_deep_contacts: usize,
     settled_within_1cm: usize,
     verified: usize,
+    /// Scenes with no rule violation the prompt did not ask for.
+    rules_met: usize,
     objects_requested: u64,
     objects_placed: u64,
 }
@@ -87,6 +89,7 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
         no_deep_contacts: 0,
         settled_within_1cm: 0,
         verified: 0,
+        rules_met: 0,
         objects_requested: 0,
         objects_placed: 0,
     };
@@ -119,6 +122,10 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
                                 usize::from(ver.initial_contacts.as_ref().is_some_and(|c| c.deep.is_empty()));
                             v.settled_within_1cm +=
                                 usize::from(ver.settle.as_ref().is_some_and(|s| s.moved.is_empty() && !s.unstable));
+                        }
+                        v.rules_met += usize::from(r.violations.iter().all(|x| x.requested));
+                        for x in r.violations.iter().filter(|x| !x.requested) {
+                            failures.push(format!("prompt {} seed {seed}: rule {}: {}", pi + 1, x.rule, x.message));
                         }
                         if r.status == Status::Verified {
                             v.verified += 1;
@@ -162,8 +169,8 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
         ));
         let x = &result.validity;
         lines.push(format!(
-            "compiled {}/{} · no contact > 1 mm {}/{} · settled < 1 cm {}/{} · verified {}/{} · rejected as bad input {} · objects placed {}/{}",
-            x.compiled, x.runs, x.no_deep_contacts, x.runs, x.settled_within_1cm, x.runs, x.verified, x.runs, x.rejected_as_bad_input, x.objects_placed, x.objects_requested
+            "compiled {}/{} · no contact > 1 mm {}/{} · settled < 1 cm {}/{} · verified {}/{} · rules met {}/{} · rejected as bad input {} · objects placed {}/{}",
+            x.compiled, x.runs, x.no_deep_contacts, x.runs, x.settled_within_1cm, x.runs, x.verified, x.runs, x.rules_met, x.runs, x.rejected_as_bad_input, x.objects_placed, x.objects_requested
         ));
         for f in &result.failures {
             lines.push(format!("failure  {f}"));
