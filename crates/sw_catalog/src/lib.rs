@@ -82,6 +82,8 @@ pub enum CatalogError {
     UnknownParam { category: String, param: String, known: String },
     #[error("{category}: parameter '{param}' must be a finite number, got {value}")]
     NotFinite { category: String, param: String, value: f64 },
+    #[error("{category}: size scale {scale:?} must be three finite numbers above zero")]
+    BadScale { category: String, scale: [f64; 3] },
 }
 
 /// Every category, in a stable order.
@@ -94,8 +96,9 @@ pub fn find(name: &str) -> Option<&'static Category> {
     categories().iter().find(|c| c.name == name)
 }
 
-/// Builds an asset. Out-of-range parameters are clamped and noted in `Asset::notes`;
-/// unknown categories and parameters, and non-finite values, are errors.
+/// Builds an asset. Out-of-range parameters (zero and negative sizes included) are
+/// clamped and noted in `Asset::notes`; unknown categories and parameters, non-finite
+/// values and a scale that is not three positive numbers are errors.
 pub fn generate(req: &AssetRequest) -> Result<Asset, CatalogError> {
     let cat = find(&req.category).ok_or_else(|| CatalogError::UnknownCategory(req.category.clone()))?;
     let mut rng = Rng::new(req.seed);
@@ -111,8 +114,13 @@ pub fn generate(req: &AssetRequest) -> Result<Asset, CatalogError> {
         asset.mass = MassModel::Free { mass: mass.max(inertia_floor_mass(&asset)) };
     }
     if let Some(rgba) = req.color {
-        for m in asset.materials.iter_mut().filter(|m| m.recolorable) {
-            m.rgba = rgba;
+        if rgba.iter().all(|c| c.is_finite()) {
+            let rgba = rgba.map(|c| c.clamp(0.0, 1.0));
+            for m in asset.materials.iter_mut().filter(|m| m.recolorable) {
+                m.rgba = rgba;
+            }
+        } else {
+            asset.notes.push(format!("{}: colour {rgba:?} is not a colour; kept its own", cat.display));
         }
     }
     Ok(asset)

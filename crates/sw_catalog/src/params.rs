@@ -64,6 +64,11 @@ impl Params {
                 return Err(CatalogError::NotFinite { category: cat.name.into(), param: name.clone(), value: *value });
             }
         }
+        if let Some(scale) = req.scale
+            && !scale.iter().all(|s| s.is_finite() && *s > 0.0)
+        {
+            return Err(CatalogError::BadScale { category: cat.name.into(), scale });
+        }
         let mut notes = Vec::new();
         let mut values = Vec::with_capacity(cat.params.len());
         for def in cat.params {

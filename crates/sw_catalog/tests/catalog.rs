@@ -455,4 +455,74 @@ proptest! {
         let p = problems(cat, &a);
         prop_assert!(p.is_empty(), "{} seed {seed} overrides {:?}:\n  {}", cat.name, req.overrides, p.join("\n  "));
     }
+
+    /// Any values at all — zero, negative, huge, NaN, infinite — give a valid asset with a
+    /// note for each value that had to move, or (for non-finite ones) a clear error.
+    #[test]
+    fn any_parameter_values_give_a_valid_asset_or_a_clear_error(
+        index in 0usize..1024,
+        values in proptest::collection::vec(
+            prop_oneof![
+                Just(0.0),
+                Just(-1.0),
+                Just(f64::NAN),
+                Just(f64::INFINITY),
+                Just(1e12),
+                -5.0f64..5.0,
+                any::<f64>(),
+            ],
+            8,
+        ),
+        seed in any::<u64>(),
+    ) {
+        let all = categories();
+        let cat = &all[index % all.len()];
+        let mut req = AssetRequest::new(cat.name, seed);
+        req.overrides = cat.params.iter().zip(&values).map(|(def, v)| (def.name.to_string(), *v)).collect();
+        match generate(&req) {
+            Ok(a) => {
+                let p = problems(cat, &a);
+                prop_assert!(p.is_empty(), "{} {:?}:\n  {}", cat.name, req.overrides, p.join("\n  "));
+                for (def, v) in cat.params.iter().zip(&values) {
+                    let off = (def.min - v).max(v - def.max);
+                    if off > 1e-9 * v.abs().max(1.0) {
+                        prop_assert!(
+                            a.notes.iter().any(|n| n.contains(def.name)),
+                            "{} {} = {v}: no note in {:?}", cat.name, def.name, a.notes
+                        );
+                    }
+                }
+            }
+            Err(CatalogError::NotFinite { param, value, .. }) => {
+                prop_assert!(!value.is_finite(), "{} {param} = {value}", cat.name);
+                prop_assert!(values.iter().any(|v| !v.is_finite()));
+            }
+            Err(e) => prop_assert!(false, "{}: unexpected error {e}", cat.name),
+        }
+    }
+
+    /// A scale must be three positive finite numbers; anything else is refused.
+    #[test]
+    fn bad_scales_are_refused_and_good_ones_clamped(
+        index in 0usize..1024,
+        scale in proptest::array::uniform3(prop_oneof![Just(0.0), Just(-2.0), Just(f64::NAN), 0.01f64..100.0]),
+        seed in any::<u64>(),
+    ) {
+        let all = categories();
+        let cat = &all[index % all.len()];
+        let mut req = AssetRequest::new(cat.name, seed);
+        req.scale = Some(scale);
+        let ok = scale.iter().all(|s| s.is_finite() && *s > 0.0);
+        match generate(&req) {
+            Ok(a) => {
+                prop_assert!(ok, "{} accepted scale {scale:?}", cat.name);
+                let p = problems(cat, &a);
+                prop_assert!(p.is_empty(), "{} scale {scale:?}:\n  {}", cat.name, p.join("\n  "));
+            }
+            Err(e) => {
+                prop_assert!(!ok, "{} refused scale {scale:?}: {e}", cat.name);
+                prop_assert!(matches!(e, CatalogError::BadScale { .. }), "{}: {}", cat.name, e);
+            }
+        }
+    }
 }

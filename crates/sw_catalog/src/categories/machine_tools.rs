@@ -110,7 +110,7 @@ fn build_drill_press(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
         Pose::from_pos([0.0, cy, 0.05 + (h - 0.1) / 2.0]),
     );
     // The work table: a round plate on an arm, in front of the column.
-    let tr = (hw * 0.75).min(0.18);
+    let tr = (hw * 0.75).min(0.18).min((hd - cy - col_r - 0.035) / 2.0);
     let ty = cy + col_r + tr + 0.03;
     let tz = (h * 0.5).max(0.3);
     slab(b, [-0.04, cy, tz - 0.08], [0.04, ty, tz - 0.02], body);
@@ -118,7 +118,7 @@ fn build_drill_press(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let table = round_collider(b, 0, [0.0, ty], tr, tz - 0.03, tz);
     // The head over the table: belt cover, motor behind, spindle and chuck.
     let (hz0, hz1) = (h - 0.35f64.min(h * 0.3), h - 0.06);
-    slab(b, [-hw * 0.7, cy - 0.06, hz0], [hw * 0.7, ty + 0.08, hz1], body);
+    slab(b, [-hw * 0.7, cy - 0.06, hz0], [hw * 0.7, (ty + 0.08).min(hd), hz1], body);
     slab(b, [-hw * 0.6, ty - 0.05, hz1 - 0.001], [hw * 0.6, ty + 0.1f64.min(hd - ty), h], body);
     slab(b, [-0.08, -hd, hz0 + 0.02], [0.08, cy - 0.06, hz1 - 0.02], dark);
     let chuck_z = (tz + (hz0 - tz) * 0.45).max(tz + 0.08);
