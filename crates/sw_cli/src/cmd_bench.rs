@@ -1,5 +1,6 @@
 //! `bench scenes`: the prompt suite through the whole pipeline, with per-stage
-//! percentiles and validity counts.
+//! percentiles and validity counts. `bench assets`: generation time of every catalog
+//! category over many seeds.
 
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -32,6 +33,17 @@ pub(crate) enum BenchCommand {
         /// Runs per prompt and seed.
         #[arg(long, default_value_t = 1)]
         repeat: u32,
+        #[arg(long)]
+        json: bool,
+    },
+    /// Every catalog category generated at seeds 0..N: median and p95 per category.
+    Assets {
+        /// Seeds per category.
+        #[arg(long, default_value_t = 50)]
+        seeds: u64,
+        /// Only these categories, comma-separated.
+        #[arg(long, value_delimiter = ',')]
+        only: Vec<String>,
         #[arg(long)]
         json: bool,
     },
@@ -70,7 +82,13 @@ struct BenchResult {
 }
 
 pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
-    let BenchCommand::Scenes { suite, prompt, seeds, repeat, json } = c;
+    match c {
+        BenchCommand::Scenes { suite, prompt, seeds, repeat, json } => scenes(suite, prompt, seeds, repeat, json),
+        BenchCommand::Assets { seeds, only, json } => assets(seeds, &only, json),
+    }
+}
+
+fn scenes(suite: Option<PathBuf>, prompt: Option<String>, seeds: u64, repeat: u32, json: bool) -> Result<u8, Failure> {
     let prompts: Vec<String> = match (&prompt, &suite) {
         (Some(p), _) => vec![p.clone()],
         (None, Some(path)) => parse_suite(&fs_err::read_to_string(path).map_err(|e| Failure::input(e.to_string()))?),
@@ -193,4 +211,114 @@ fn percentiles(xs: &[f64]) -> Percentiles {
     let at = |q: f64| v[((q * (v.len() - 1) as f64).round() as usize).min(v.len() - 1)];
     let r = |x: f64| (x * 100.0).round() / 100.0;
     Percentiles { p50_ms: r(at(0.5)), p95_ms: r(at(0.95)), max_ms: r(v[v.len() - 1]) }
+}
+
+#[derive(Debug, Serialize)]
+struct AssetTiming {
+    category: &'static str,
+    p50_ms: f64,
+    p95_ms: f64,
+    max_ms: f64,
+    /// Visual triangles and collision primitives at seed 0.
+    triangles: usize,
+    primitives: usize,
+}
+
+#[derive(Debug, Serialize)]
+struct AssetsResult {
+    categories: usize,
+    seeds: u64,
+    /// Over every (category, seed) generation.
+    all: Percentiles,
+    /// The slowest category's median.
+    worst_median_ms: f64,
+    worst_category: &'static str,
+    per_category: Vec<AssetTiming>,
+}
+
+/// Times `sw_catalog::generate` for every category and seed (one warm-up call first).
+fn assets(seeds: u64, only: &[String], json: bool) -> Result<u8, Failure> {
+    let seeds = seeds.clamp(1, 100_000);
+    let cats: Vec<&'static sw_catalog::Category> = if only.is_empty() {
+        sw_catalog::categories().iter().collect()
+    } else {
+        only.iter()
+            .map(|n| {
+                sw_catalog::find(&n.trim().to_lowercase().replace([' ', '-'], "_")).ok_or_else(|| {
+                    Failure::input(format!("unknown asset category '{n}' (see `scenewright assets list`)"))
+                })
+            })
+            .collect::<Result<_, _>>()?
+    };
+    let mut all = Vec::new();
+    let mut per_category = Vec::new();
+    for cat in cats {
+        let make = |seed: u64| sw_catalog::generate(&sw_catalog::AssetRequest::new(cat.name, seed));
+        let first = make(0).map_err(|e| Failure::internal(e.to_string()))?;
+        let mut times = Vec::with_capacity(seeds as usize);
+        for seed in 0..seeds {
+            let t0 = Instant::now();
+            let a = make(seed).map_err(|e| Failure::internal(e.to_string()))?;
+            times.push(t0.elapsed().as_secs_f64() * 1000.0);
+            std::hint::black_box(a);
+        }
+        all.extend_from_slice(&times);
+        let p = percentiles_fine(&times);
+        per_category.push(AssetTiming {
+            category: cat.name,
+            p50_ms: p.p50_ms,
+            p95_ms: p.p95_ms,
+            max_ms: p.max_ms,
+            triangles: first.links.iter().flat_map(|l| &l.visuals).map(|v| v.mesh.triangles.len()).sum(),
+            primitives: first.links.iter().map(|l| l.collisions.len()).sum(),
+        });
+    }
+    let worst = per_category.iter().max_by(|a, b| a.p50_ms.total_cmp(&b.p50_ms));
+    let result = AssetsResult {
+        categories: per_category.len(),
+        seeds,
+        all: percentiles_fine(&all),
+        worst_median_ms: worst.map_or(0.0, |w| w.p50_ms),
+        worst_category: worst.map_or("", |w| w.category),
+        per_category,
+    };
+    if json {
+        print_json(&result);
+    } else {
+        let mut lines = vec![format!("{} categories × {} seeds", result.categories, result.seeds)];
+        lines.push(format!(
+            "{:<20} {:>9} {:>9} {:>9} {:>9} {:>5}",
+            "category", "p50 ms", "p95 ms", "max ms", "tris", "prims"
+        ));
+        for t in &result.per_category {
+            lines.push(format!(
+                "{:<20} {:>9.3} {:>9.3} {:>9.3} {:>9} {:>5}",
+                t.category, t.p50_ms, t.p95_ms, t.max_ms, t.triangles, t.primitives
+            ));
+        }
+        lines.push(format!(
+            "{:<20} {:>9.3} {:>9.3} {:>9.3}",
+            "all", result.all.p50_ms, result.all.p95_ms, result.all.max_ms
+        ));
+        lines.push(format!("slowest median: {} {:.3} ms", result.worst_category, result.worst_median_ms));
+        print(&lines.join("\n"));
+    }
+    Ok(0)
+}
+
+/// Percentiles rounded to 1 µs (asset generation takes well under a millisecond).
+fn percentiles_fine(xs: &[f64]) -> Percentiles {
+    let p = percentiles_raw(xs);
+    let r = |x: f64| (x * 1000.0).round() / 1000.0;
+    Percentiles { p50_ms: r(p.0), p95_ms: r(p.1), max_ms: r(p.2) }
+}
+
+fn percentiles_raw(xs: &[f64]) -> (f64, f64, f64) {
+    if xs.is_empty() {
+        return (0.0, 0.0, 0.0);
+    }
+    let mut v = xs.to_vec();
+    v.sort_by(f64::total_cmp);
+    let at = |q: f64| v[((q * (v.len() - 1) as f64).round() as usize).min(v.len() - 1)];
+    (at(0.5), at(0.95), v[v.len() - 1])
 }

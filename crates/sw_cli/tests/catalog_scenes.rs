@@ -1,0 +1,60 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! Every catalog category through the whole pipeline, as `scenewright generate "an empty
+//! room with one <display name>"` runs it: the planner reads the display name as that
+//! category, the layout places it, and MuJoCo verifies the scene.
+
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use sw_pipeline::{Options, generate};
+use sw_plan::Status;
+
+/// Categories that the pipeline cannot place in the default 6 × 5 × 3 m room today,
+/// and why. The test fails when one of them starts to work, so the list stays honest.
+const KNOWN_UNPLACEABLE: &[(&str, &str)] =
+    &[("pallet_rack", "4.5 m tall: the layout does not raise an unfixed room's 3 m ceiling")];
+
+#[test]
+fn an_empty_room_with_one_of_each_category_is_a_verified_scene_of_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let next = AtomicUsize::new(0);
+    let failures = Mutex::new(Vec::new());
+    let cats = sw_catalog::categories();
+    assert!(cats.len() >= 80, "the catalog has {} categories", cats.len());
+    std::thread::scope(|s| {
+        for _ in 0..2 {
+            s.spawn(|| {
+                while let Some(cat) = cats.get(next.fetch_add(1, Ordering::Relaxed)) {
+                    let prompt = format!("an empty room with one {}", cat.display);
+                    let out = dir.path().join(cat.name);
+                    let problem = match generate(&prompt, &out, &Options::default(), &mut |_| {}) {
+                        Err(e) => Some(format!("error: {e}")),
+                        Ok(o) => {
+                            let groups: Vec<(&str, u32)> =
+                                o.plan.objects.iter().map(|g| (g.category.as_str(), g.count)).collect();
+                            let placed = o.layout.objects.iter().filter(|x| x.category == cat.name).count();
+                            let known = KNOWN_UNPLACEABLE.iter().find(|(n, _)| *n == cat.name);
+                            if groups != [(cat.name, 1)] {
+                                Some(format!("planned as {groups:?}"))
+                            } else if o.report.status != Status::Verified {
+                                let why = o.report.verification.as_ref().map(|v| v.failures.join("; "));
+                                Some(format!("{:?}: {}", o.report.status, why.unwrap_or_default()))
+                            } else if placed != 1 && known.is_none() {
+                                Some(format!("{placed} placed: {:?}", o.report.left_out))
+                            } else if placed == 1 && known.is_some() {
+                                Some("is placed now: remove it from KNOWN_UNPLACEABLE".into())
+                            } else {
+                                None
+                            }
+                        }
+                    };
+                    if let Some(p) = problem {
+                        failures.lock().unwrap().push(format!("{prompt:?}: {p}"));
+                    }
+                }
+            });
+        }
+    });
+    let failures = failures.into_inner().unwrap();
+    assert!(failures.is_empty(), "{} of {} categories failed:\n{}", failures.len(), cats.len(), failures.join("\n"));
+}
