@@ -207,7 +207,9 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
                 let img = render_asset(&a, tile, tile);
                 let (x, y) = ((i as u32 % cols) * tile, (i as u32 / cols) * (tile + 22));
                 sheet.blit(&img, x, y);
-                sheet.text(x + 5, y + tile + 5, c.name, 2, [20, 20, 30]);
+                // 12 px per character at scale 2; long names drop to scale 1 to fit the tile.
+                let scale = if c.name.len() as u32 * 12 + 5 > tile { 1 } else { 2 };
+                sheet.text(x + 5, y + tile + 5 + (2 - scale) * 3, c.name, scale, [20, 20, 30]);
             }
             write_png(&sheet, &out)?;
             Ok(0)

@@ -39,7 +39,7 @@ fn build_lathe(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let bed_z = h * 0.68;
     let pw = (w * 0.2).min(0.5);
     for (x0, x1) in [(-hw, -hw + pw), (hw - pw, hw)] {
-        slab(b, [x0, -hd * 0.7, 0.0], [x1, hd * 0.5, bed_z - 0.25], body);
+        slab(b, [x0, -hd * 0.7, 0.0], [x1, hd, bed_z - 0.25], body);
     }
     slab(b, [-hw + 0.05, -hd * 0.7, bed_z - 0.25], [hw - 0.05, hd * 0.5, bed_z - 0.2], tray);
     slab(b, [-hw + 0.02, -hd * 0.25, bed_z - 0.2], [hw - 0.02, hd * 0.25, bed_z], steel);
@@ -63,7 +63,6 @@ fn build_lathe(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     slab(b, [cx - 0.05, -0.05, bed_z + 0.12], [cx + 0.05, 0.05, bed_z + 0.2], steel);
     // Splash guard along the back, full depth to the front apron's edge.
     slab(b, [-hw + hs, -hd, bed_z - 0.2], [hw, -hd * 0.7, h * 0.95], tray);
-    slab(b, [-hw + pw, hd * 0.45, 0.1], [-hw + pw + 0.02, hd, 0.12], tray);
     rod(b, [-hw + hs * 0.5, hd * 0.35 + 0.004, h - 0.12], 0.025, 0.008, Axis::Y, red);
     decal_between(b, [-hw + 0.05, hd * 0.35, bed_z + 0.05], [-hw + hs - 0.05, hd * 0.35 + 0.002, h - 0.2], tray);
     0.0

@@ -92,14 +92,14 @@ fn build_eyewash_station(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64
     let white = b.material("sign", [0.95, 0.95, 0.93, 1.0], false);
     let (hw, hd) = (w / 2.0, d / 2.0);
     let r = hw.min(hd);
-    let by = 0.0;
-    slab(b, [-hw * 0.6, -hd, 0.0], [hw * 0.6, hd * 0.2, 0.012], steel);
+    let by = 0.0; // the column stands under the bowl's centre
+    slab(b, [-hw * 0.6, -hd * 0.6, 0.0], [hw * 0.6, hd * 0.6, 0.012], steel);
     let zb = h - 0.12;
-    rod(b, [0.0, -hd + 0.06, zb / 2.0], 0.03, zb, Axis::Z, yellow);
+    rod(b, [0.0, by, zb / 2.0], 0.03, zb, Axis::Z, yellow);
     b.collision_on(
         0,
         Shape::Cylinder { radius: 0.03, half_height: zb / 2.0 - 0.006 },
-        Pose::from_pos([0.0, -hd + 0.06, zb / 2.0 + 0.006]),
+        Pose::from_pos([0.0, by, zb / 2.0 + 0.006]),
     );
     // The bowl: an open dish on the column, its rim at h.
     let bowl = revolve(
@@ -116,18 +116,13 @@ fn build_eyewash_station(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64
     );
     b.visual_mesh_on(0, &bowl, Pose::from_pos([0.0, by, 0.0]), green);
     round_collider(b, 0, [0.0, by], r, zb, h);
-    b.collision_on(
-        0,
-        Shape::Box { half: [0.03, (by - (-hd + 0.06)).abs() / 2.0 + 0.03, 0.02] },
-        Pose::from_pos([0.0, (by + (-hd + 0.06)) / 2.0, zb - 0.02]),
-    );
     for x in [-r * 0.35, r * 0.35] {
         rod(b, [x, by, zb + 0.05], 0.018, 0.04, Axis::Z, yellow);
     }
     // The push flag in front of the bowl and a sign plate on the column.
     decal_between(b, [-0.06, hd - 0.012, zb - 0.08], [0.06, hd, zb - 0.02], yellow);
     slab(b, [-0.01, 0.0, zb - 0.03], [0.01, hd - 0.012, zb - 0.015], yellow);
-    decal_between(b, [-0.08, -hd + 0.09, zb * 0.55], [0.08, -hd + 0.092, zb * 0.55 + 0.12], white);
+    decal_between(b, [-0.08, by + 0.03, zb * 0.55], [0.08, by + 0.032, zb * 0.55 + 0.12], white);
     0.0
 }
 
