@@ -97,9 +97,28 @@ const GROWTH: f64 = 1.2;
 pub fn solve(input: &LayoutInput<'_>) -> LaidOutScene {
     let mut size = input.plan.room.size;
     let original = size;
+    // A room whose size was not given is as tall as its tallest floor object needs.
+    let tallest = input.objects.iter().map(|o| o.asset.bounds().max[2]).fold(0.0, f64::max);
+    let raised = !input.plan.room.size_fixed && tallest + 0.3 > size.height;
+    if raised {
+        size.height = ((tallest + 0.5) * 10.0).ceil() / 10.0;
+    }
     let mut steps = 0;
     loop {
-        let result = attempt::run(input, size);
+        let mut result = attempt::run(input, size);
+        if raised {
+            result.scene.warnings.insert(
+                0,
+                Warning::new(
+                    Stage::Layout,
+                    "ceiling_raised",
+                    format!(
+                        "the ceiling was raised from {:.1} m to {:.1} m for a {:.1} m tall object (the room's size was not given)",
+                        original.height, size.height, tallest
+                    ),
+                ),
+            );
+        }
         let short = result.floor_failures > 0;
         if !short || input.plan.room.size_fixed || steps >= MAX_GROWTH_STEPS {
             let mut scene = result.scene;

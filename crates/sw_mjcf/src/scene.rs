@@ -9,7 +9,7 @@ use sw_plan::{LaidOutScene, PlacedObject, Wall};
 
 use crate::merge::{MERGED_SECTIONS, parse_list, prepare_robot};
 use crate::robot::{MergeError, PreparedRobot, RobotFile, RobotSource};
-use crate::xml::{Element, num, nums};
+use crate::xml::{Element, num, nums, sig};
 
 /// Simulation timestep of generated scenes, s.
 pub const TIMESTEP: f64 = 0.002;
@@ -584,7 +584,8 @@ fn inertial(link: &Link, mass: f64) -> Element {
         m / 12.0 * (s[0] * s[0] + s[1] * s[1]),
     ]
     .map(|v| v.max(1e-7));
-    Element::new("inertial").with("pos", nums(&c)).with("mass", num(m)).with("diaginertia", nums(&i))
+    let inertia = i.iter().map(|v| sig(*v)).collect::<Vec<_>>().join(" ");
+    Element::new("inertial").with("pos", nums(&c)).with("mass", sig(m)).with("diaginertia", inertia)
 }
 
 /// The `home` keyframe over every joint of the model: free bodies at their written

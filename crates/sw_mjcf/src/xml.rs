@@ -167,6 +167,19 @@ pub fn num(x: f64) -> String {
     if s == "-0" { "0".into() } else { s }
 }
 
+/// Formats a small positive physical quantity (mass, inertia) to 5 significant digits, in
+/// scientific notation below 0.001 so that it is never printed as 0.
+pub fn sig(x: f64) -> String {
+    if !x.is_finite() || x == 0.0 || x.abs() >= 1e-3 {
+        return num(x);
+    }
+    let s = format!("{x:.4e}");
+    match s.split_once('e') {
+        Some((m, e)) => format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.')),
+        None => s,
+    }
+}
+
 /// Formats a list of numbers, space separated.
 pub fn nums(xs: &[f64]) -> String {
     xs.iter().map(|x| num(*x)).collect::<Vec<_>>().join(" ")
@@ -184,6 +197,8 @@ mod tests {
         assert_eq!(num(-2.5), "-2.5");
         assert_eq!(num(f64::NAN), "0");
         assert_eq!(nums(&[1.0, 0.25, 3.0]), "1 0.25 3");
+        assert_eq!(sig(1.25e-7), "1.25e-7");
+        assert_eq!(sig(0.5), "0.5");
     }
 
     #[test]

@@ -94,6 +94,24 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
                     }
                 }
             }
+            // Digits glued to letters that are not a unit are one word: "3d", "4k", "2nd".
+            let mut k = j;
+            while chars.get(k).is_some_and(|(_, c)| c.is_alphanumeric()) {
+                k += 1;
+            }
+            if k > j {
+                let suffix: String = chars[j..k].iter().map(|(_, c)| c.to_ascii_lowercase()).collect();
+                let unit = matches!(suffix.as_str(), "m" | "cm" | "mm" | "km" | "ft" | "in" | "m2" | "sqm" | "x")
+                    || suffix.starts_with('x') && suffix[1..].chars().all(|c| c.is_ascii_digit())
+                    || ["meter", "meters", "metre", "metres", "feet", "foot", "inch", "inches"]
+                        .contains(&suffix.as_str());
+                if !unit && chars[i].1.is_ascii_digit() {
+                    let word: String = chars[i..k].iter().map(|(_, c)| *c).collect::<String>().to_lowercase();
+                    out.push(Token { kind: TokenKind::Word, norm: word, start, end: end_of(k) });
+                    i = k;
+                    continue;
+                }
+            }
             let raw: String = chars[i..j].iter().map(|(_, ch)| *ch).filter(|ch| *ch != ',').collect();
             let value = raw.parse::<f64>().unwrap_or(f64::NAN);
             out.push(Token { kind: TokenKind::Number(value), norm: raw, start, end: end_of(j) });
@@ -307,6 +325,7 @@ mod tests {
         assert_eq!(kinds("a -5 by 3"), ["a", "#-5", "by", "#3"]);
         assert_eq!(kinds("1,000 boxes, 20 crates."), ["#1000", "boxes", ",", "#20", "crates", "."]);
         assert_eq!(kinds("UR5e's arm"), ["ur5e's", "arm"]);
+        assert_eq!(kinds("a 3D printer, 2m"), ["a", "3d", "printer", ",", "#2", "m"]);
     }
 
     #[test]

@@ -141,6 +141,8 @@ pub(crate) const FDM_PRINTER: Category = Category {
     name: "fdm_printer",
     display: "fdm printer",
     synonyms: &[
+        "3d printer",
+        "3-d printer",
         "filament printer",
         "resin printer",
         "additive manufacturing printer",
