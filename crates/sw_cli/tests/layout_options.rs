@@ -35,6 +35,9 @@ fn anomalies_are_labelled_in_the_package_and_the_scene_still_verifies() {
     }
     let doc: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(doc["status"], "verified");
+    // Re-validating the package reads its labels too.
+    let v = run(&["validate", out.to_str().unwrap()]);
+    assert_eq!(v.status.code(), Some(0), "{}", String::from_utf8_lossy(&v.stdout));
 }
 
 #[test]

@@ -224,10 +224,11 @@ pub fn validate_dir(dir: &Path) -> Result<Verification, OutputError> {
     if !scene.is_file() {
         return Err(OutputError::NotAPackage(dir.to_path_buf()));
     }
-    let robots = std::fs::read_to_string(dir.join("layout.json"))
+    let layout = std::fs::read_to_string(dir.join("layout.json"))
         .ok()
-        .and_then(|t| serde_json::from_str::<LaidOutScene>(&t).ok())
-        .map(|l| l.robots.into_iter().map(|r| r.name).collect())
-        .unwrap_or_default();
-    Ok(sw_sim::verify_file(&scene, &sw_sim::VerifyOptions { robots, ..Default::default() }))
+        .and_then(|t| serde_json::from_str::<LaidOutScene>(&t).ok());
+    let robots = layout.as_ref().map(|l| l.robots.iter().map(|r| r.name.clone()).collect()).unwrap_or_default();
+    // What the package's labelled anomalies explain is expected, as when it was generated.
+    let expected_bodies = layout.as_ref().map(crate::report::anomaly_bodies).unwrap_or_default();
+    Ok(sw_sim::verify_file(&scene, &sw_sim::VerifyOptions { robots, expected_bodies, ..Default::default() }))
 }
