@@ -16,6 +16,7 @@ mod layout;
 mod plan;
 mod report;
 mod schema;
+mod telemetry;
 mod validate;
 
 pub use common::{Corner, Dims, NamedColor, Stage, Wall, Warning};
@@ -31,6 +32,7 @@ pub use report::{
     Status, Timings, Verification,
 };
 pub use schema::{SchemaFile, schemas};
+pub use telemetry::{EditLog, EditRecord, LlmCall, LlmOutcome, LlmStage};
 pub use validate::{FieldError, MAX_ROBOT_COUNT as MAX_ROBOTS, PlanError, ValidationErrors};
 
 /// The version of the contract types. Written into every document.

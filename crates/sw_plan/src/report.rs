@@ -6,7 +6,7 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::{Approximation, LeftOut, NotUnderstood, SCHEMA_VERSION, Stage, Violation, Warning};
+use crate::{Approximation, LeftOut, LlmCall, NotUnderstood, SCHEMA_VERSION, Stage, Violation, Warning};
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -26,6 +26,9 @@ pub struct Report {
     pub left_out: Vec<LeftOut>,
     pub violations: Vec<Violation>,
     pub warnings: Vec<Warning>,
+    /// Every call to a language model the run made (absent for offline runs).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub llm_calls: Vec<LlmCall>,
 }
 
 impl Report {
@@ -43,6 +46,7 @@ impl Report {
             left_out: Vec::new(),
             violations: Vec::new(),
             warnings: Vec::new(),
+            llm_calls: Vec::new(),
         }
     }
 }

@@ -1,6 +1,6 @@
 //! JSON Schemas of the contract types, generated from the code.
 
-use crate::{LaidOutScene, Report, ScenePlan, Timings};
+use crate::{EditLog, LaidOutScene, Report, ScenePlan, Timings};
 
 /// One schema document and the file name it is checked in under (`schemas/<file_name>`).
 #[derive(Debug, Clone)]
@@ -22,5 +22,6 @@ pub fn schemas() -> Vec<SchemaFile> {
         SchemaFile { file_name: "layout.schema.json", json: render(schemars::schema_for!(LaidOutScene)) },
         SchemaFile { file_name: "report.schema.json", json: render(schemars::schema_for!(Report)) },
         SchemaFile { file_name: "timings.schema.json", json: render(schemars::schema_for!(Timings)) },
+        SchemaFile { file_name: "edits.schema.json", json: render(schemars::schema_for!(EditLog)) },
     ]
 }
