@@ -10,9 +10,11 @@
 mod assemble;
 mod cues;
 mod lexicon;
+pub mod llm;
 mod parse;
 mod priors;
 mod text;
+pub mod vocab;
 
 use std::sync::OnceLock;
 
