@@ -62,6 +62,8 @@ pub(crate) struct Ctx<'a> {
     pub egress: Option<EgressGrid>,
     pub access: Vec<Aabb>,
     pub door_zone: Aabb,
+    /// Robots are being placed with guards kept at their safety distance.
+    pub guards_strict: bool,
 }
 
 impl<'a> Ctx<'a> {
@@ -187,6 +189,7 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
         profile,
         access: Vec::new(),
         door_zone: door_area,
+        guards_strict: true,
     };
     if let Some(w) = unknown_profile {
         ctx.warn("rules_profile_unknown", w);

@@ -431,6 +431,7 @@ fn generate(ctx: &mut Ctx<'_>, idx: usize, rel: &RelationKind) -> Vec<Spot> {
         RelationKind::InCenter => free_grid(ctx, idx, true).to_vec(),
         RelationKind::NextTo { target } => beside(ctx, idx, target, k),
         RelationKind::InFrontOf { target } => in_front_of(ctx, idx, target, k),
+        RelationKind::Around { target } if is_guard_of_arm(ctx, idx, target) => guard_ring(ctx, idx, target, k),
         RelationKind::Around { target } => around(ctx, idx, target, k, k),
         RelationKind::Between { first, second } => between(ctx, first, second, k),
         RelationKind::Under { target } => under(ctx, target, k),
@@ -593,6 +594,45 @@ fn in_front_of(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spot> {
                 let p = ts.apply([0.5 * (tb.min[0] + tb.max[0]) + shift, tb.max[1] + d + b.max[1], 0.0]);
                 out.push(Spot::new(p[0], p[1], 0.0, ts.yaw + PI));
                 out.push(Spot::new(p[0], p[1], 0.0, ts.yaw));
+            }
+        }
+    }
+    out
+}
+
+/// A guard (safety fence) around something an arm works at or on.
+fn is_guard_of_arm(ctx: &Ctx<'_>, idx: usize, target: &str) -> bool {
+    let Some((_, tags, _, _)) = ctx.profile.fence_distance() else { return false };
+    let guard = tags.iter().all(|t| ctx.input.objects[idx].has_tag(t));
+    guard && ctx.input.robots.iter().any(|r| r.is_arm && arm_at(r, target))
+}
+
+fn arm_at(r: &crate::RobotItem, group: &str) -> bool {
+    matches!(&r.mount, crate::RobotMount::Surface { group: g } if g == group) || r.near.as_deref() == Some(group)
+}
+
+/// A robot cell: guards on a square ring around the target, far enough out that an arm
+/// anywhere on (or beside) the target keeps the rule's safety distance to them.
+fn guard_ring(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spot> {
+    let Some((_, _, distance, _)) = ctx.profile.fence_distance() else { return Vec::new() };
+    let reach = ctx.input.robots.iter().filter(|r| r.is_arm && arm_at(r, target)).map(|r| r.reach).fold(0.0, f64::max);
+    let b = footprint(ctx, idx);
+    let mut out = Vec::new();
+    for (ti, ts) in targets_for(ctx, target, 0) {
+        let tb = ctx.bounds[ti];
+        // The farthest an arm's base can be from the target's centre, plus reach and distance.
+        let half_diag = 0.5 * (tb.max[0] - tb.min[0]).hypot(tb.max[1] - tb.min[1]);
+        let carrier = if ctx.input.robots.iter().any(|r| r.near.as_deref() == Some(target)) { 0.8 } else { 0.0 };
+        let radius = half_diag + carrier + reach + distance + 0.05;
+        let c = ts.apply([0.5 * (tb.min[0] + tb.max[0]), 0.5 * (tb.min[1] + tb.max[1]), 0.0]);
+        // Side k % 4 first: fences face the centre (their front, +Y, inwards).
+        for s in 0..4 {
+            let side = (k + s) % 4;
+            let (nx, ny) = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)][side];
+            for along in [0.0, -1.0, 1.0, -2.0, 2.0] {
+                let t = along * (b.max[0] - b.min[0] + 0.05);
+                let (px, py) = (c[0] + nx * (radius - b.min[1]) - ny * t, c[1] + ny * (radius - b.min[1]) + nx * t);
+                out.push(Spot::new(px, py, 0.0, yaw_facing(-nx, -ny)));
             }
         }
     }

@@ -20,11 +20,20 @@ const MOBILE_GAP: f64 = 0.25;
 pub(crate) fn place_all(ctx: &mut Ctx<'_>) {
     for ri in 0..ctx.input.robots.len() {
         let robot = ctx.input.robots[ri].clone();
-        let ok = match &robot.mount {
-            RobotMount::Surface { group } => on_surface(ctx, ri, &robot, group),
-            RobotMount::Carrier { object } => on_carrier(ctx, ri, &robot, object),
-            RobotMount::Floor => on_floor(ctx, ri, &robot),
-        };
+        // First with guards kept at their safety distance, then (reported by the rules
+        // check) without, rather than leaving the robot out.
+        let mut ok = false;
+        for strict in [true, false] {
+            ctx.guards_strict = strict;
+            ok = match &robot.mount {
+                RobotMount::Surface { group } => on_surface(ctx, ri, &robot, group),
+                RobotMount::Carrier { object } => on_carrier(ctx, ri, &robot, object),
+                RobotMount::Floor => on_floor(ctx, ri, &robot),
+            };
+            if ok {
+                break;
+            }
+        }
         if !ok {
             let s = ctx.space.half;
             ctx.warn(
@@ -42,7 +51,29 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>) {
 }
 
 /// The robot-space rule: an arm's reach plus margin stays off the doorway.
+/// The guard-distance rule: no guard within an arm's reach plus the safety distance
+/// (only while `guards_strict`).
+fn clear_of_guards(ctx: &Ctx<'_>, robot: &RobotItem, spot: &Spot) -> bool {
+    let Some((_, tags, distance, _)) = ctx.profile.fence_distance() else { return true };
+    if !robot.is_arm || !ctx.guards_strict {
+        return true;
+    }
+    ctx.input.objects.iter().enumerate().all(|(i, o)| {
+        let Some(p) = &ctx.placed[i] else { return true };
+        if !tags.iter().all(|t| o.has_tag(t)) {
+            return true;
+        }
+        let b = ctx.bounds[i].transformed(&p.spot.pose());
+        let dx = (b.min[0] - spot.x).max(spot.x - b.max[0]).max(0.0);
+        let dy = (b.min[1] - spot.y).max(spot.y - b.max[1]).max(0.0);
+        dx.hypot(dy) >= robot.reach + distance
+    })
+}
+
 fn clear_of_doorway(ctx: &Ctx<'_>, robot: &RobotItem, spot: &Spot) -> bool {
+    if !clear_of_guards(ctx, robot, spot) {
+        return false;
+    }
     let Some((_, margin, _)) = ctx.profile.robot_space() else { return true };
     if !robot.is_arm {
         return true;

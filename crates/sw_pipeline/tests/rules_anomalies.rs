@@ -151,3 +151,24 @@ fn what_does_not_fit_a_fixed_room_is_shrunk_within_its_ranges_before_anything_is
         assert!(t.size[0] >= 0.4 - 1e-6 && t.size[1] >= 0.4 - 1e-6, "{t:?}");
     }
 }
+
+#[test]
+fn fences_around_an_arms_bench_form_a_cell_at_the_safety_distance() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = "a workshop with a workbench, a UR5e on the workbench and four safety fences around the workbench";
+    for seed in 0..3 {
+        let o = generate(p, &dir.path().join(format!("p{seed}")), &Options { seed, ..Options::default() }, &mut |_| {})
+            .unwrap();
+        assert_eq!(o.report.status, Status::Verified);
+        assert_eq!(o.layout.objects.iter().filter(|x| x.category == "safety_fence").count(), 4);
+        assert!(o.report.violations.is_empty(), "seed {seed}: {:#?}", o.report.violations);
+    }
+    // Fences pushed inside the reach are named.
+    let q = "a workshop with a UR5e on a pedestal next to a safety fence";
+    let o = generate(q, &dir.path().join("close"), &Options::default(), &mut |_| {}).unwrap();
+    assert_eq!(o.report.status, Status::Verified);
+    for v in &o.report.violations {
+        assert_eq!(v.rule, "robot_fence_distance", "{v:?}");
+        assert!(v.standard.contains("ISO 13857"));
+    }
+}

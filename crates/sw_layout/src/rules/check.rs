@@ -196,6 +196,33 @@ pub fn check(input: &LayoutInput<'_>, scene: &LaidOutScene, profile: &Profile, d
         }
     }
 
+    // Guards stand outside an arm's reach by the safety distance.
+    if let Some((rule, tags, distance, standard)) = profile.fence_distance() {
+        for r in &scene.robots {
+            let Some(item) = input.robots.iter().find(|x| x.name == r.name).filter(|x| x.is_arm) else { continue };
+            for f in standing.iter().filter(|s| tags.iter().all(|t| s.tags.contains(t))) {
+                let dx = (f.world.min[0] - r.pos[0]).max(r.pos[0] - f.world.max[0]).max(0.0);
+                let dy = (f.world.min[1] - r.pos[1]).max(r.pos[1] - f.world.max[1]).max(0.0);
+                let beyond_reach = dx.hypot(dy) - item.reach;
+                if beyond_reach < distance {
+                    out.push(Violation {
+                        rule: rule.to_string(),
+                        objects: vec![f.name.clone(), r.name.clone()],
+                        measured: round_cm(beyond_reach),
+                        required: distance,
+                        unit: "m".into(),
+                        standard: standard.to_string(),
+                        message: format!(
+                            "{}: {:.2} m outside the reach of {}, {distance:.2} m required",
+                            f.name, beyond_reach, r.name
+                        ),
+                        requested: false,
+                    });
+                }
+            }
+        }
+    }
+
     // The robot's restricted space off the doorway.
     if let Some((rule, margin, standard)) = profile.robot_space() {
         for r in &scene.robots {

@@ -40,6 +40,8 @@ pub enum RuleDef {
     },
     /// An arm's reach (plus a margin) stays off the doorway.
     RobotSpace { margin_m: f64, standard: String },
+    /// Guards (objects with all of `tags`) stand this far outside an arm's reach.
+    FenceDistance { tags: Vec<String>, distance_m: f64, standard: String },
 }
 
 #[derive(Debug, Deserialize)]
@@ -120,7 +122,18 @@ impl Profile {
         self.rules.iter().find(|(id, _)| id == rule).map_or("", |(_, r)| match r {
             RuleDef::Egress { standard, .. }
             | RuleDef::Clearance { standard, .. }
-            | RuleDef::RobotSpace { standard, .. } => standard.as_str(),
+            | RuleDef::RobotSpace { standard, .. }
+            | RuleDef::FenceDistance { standard, .. } => standard.as_str(),
+        })
+    }
+
+    /// The guard-distance rule, if the profile has one: (id, tags, distance, standard).
+    pub fn fence_distance(&self) -> Option<(&str, &[String], f64, &str)> {
+        self.rules.iter().find_map(|(id, r)| match r {
+            RuleDef::FenceDistance { tags, distance_m, standard } => {
+                Some((id.as_str(), tags.as_slice(), *distance_m, standard.as_str()))
+            }
+            _ => None,
         })
     }
 
