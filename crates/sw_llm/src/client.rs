@@ -74,6 +74,14 @@ impl Telemetry {
         }
     }
 
+    /// Adds calls another client already recorded (and counted in the metrics).
+    pub fn extend(&self, calls: Vec<LlmCall>) {
+        match self.0.lock() {
+            Ok(mut v) => v.extend(calls),
+            Err(p) => p.into_inner().extend(calls),
+        }
+    }
+
     /// Every call so far, in the order they ended.
     pub fn calls(&self) -> Vec<LlmCall> {
         match self.0.lock() {

@@ -28,6 +28,15 @@ pub struct Forged {
 
 /// Builds every asset of the plan.
 pub fn forge(plan: &ScenePlan, seed: u64) -> Forged {
+    forge_with(plan, seed, &mut |group, k| make(group, k, seed).map_err(|e| e.to_string()))
+}
+
+/// An instance's asset, catalog tags and label, or why it could not be made.
+pub(crate) type Made = Result<(Asset, Vec<String>, String), String>;
+
+/// Builds every asset of the plan with `maker` (object group, instance index), robots
+/// and their mounts from the catalog.
+pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&ObjectPlan, u32) -> Made) -> Forged {
     let mut out = Forged::default();
     let mut counters: std::collections::BTreeMap<String, u32> = std::collections::BTreeMap::new();
     let mut next_name = |base: &str| {
@@ -38,7 +47,7 @@ pub fn forge(plan: &ScenePlan, seed: u64) -> Forged {
     for group in &plan.objects {
         let mut noted = false;
         for k in 0..group.count {
-            let (asset, tags, label) = match make(group, k, seed) {
+            let (asset, tags, label) = match maker(group, k) {
                 Ok(x) => x,
                 Err(e) => {
                     out.warnings.push(Warning::new(
@@ -182,11 +191,11 @@ pub fn shrunk(o: &ForgedObject, factor: f64) -> Asset {
 }
 
 /// The seed of instance `k` of a group: independent of other groups and of order.
-fn instance_seed(seed: u64, group: &str, k: u32) -> u64 {
+pub(crate) fn instance_seed(seed: u64, group: &str, k: u32) -> u64 {
     Rng::derive(seed, &format!("{group}#{k}")).next_u64()
 }
 
-fn make(group: &ObjectPlan, k: u32, seed: u64) -> Result<(Asset, Vec<String>, String), CatalogError> {
+pub(crate) fn make(group: &ObjectPlan, k: u32, seed: u64) -> Result<(Asset, Vec<String>, String), CatalogError> {
     let color = group.color.as_ref().map(|c| c.rgba.map(|v| v as f32));
     if let Some(p) = &group.proxy {
         let s = instance_seed(seed, &group.id, k);

@@ -6,7 +6,9 @@
 //! time. The package is written to a temporary sibling directory and renamed into place
 //! only when complete, so an interrupted or failed run never leaves half a package.
 
+mod asset_source;
 mod forge;
+mod llm_generate;
 mod package;
 mod report;
 mod robot_facts;
@@ -22,7 +24,9 @@ use sw_plan::{
 };
 use tracing::info_span;
 
+pub use asset_source::{AssetSource, CadCallSource, CatalogSource, GroupAssets, MadeAsset};
 pub use forge::{Forged, ForgedObject, forge};
+pub use llm_generate::{LlmRun, Structure, generate_with_llm, plan_with_llm};
 pub use package::{OutputError, discard_staged_packages, validate_dir};
 pub use robot_facts::measure as measure_robot;
 pub use variations::{generate_variations, structural_difference};
@@ -126,6 +130,13 @@ pub fn generate(
         let _s = info_span!("stage", stage = "plan").entered();
         sw_planner::plan(prompt).map_err(|e| PipelineError::Input(e.to_string()))?
     };
+    apply_options(&mut plan, opts)?;
+    finish(Stage::Plan, t, report::plan_summary(&plan), &mut timings, on_event);
+    run_from_plan(prompt, plan, out, opts, Prepared::default(), timings, started, on_event)
+}
+
+/// The command line's overrides of a plan: robots, rules profile, anomalies.
+fn apply_options(plan: &mut ScenePlan, opts: &Options) -> Result<(), PipelineError> {
     if let Some(models) = &opts.robots {
         plan.robots = robots_override(models)?;
     }
@@ -142,14 +153,61 @@ pub fn generate(
         }
         plan.anomaly = Some(a.clone());
     }
-    finish(Stage::Plan, t, report::plan_summary(&plan), &mut timings, on_event);
+    Ok(())
+}
+
+/// Finishes L2 for a plan (the LLM path: waits for assets already being made).
+pub(crate) type FinishForge<'a> = Box<dyn FnOnce(&ScenePlan) -> Forged + 'a>;
+
+/// What an earlier stage prepared for [`run_from_plan`]: the LLM path's assets (made
+/// while the plan was still streaming), its warnings and its calls.
+#[derive(Default)]
+pub(crate) struct Prepared<'a> {
+    /// Finishes L2 (waits for the assets already being made); `forge` when absent.
+    pub forge: Option<FinishForge<'a>>,
+    pub warnings: Vec<Warning>,
+    /// The calls of the run, read when the report is written.
+    pub telemetry: Option<sw_llm::Telemetry>,
+}
+
+fn stage_started(s: Stage, on_event: &mut dyn FnMut(&Event)) -> Instant {
+    on_event(&Event::StageStarted { stage: s });
+    Instant::now()
+}
+
+fn stage_finished(s: Stage, t0: Instant, summary: String, timings: &mut Timings, on_event: &mut dyn FnMut(&Event)) {
+    let ms = t0.elapsed().as_secs_f64() * 1000.0;
+    match timings.stages.iter_mut().find(|x| x.stage == s) {
+        Some(x) => x.ms += ms,
+        None => timings.stages.push(StageTiming { stage: s, ms }),
+    }
+    on_event(&Event::StageFinished { stage: s, ms, summary });
+}
+
+/// L2 to verification for a plan, and the package.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn run_from_plan(
+    prompt: &str,
+    plan: ScenePlan,
+    out: &Path,
+    opts: &Options,
+    prepared: Prepared<'_>,
+    mut timings: Timings,
+    started: Instant,
+    on_event: &mut dyn FnMut(&Event),
+) -> Result<Outcome, PipelineError> {
+    let stage = stage_started;
+    let finish = stage_finished;
     let staging = package::Staging::create(out)?;
 
     // L2
     let t = stage(Stage::Forge, on_event);
     let mut forged = {
         let _s = info_span!("stage", stage = "forge").entered();
-        forge(&plan, opts.seed)
+        match prepared.forge {
+            Some(f) => f(&plan),
+            None => forge(&plan, opts.seed),
+        }
     };
     finish(Stage::Forge, t, report::count(forged.objects.len(), "asset", "assets"), &mut timings, on_event);
 
@@ -202,7 +260,8 @@ pub fn generate(
     finish(Stage::Layout, t, report::layout_summary(&layout), &mut timings, on_event);
     let expected = report::anomaly_bodies(&layout);
 
-    let mut warnings: Vec<Warning> = forged.warnings.clone();
+    let mut warnings: Vec<Warning> = prepared.warnings;
+    warnings.extend(forged.warnings.iter().cloned());
     let mut verification: Option<Verification> = None;
     for round in 0..=MAX_REPAIRS {
         // L4
@@ -256,7 +315,8 @@ pub fn generate(
     }
 
     timings.total_ms = started.elapsed().as_secs_f64() * 1000.0;
-    let report = report::assemble(&plan, &layout, opts.seed, warnings, verification);
+    let mut report = report::assemble(&plan, &layout, opts.seed, warnings, verification);
+    report.llm_calls = prepared.telemetry.map(|t| t.calls()).unwrap_or_default();
     staging.write_report(&report, &timings)?;
     let out_dir = staging.commit()?;
     Ok(Outcome { plan, layout, report, timings, out_dir })
