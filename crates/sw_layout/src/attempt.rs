@@ -150,6 +150,11 @@ pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
 }
 
 pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
+    run_pinned(input, size, None)
+}
+
+/// An attempt with some objects and robots kept where they were (see `pinned`).
+pub(crate) fn run_pinned(input: &LayoutInput<'_>, size: Dims, pins: Option<&crate::Pins>) -> AttemptResult {
     let plan = input.plan;
     let door = door_for(plan.room.kind, plan.room.door, &size);
     let mut space = Space::new(size.width, size.depth, size.height);
@@ -194,6 +199,10 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
     if let Some(w) = unknown_profile {
         ctx.warn("rules_profile_unknown", w);
     }
+    if let Some(p) = pins {
+        crate::pinned::commit(&mut ctx, p);
+    }
+    let pinned: Vec<bool> = ctx.placed.iter().map(Option::is_some).collect();
 
     // 1. Furniture and fixtures on the floor, targets before the things related to them.
     let is_small = |i: usize| input.objects[i].asset.placement == PlacementKind::OnSurface;
@@ -202,7 +211,8 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
     let has_relations = |i: usize| related[i];
     let furniture: Vec<usize> = (0..input.objects.len())
         .filter(|&i| {
-            input.objects[i].carries_robot.is_none()
+            !pinned[i]
+                && input.objects[i].carries_robot.is_none()
                 && (!is_small(i) || has_relations(i))
                 && surface_target(&ctx, i).is_none()
         })
@@ -214,14 +224,15 @@ pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
     robots::place_all(&mut ctx);
     // 3. Items on surfaces (and large objects said to be on something).
     let on_surfaces: Vec<usize> = (0..input.objects.len())
-        .filter(|&i| input.objects[i].carries_robot.is_none() && surface_target(&ctx, i).is_some())
+        .filter(|&i| !pinned[i] && input.objects[i].carries_robot.is_none() && surface_target(&ctx, i).is_some())
         .collect();
     surface::place_all(&mut ctx, &on_surfaces);
     // 4. Small items with no support named: on work surfaces when they are tabletop
     //    things, else on the floor.
     let rest: Vec<usize> = (0..input.objects.len())
         .filter(|&i| {
-            input.objects[i].carries_robot.is_none()
+            !pinned[i]
+                && input.objects[i].carries_robot.is_none()
                 && is_small(i)
                 && !has_relations(i)
                 && surface_target(&ctx, i).is_none()

@@ -13,12 +13,14 @@ mod anomaly;
 mod attempt;
 mod floor;
 mod frames;
+mod pinned;
 mod robots;
 pub mod rules;
 mod space;
 mod surface;
 
 pub use anomaly::inject as inject_anomalies;
+pub use pinned::{Pins, solve_pinned};
 use sw_geom::{Aabb, Asset};
 use sw_plan::{LaidOutScene, ScenePlan, Stage, Warning};
 

@@ -19,6 +19,10 @@ const MOBILE_GAP: f64 = 0.25;
 
 pub(crate) fn place_all(ctx: &mut Ctx<'_>) {
     for ri in 0..ctx.input.robots.len() {
+        if ctx.robots[ri].is_some() {
+            // Pinned where an earlier layout put it.
+            continue;
+        }
         let robot = ctx.input.robots[ri].clone();
         // First with guards kept at their safety distance, then (reported by the rules
         // check) without, rather than leaving the robot out.
