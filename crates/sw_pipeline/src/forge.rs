@@ -196,9 +196,15 @@ pub(crate) fn instance_seed(seed: u64, group: &str, k: u32) -> u64 {
 }
 
 pub(crate) fn make(group: &ObjectPlan, k: u32, seed: u64) -> Result<(Asset, Vec<String>, String), CatalogError> {
+    // Identical-looking groups share one seed; boxes, plants and proxies vary per instance.
+    let vary = group.proxy.is_some() || sw_catalog::find(&group.category).is_none_or(|c| c.vary_per_instance);
+    make_seeded(group, instance_seed(seed, &group.id, if vary { k } else { 0 }))
+}
+
+/// An instance's asset from its own seed (the one `layout.json` records as `asset_seed`).
+pub(crate) fn make_seeded(group: &ObjectPlan, s: u64) -> Result<(Asset, Vec<String>, String), CatalogError> {
     let color = group.color.as_ref().map(|c| c.rgba.map(|v| v as f32));
     if let Some(p) = &group.proxy {
-        let s = instance_seed(seed, &group.id, k);
         let a = sw_catalog::proxy_asset(&p.label, [p.size.width, p.size.depth, p.size.height], p.movable, color, s);
         let mut tags = vec!["proxy".to_string()];
         if p.movable {
@@ -207,8 +213,6 @@ pub(crate) fn make(group: &ObjectPlan, k: u32, seed: u64) -> Result<(Asset, Vec<
         return Ok((a, tags, p.label.clone()));
     }
     let cat = sw_catalog::find(&group.category).ok_or_else(|| CatalogError::UnknownCategory(group.category.clone()))?;
-    // Identical-looking groups share one seed; boxes and plants vary per instance.
-    let s = instance_seed(seed, &group.id, if cat.vary_per_instance { k } else { 0 });
     let mut req = AssetRequest::new(cat.name, s);
     req.scale = scale_of(&group.size);
     req.color = color;
@@ -239,7 +243,7 @@ fn scale_of(hint: &SizeHint) -> Option<[f64; 3]> {
     Some(s)
 }
 
-fn slug(label: &str) -> String {
+pub(crate) fn slug(label: &str) -> String {
     let s: String =
         label.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_lowercase() } else { '_' }).collect();
     let s = s.trim_matches('_').to_string();

@@ -7,9 +7,13 @@
 //! only when complete, so an interrupted or failed run never leaves half a package.
 
 mod asset_source;
+mod edit;
+mod edit_ops;
+mod edit_work;
 mod forge;
 mod llm_generate;
 mod package;
+mod rebuild;
 mod report;
 mod robot_facts;
 mod variations;
@@ -25,6 +29,7 @@ use sw_plan::{
 use tracing::info_span;
 
 pub use asset_source::{AssetSource, CadCallSource, CatalogSource, GroupAssets, MadeAsset};
+pub use edit::{EditOutcome, EditReader, edit_package};
 pub use forge::{Forged, ForgedObject, forge};
 pub use llm_generate::{LlmRun, Structure, generate_with_llm, plan_with_llm};
 pub use package::{OutputError, discard_staged_packages, validate_dir};

@@ -1,0 +1,129 @@
+//! A package's assets, made again from what it records: each object's asset from its
+//! plan group and `asset_seed` (footprints shrunk to fit are shrunk again to the recorded
+//! size), the pedestals and carts that carry robots, and the robots with their mounts.
+//! Bridging the result with the package's own layout writes the package's `scene.xml`
+//! byte for byte (the tests check this), which is what lets an edit keep everything it
+//! does not change exactly as it was.
+
+use sw_catalog::AssetRequest;
+use sw_layout::{RobotItem, RobotMount};
+use sw_plan::{LaidOutScene, PlacedObject, ScenePlan};
+
+use crate::forge::{Forged, ForgedObject, make_seeded, shrunk};
+
+/// Rebuilds the assets of a package; errors name the object.
+pub(crate) fn rebuild(plan: &ScenePlan, layout: &LaidOutScene) -> Result<Forged, String> {
+    let mut out = Forged::default();
+    for o in &layout.objects {
+        out.objects.push(object(plan, layout, o)?);
+    }
+    for r in &layout.robots {
+        out.robots.push(robot(plan, layout, r)?);
+    }
+    Ok(out)
+}
+
+/// One object's asset, as the package made it.
+pub(crate) fn object(plan: &ScenePlan, layout: &LaidOutScene, o: &PlacedObject) -> Result<ForgedObject, String> {
+    let carries_robot = layout
+        .robots
+        .iter()
+        .find(|r| r.mount != "surface" && r.mounted_on.as_deref() == Some(o.name.as_str()))
+        .map(|r| r.name.clone());
+    let (asset, tags, label) = match plan.object(&o.group) {
+        Some(g) => make_seeded(g, o.asset_seed).map_err(|e| format!("{}: {e}", o.name))?,
+        None => {
+            // A robot's pedestal or cart (its group is the robot's, with `_mount`).
+            let asset = sw_catalog::generate(&AssetRequest::new(&o.category, o.asset_seed))
+                .unwrap_or_else(|_| sw_catalog::proxy_asset(&o.category, [0.5, 0.5, 0.7], false, None, 0));
+            let tags = sw_catalog::find(&o.category)
+                .map(|c| c.tags.iter().map(|t| t.to_string()).collect())
+                .unwrap_or_default();
+            (asset, tags, o.category.replace('_', " "))
+        }
+    };
+    let mut f = ForgedObject {
+        name: o.name.clone(),
+        group: o.group.clone(),
+        category: o.category.clone(),
+        label: o.label.clone(),
+        asset,
+        tags,
+        carries_robot,
+    };
+    let _ = label;
+    // Footprints shrunk to fit the room are shrunk again to the recorded size (the
+    // layout records the extent of the collision geometry).
+    let extent =
+        |a: &sw_geom::Asset| a.collision_aabbs().iter().fold(sw_geom::Aabb::EMPTY, |acc, b| acc.union(b)).size();
+    let s = extent(&f.asset);
+    let off = |a: f64, b: f64| (a - b).abs() > 2e-4;
+    if (off(s[0], o.size[0]) || off(s[1], o.size[1])) && s[0] > 0.0 {
+        // The pipeline's own steps first, then the ratio of the recorded size.
+        for factor in crate::SHRINK_STEPS.into_iter().chain([o.size[0] / s[0]]) {
+            let candidate = shrunk(&f, factor);
+            let c = extent(&candidate);
+            if !off(c[0], o.size[0]) && !off(c[1], o.size[1]) {
+                f.asset = candidate;
+                break;
+            }
+        }
+    }
+    Ok(f)
+}
+
+fn robot(plan: &ScenePlan, layout: &LaidOutScene, r: &sw_plan::PlacedRobot) -> Result<RobotItem, String> {
+    let def =
+        sw_robots::find(&r.model).ok_or_else(|| format!("{}: robot model '{}' is not registered", r.name, r.model))?;
+    let facts = crate::robot_facts::facts(def);
+    let mount = match (r.mount.as_str(), &r.mounted_on) {
+        ("surface", Some(host)) => {
+            let group = layout
+                .object(host)
+                .map(|h| h.group.clone())
+                .ok_or_else(|| format!("{}: its surface {host} is missing", r.name))?;
+            RobotMount::Surface { group }
+        }
+        (_, Some(carrier)) => RobotMount::Carrier { object: carrier.clone() },
+        _ => RobotMount::Floor,
+    };
+    Ok(RobotItem {
+        name: r.name.clone(),
+        group: r.group.clone(),
+        model: def.name.to_string(),
+        is_arm: def.kind == sw_robots::RobotKind::Arm,
+        keepout: facts.keepout.iter().map(|(lo, hi)| sw_geom::Aabb { min: *lo, max: *hi }).collect(),
+        base_radius: facts.base_radius,
+        reach: facts.reach,
+        mount,
+        near: plan.robots.iter().find(|p| p.id == r.group).and_then(|p| p.near.clone()),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used, clippy::expect_used)]
+
+    use super::*;
+    use crate::{Options, generate};
+
+    /// Rebuilt assets bridged with the package's layout write its scene.xml exactly.
+    #[test]
+    fn a_rebuilt_package_bridges_to_the_same_scene() {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../bench/prompts.txt")).unwrap();
+        let prompts: Vec<&str> = text.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#')).collect();
+        let dir = tempfile::tempdir().unwrap();
+        for (i, p) in prompts.iter().enumerate() {
+            let out = dir.path().join(format!("p{i}"));
+            let o = generate(p, &out, &Options { seed: i as u64, verify: false, ..Options::default() }, &mut |_| {})
+                .unwrap();
+            if !o.layout.anomalies.is_empty() {
+                continue;
+            }
+            let forged = rebuild(&o.plan, &o.layout).unwrap();
+            let files = crate::package::bridge(&o.plan.prompt, &o.layout, &forged).unwrap();
+            let on_disk = std::fs::read_to_string(out.join("scene.xml")).unwrap();
+            assert!(files.scene_xml == on_disk, "prompt {i} ({p}): the rebuilt scene differs");
+        }
+    }
+}
