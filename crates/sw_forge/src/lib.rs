@@ -1,0 +1,12 @@
+//! L2, the asset forge: turns an object description into a validated mesh.
+//!
+//! - [`runner`]: a pool of warm, sandboxed Python workers that run generated CadQuery
+//!   (or OpenSCAD) code and hand back an STL or a structured error;
+//! - [`validate`]: is the mesh a closed solid of the requested size, volume and number
+//!   of through-holes;
+//! - [`failure`]: the taxonomy every failed attempt is filed under.
+
+pub mod failure;
+pub mod mesh_io;
+pub mod runner;
+pub mod validate;
