@@ -47,6 +47,20 @@ pub(crate) enum BenchCommand {
         #[arg(long)]
         json: bool,
     },
+    /// End-to-end latency with LLM stages against a local server with the paper's
+    /// per-call latencies (time-scaled), ours next to the paper's structure.
+    LlmLatency {
+        /// Runs per scenario (5 misses, 8 misses, all cached).
+        #[arg(long, default_value_t = 40)]
+        runs: usize,
+        /// Simulated seconds per real second.
+        #[arg(long, default_value_t = 500.0)]
+        time_scale: f64,
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 #[derive(Debug, Serialize)]
@@ -85,6 +99,9 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
     match c {
         BenchCommand::Scenes { suite, prompt, seeds, repeat, json } => scenes(suite, prompt, seeds, repeat, json),
         BenchCommand::Assets { seeds, only, json } => assets(seeds, &only, json),
+        BenchCommand::LlmLatency { runs, time_scale, seed, json } => {
+            crate::bench_llm::run(runs, time_scale, seed, json)
+        }
     }
 }
 

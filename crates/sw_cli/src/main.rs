@@ -3,9 +3,12 @@
 //! Exit codes: 0 success; 2 bad input (one line on stderr); 1 internal error or a scene
 //! that failed verification.
 
+mod bench_llm;
 mod cmd_assets;
 mod cmd_bench;
+mod cmd_edit;
 mod cmd_generate;
+mod cmd_llm;
 mod cmd_robots;
 mod output;
 
@@ -58,6 +61,14 @@ enum Command {
     /// Benchmarks that print numbers.
     #[command(subcommand)]
     Bench(cmd_bench::BenchCommand),
+    /// Generate with an LLM planner, print its plan, show the configured endpoints.
+    #[command(subcommand)]
+    Llm(cmd_llm::LlmCommand),
+    /// Change a package in plain English ("remove the chair next to the conveyor").
+    Edit(cmd_edit::EditArgs),
+    /// A conversation that asks about what a prompt leaves open, ending with a final
+    /// prompt and plan.
+    Refine(cmd_edit::RefineArgs),
     /// Write the JSON Schemas of plan.json, layout.json, report.json and timings.json.
     Schema {
         /// Directory to write into (default: print the plan schema).
@@ -127,6 +138,9 @@ fn main() -> ExitCode {
         Command::Robots(c) => cmd_robots::run(c),
         Command::Bench(c) => cmd_bench::run(c),
         Command::Schema { out } => schema(out),
+        Command::Llm(c) => cmd_llm::run(c),
+        Command::Edit(a) => cmd_edit::edit(a),
+        Command::Refine(a) => cmd_edit::refine(a),
     };
     match result {
         Ok(code) => ExitCode::from(code),

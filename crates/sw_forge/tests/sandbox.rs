@@ -17,7 +17,7 @@ use std::sync::{Mutex, OnceLock};
 use std::time::Duration;
 
 use sw_forge::failure::FailureKind;
-use sw_forge::runner::{CadJob, CadRunner, RunnerConfig};
+use sw_forge::runner::{CadError, CadJob, CadRunner, RunnerConfig};
 
 const BENIGN: &str = "result = cq.Workplane('XY').box(10, 20, 30)";
 
@@ -344,10 +344,19 @@ fn openscad_cannot_read_files_or_run_forever() {
     let e = w.runner.run(&CadJob::openscad(read.clone())).expect_err("refused");
     assert_eq!(e.failure.kind, FailureKind::SandboxViolation, "{}", e.failure.message);
     assert!(!e.worker_replaced);
-    // Without the statement check, Landlock keeps the file out of OpenSCAD's reach.
-    let e = w.runner.run(&CadJob { check_policy: false, ..CadJob::openscad(read) }).expect_err("no geometry");
+    // Without the statement check, Landlock keeps the file out of OpenSCAD's reach. A
+    // cold OpenSCAD start (its libraries not yet in the page cache, the machine busy with
+    // the bombs of the other tests) can outlast the suite's 3 s limit: such a run proves
+    // nothing either way and is tried again.
+    let e = patiently(|| w.runner.run(&CadJob { check_policy: false, ..CadJob::openscad(read.clone()) }))
+        .expect_err("no geometry");
     w.assert_no_escape("scad_read", &canary, &[&e.failure.message, e.output()]);
-    assert!(e.output().contains("Can't open") || e.output().contains("WARNING"), "{}", e.output());
+    assert!(
+        e.output().contains("Can't open") || e.output().contains("WARNING"),
+        "OpenSCAD did not report the refused file: {:?}, output {:?}",
+        e.failure,
+        e.output()
+    );
     let forever = "cube(len([for (i = [0 : 1e5]) for (j = [0 : 1e5]) i]));";
     let e = w.runner.run(&CadJob::openscad(forever)).expect_err("stopped");
     assert!(
@@ -356,6 +365,18 @@ fn openscad_cannot_read_files_or_run_forever() {
         e.failure
     );
     w.assert_healthy("scad");
-    let ok = w.runner.run(&CadJob::openscad("cube([10, 20, 30]);")).expect("OpenSCAD runs");
+    let ok = patiently(|| w.runner.run(&CadJob::openscad("cube([10, 20, 30]);"))).expect("OpenSCAD runs");
     assert_eq!(ok.mesh.bounds().size().map(|v| v.round()), [10.0, 20.0, 30.0]);
+}
+
+/// Runs a job up to three times while it times out (see the OpenSCAD test).
+fn patiently<T>(mut job: impl FnMut() -> Result<T, CadError>) -> Result<T, CadError> {
+    let mut last = job();
+    for _ in 0..2 {
+        match &last {
+            Err(e) if e.failure.kind == FailureKind::Timeout => last = job(),
+            _ => break,
+        }
+    }
+    last
 }

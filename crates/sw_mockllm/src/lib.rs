@@ -349,6 +349,8 @@ impl Writer<'_> {
 }
 
 fn serve(conn: TcpStream, responder: &Responder, log: &Mutex<Vec<Request>>, stop: &AtomicBool) -> std::io::Result<()> {
+    // Streamed pieces go out as they are written, as a real server's do.
+    conn.set_nodelay(true)?;
     let req = read_request(&conn)?;
     if let Ok(mut l) = log.lock() {
         l.push(req.clone());
@@ -389,9 +391,13 @@ fn serve(conn: TcpStream, responder: &Responder, log: &Mutex<Vec<Request>>, stop
             if !pause(first, stop) {
                 return Ok(());
             }
+            // Each piece is due at a fixed time from the first, so sleep overshoots do not
+            // add up over many pieces.
+            let start = Instant::now();
             let gap = if ps.len() > 1 { total.saturating_sub(first) / (ps.len() as u32) } else { Duration::ZERO };
             for (i, p) in ps.iter().enumerate() {
-                if i > 0 && !pause(gap, stop) {
+                let due = start + gap * (i as u32);
+                if i > 0 && !pause(due.saturating_duration_since(Instant::now()), stop) {
                     return Ok(());
                 }
                 w.chunk(&chunk(Some(p), None, &model))?;

@@ -14,6 +14,7 @@ mod forge;
 mod llm_generate;
 mod package;
 mod rebuild;
+mod refine;
 mod report;
 mod robot_facts;
 mod variations;
@@ -33,6 +34,7 @@ pub use edit::{EditOutcome, EditReader, edit_package};
 pub use forge::{Forged, ForgedObject, forge};
 pub use llm_generate::{LlmRun, Structure, generate_with_llm, plan_with_llm};
 pub use package::{OutputError, discard_staged_packages, validate_dir};
+pub use refine::{Refined, Refiner, Turn};
 pub use robot_facts::measure as measure_robot;
 pub use variations::{generate_variations, structural_difference};
 

@@ -13,6 +13,7 @@ mod lexicon;
 pub mod llm;
 mod parse;
 mod priors;
+pub mod refine;
 mod text;
 pub mod vocab;
 

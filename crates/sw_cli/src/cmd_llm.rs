@@ -1,0 +1,229 @@
+//! `scenewright llm …`: the pipeline with a language model for L1 (`llm generate`), the
+//! plan alone (`llm plan`) and the configured endpoints (`llm status`). Endpoints come
+//! from `--llm-config FILE` or the environment (`SCENEWRIGHT_LLM_*`, see the README);
+//! `scenewright generate` stays offline.
+
+use std::path::{Path, PathBuf};
+
+use clap::Subcommand;
+use serde_json::json;
+use sw_llm::{Client, LlmConfig, LlmStage};
+use sw_pipeline::{Event, LlmRun, Options};
+use sw_plan::{LlmCall, LlmOutcome, Status};
+
+use crate::Failure;
+use crate::output::{print, print_json};
+
+#[derive(Debug, Subcommand)]
+pub(crate) enum LlmCommand {
+    /// Generate a scene with the LLM planner (falls back to the offline planner, with a
+    /// warning in report.json, when the endpoint fails).
+    Generate {
+        prompt: String,
+        #[arg(long)]
+        out: PathBuf,
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        #[arg(long)]
+        no_verify: bool,
+        /// Fail instead of planning offline when the endpoint fails.
+        #[arg(long)]
+        no_fallback: bool,
+        /// A JSON file with the endpoints (else the environment).
+        #[arg(long, value_name = "FILE")]
+        llm_config: Option<PathBuf>,
+        #[arg(long)]
+        json: bool,
+    },
+    /// Print the plan the LLM planner makes of a prompt (plan.json's format).
+    Plan {
+        prompt: String,
+        #[arg(long)]
+        no_fallback: bool,
+        #[arg(long, value_name = "FILE")]
+        llm_config: Option<PathBuf>,
+    },
+    /// The configured endpoints per stage (never the keys).
+    Status {
+        #[arg(long, value_name = "FILE")]
+        llm_config: Option<PathBuf>,
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// The endpoints from a file (and the environment, which overrides it) or the
+/// environment alone.
+pub(crate) fn config(file: Option<&Path>) -> Result<LlmConfig, Failure> {
+    match file {
+        Some(f) => LlmConfig::from_file_and_env(f),
+        None => LlmConfig::from_env(),
+    }
+    .map_err(|e| Failure::input(e.to_string()))
+}
+
+fn need(cfg: &LlmConfig, stage: LlmStage) -> Result<(), Failure> {
+    if cfg.endpoint(stage).is_none() {
+        return Err(Failure::input(format!(
+            "no LLM endpoint is configured for the {} stage: set SCENEWRIGHT_LLM_BASE_URL and SCENEWRIGHT_LLM_MODEL \
+             (and SCENEWRIGHT_LLM_API_KEY), or pass --llm-config FILE; `scenewright generate` works offline",
+            stage.name()
+        )));
+    }
+    Ok(())
+}
+
+pub(crate) fn failure(e: sw_pipeline::PipelineError) -> Failure {
+    match e.exit_code() {
+        2 => Failure::input(e.to_string()),
+        _ => Failure::internal(e.to_string()),
+    }
+}
+
+/// Plain progress lines on stderr (nothing with --json).
+pub(crate) fn progress(json: bool) -> impl FnMut(&Event) {
+    move |e| {
+        if json {
+            return;
+        }
+        match e {
+            Event::StageFinished { stage, ms, summary } => eprintln!("{:<9} {:>8.1} ms  {summary}", stage.label(), ms),
+            Event::Note { stage, message } => eprintln!("{:<9}             {message}", stage.label()),
+            Event::StageStarted { .. } => {}
+        }
+    }
+}
+
+/// One line per stage of calls: "plan 1 call · 2.31 s · 1203 tokens in / 356 out".
+pub(crate) fn calls_summary(calls: &[LlmCall]) -> Vec<String> {
+    let mut out = Vec::new();
+    for stage in LlmStage::ALL {
+        let of: Vec<&LlmCall> = calls.iter().filter(|c| c.stage == stage).collect();
+        if of.is_empty() {
+            continue;
+        }
+        let secs: f64 = of.iter().map(|c| c.latency_ms).sum::<f64>() / 1000.0;
+        let (tin, tout): (u64, u64) = of.iter().fold((0, 0), |(a, b), c| (a + c.tokens_in, b + c.tokens_out));
+        let retries: u32 = of.iter().map(|c| c.retries).sum();
+        let failed = of.iter().filter(|c| c.outcome != LlmOutcome::Ok).count();
+        let mut line = format!(
+            "{} {} call{} · {secs:.2} s · {tin} tokens in / {tout} out",
+            stage.name(),
+            of.len(),
+            if of.len() == 1 { "" } else { "s" }
+        );
+        if retries > 0 {
+            line.push_str(&format!(" · {retries} retries"));
+        }
+        if failed > 0 {
+            line.push_str(&format!(" · {failed} failed"));
+        }
+        out.push(line);
+    }
+    out
+}
+
+pub(crate) fn run(c: LlmCommand) -> Result<u8, Failure> {
+    match c {
+        LlmCommand::Generate { prompt, out, seed, no_verify, no_fallback, llm_config, json } => {
+            let cfg = config(llm_config.as_deref())?;
+            need(&cfg, LlmStage::Plan)?;
+            let mut run = LlmRun::new(Client::new(cfg));
+            run.fallback = !no_fallback;
+            let opts = Options { seed, verify: !no_verify, ..Options::default() };
+            let o = sw_pipeline::generate_with_llm(&prompt, &out, &opts, &run, &mut progress(json)).map_err(failure)?;
+            let code = if sw_pipeline::succeeded(&o.report) { 0 } else { 1 };
+            if json {
+                print_json(&json!({
+                    "status": o.report.status, "out_dir": o.out_dir, "scene": o.out_dir.join("scene.xml"),
+                    "report": o.report, "timings": o.timings,
+                }));
+            } else {
+                let r = &o.report;
+                let mut lines = vec![
+                    format!("scene    {}", o.out_dir.join("scene.xml").display()),
+                    format!(
+                        "room     {} · {} of {} objects placed{}",
+                        r.summary.room.replace('_', " "),
+                        r.summary.objects_placed,
+                        r.summary.objects_requested,
+                        if r.summary.robots.is_empty() {
+                            String::new()
+                        } else {
+                            format!(" · robots: {}", r.summary.robots.join(", "))
+                        }
+                    ),
+                    format!(
+                        "verify   {}",
+                        match (&r.status, &r.verification) {
+                            (Status::Verified, Some(v)) => format!("passed in {}", v.engine),
+                            (_, Some(v)) => format!("FAILED: {}", v.failures.join("; ")),
+                            _ => "skipped (--no-verify)".into(),
+                        }
+                    ),
+                ];
+                lines.extend(calls_summary(&r.llm_calls).into_iter().map(|l| format!("llm      {l}")));
+                lines.extend(
+                    r.approximated.iter().map(|a| format!("approx   \"{}\" → {} ({})", a.text, a.became, a.reason)),
+                );
+                lines.extend(r.not_understood.iter().map(|n| format!("ignored  \"{}\" ({})", n.text, n.reason)));
+                lines.extend(r.warnings.iter().map(|w| format!("warning  {}", w.message)));
+                lines.push(format!("time     {:.0} ms", o.timings.total_ms));
+                print(&lines.join("\n"));
+            }
+            Ok(code)
+        }
+        LlmCommand::Plan { prompt, no_fallback, llm_config } => {
+            let cfg = config(llm_config.as_deref())?;
+            need(&cfg, LlmStage::Plan)?;
+            let client = Client::new(cfg);
+            let (plan, warnings) = sw_pipeline::plan_with_llm(&prompt, &client, !no_fallback).map_err(failure)?;
+            for w in &warnings {
+                eprintln!("warning: {}", w.message);
+            }
+            for l in calls_summary(&client.telemetry().calls()) {
+                eprintln!("llm      {l}");
+            }
+            print_json(&plan);
+            Ok(0)
+        }
+        LlmCommand::Status { llm_config, json } => {
+            let cfg = config(llm_config.as_deref())?;
+            let stages: Vec<serde_json::Value> = LlmStage::ALL
+                .iter()
+                .map(|s| match cfg.endpoint(*s) {
+                    Some(e) => json!({
+                        "stage": s.name(), "configured": true, "endpoint": e.origin(), "model": e.model,
+                        "key": e.api_key.is_some(), "timeout_s": e.timeout.as_secs_f64(), "retries": e.max_retries,
+                        "stream": e.stream, "structured": e.structured,
+                    }),
+                    None => json!({ "stage": s.name(), "configured": false }),
+                })
+                .collect();
+            if json {
+                print_json(&json!({ "stages": stages }));
+            } else {
+                let lines: Vec<String> = stages
+                    .iter()
+                    .map(|s| {
+                        if s["configured"] == true {
+                            format!(
+                                "{:<11} {} model {} · key {} · timeout {} s · {} retries",
+                                s["stage"].as_str().unwrap_or(""),
+                                s["endpoint"].as_str().unwrap_or(""),
+                                s["model"].as_str().unwrap_or(""),
+                                if s["key"] == true { "set" } else { "none" },
+                                s["timeout_s"],
+                                s["retries"]
+                            )
+                        } else {
+                            format!("{:<11} offline", s["stage"].as_str().unwrap_or(""))
+                        }
+                    })
+                    .collect();
+                print(&lines.join("\n"));
+            }
+            Ok(0)
+        }
+    }
+}
