@@ -10,6 +10,7 @@ mod cmd_edit;
 mod cmd_generate;
 mod cmd_llm;
 mod cmd_robots;
+mod cmd_serve;
 mod output;
 
 use std::ffi::OsString;
@@ -69,6 +70,10 @@ enum Command {
     /// A conversation that asks about what a prompt leaves open, ending with a final
     /// prompt and plan.
     Refine(cmd_edit::RefineArgs),
+    /// Run the HTTP API with in-process job runners.
+    Serve(cmd_serve::ServeArgs),
+    /// Run job runners only, on the same database and blob store as a `serve`.
+    Worker(cmd_serve::WorkerArgs),
     /// Write the JSON Schemas of plan.json, layout.json, report.json and timings.json.
     Schema {
         /// Directory to write into (default: print the plan schema).
@@ -119,11 +124,15 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
     };
-    // Ctrl-C or SIGTERM in the middle of a run: remove the half-written package.
-    let _ = ctrlc::set_handler(|| {
-        sw_pipeline::discard_staged_packages();
-        eprintln!("error: interrupted; no package was written");
-        std::process::exit(130);
+    // Ctrl-C or SIGTERM in the middle of a run: remove the half-written package. (The
+    // service handles its own signals and shuts down gracefully.)
+    let service = matches!(cli.command, Command::Serve(_) | Command::Worker(_));
+    let _ = (!service).then(|| {
+        ctrlc::set_handler(|| {
+            sw_pipeline::discard_staged_packages();
+            eprintln!("error: interrupted; no package was written");
+            std::process::exit(130);
+        })
     });
     if !cli.robots_dir.is_empty() {
         sw_robots::configure(sw_robots::Config { packs_dir: None, user_dirs: cli.robots_dir.clone() });
@@ -138,6 +147,8 @@ fn main() -> ExitCode {
         Command::Robots(c) => cmd_robots::run(c),
         Command::Bench(c) => cmd_bench::run(c),
         Command::Schema { out } => schema(out),
+        Command::Serve(a) => cmd_serve::serve(a),
+        Command::Worker(a) => cmd_serve::worker(a),
         Command::Llm(c) => cmd_llm::run(c),
         Command::Edit(a) => cmd_edit::edit(a),
         Command::Refine(a) => cmd_edit::refine(a),

@@ -1,0 +1,210 @@
+//! The service: the HTTP API of DESIGN.md (axum), a WebSocket event stream per job, auth,
+//! Prometheus metrics, and the queue workers that run the pipeline.
+//!
+//! One process ([`serve`]) answers HTTP and runs `workers` job runners; more runners can
+//! join from other processes ([`run_workers`], `scenewright worker`) on the same database
+//! and blob store. Jobs are leased: a runner renews its lease while it works, and whoever
+//! finds an expired lease puts the job back in the queue (see `sw_store`).
+
+mod auth;
+mod body;
+mod error;
+mod metrics;
+mod openapi;
+mod routes_auth;
+mod routes_jobs;
+mod routes_misc;
+mod routes_scenes;
+mod worker;
+mod ws;
+mod zip;
+
+use std::net::SocketAddr;
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::Duration;
+
+use axum::Router;
+use axum::extract::DefaultBodyLimit;
+use axum::routing::{get, post};
+use sw_store::{BlobStore, LocalBlobs, QueueLimits, Store};
+use tokio::sync::broadcast;
+
+pub use auth::{Claims, Tokens, hash_password};
+pub use error::ApiError;
+pub use worker::{RunnerConfig, run_workers};
+
+/// The largest request body, bytes (a prompt may be at most [`PROMPT_LIMIT`]).
+pub const BODY_LIMIT: usize = 1 << 20;
+/// The largest prompt or edit command, bytes.
+pub const PROMPT_LIMIT: usize = 64 * 1024;
+
+/// How the service runs.
+#[derive(Debug, Clone)]
+pub struct ServerConfig {
+    pub addr: SocketAddr,
+    /// Holds `scenewright.db` and `blobs/`.
+    pub data_dir: PathBuf,
+    /// Job runners in this process (0: HTTP only, the jobs run in `scenewright worker`s).
+    pub workers: usize,
+    pub limits: QueueLimits,
+    pub runner: RunnerConfig,
+    /// Access tokens live this long, s.
+    pub token_ttl_s: i64,
+    /// The browser app's files, served at `/` when the directory exists.
+    pub web_dir: Option<PathBuf>,
+}
+
+impl ServerConfig {
+    pub fn new(addr: SocketAddr, data_dir: PathBuf) -> Self {
+        Self {
+            addr,
+            data_dir,
+            workers: 5,
+            limits: QueueLimits::default(),
+            runner: RunnerConfig::default(),
+            token_ttl_s: 3600,
+            web_dir: Some(PathBuf::from("web")),
+        }
+    }
+}
+
+/// What every handler shares.
+#[derive(Debug, Clone)]
+pub struct AppState {
+    pub store: Store,
+    pub blobs: Arc<dyn BlobStore>,
+    pub tokens: Tokens,
+    pub limits: QueueLimits,
+    pub runner: RunnerConfig,
+    /// Job ids whose event stream grew (in this process); WebSockets also poll the
+    /// database for runners in other processes.
+    pub events: broadcast::Sender<String>,
+    pub metrics: Arc<metrics::Counters>,
+    /// Wakes idle runners in this process when a job is queued.
+    pub wake: Arc<tokio::sync::Notify>,
+    /// The browser app's directory, served for paths outside `/api/`.
+    pub web_dir: Option<PathBuf>,
+}
+
+/// A problem starting the service.
+#[derive(Debug, thiserror::Error)]
+pub enum StartError {
+    #[error("{0}")]
+    Store(#[from] sw_store::StoreError),
+    #[error("{0}")]
+    Blob(#[from] sw_store::BlobError),
+    #[error("{path}: {source}")]
+    Io { path: String, source: std::io::Error },
+}
+
+/// Opens the database and blob store under `data_dir`.
+pub async fn open_data(data_dir: &std::path::Path) -> Result<(Store, Arc<dyn BlobStore>), StartError> {
+    fs_err::create_dir_all(data_dir).map_err(|e| StartError::Io { path: data_dir.display().to_string(), source: e })?;
+    let store = Store::open_sqlite(&data_dir.join("scenewright.db")).await?;
+    let blobs: Arc<dyn BlobStore> = Arc::new(LocalBlobs::new(data_dir.join("blobs"))?);
+    Ok((store, blobs))
+}
+
+impl AppState {
+    /// The state for a store and blob store (the JWT secret is kept in the database, so
+    /// every process on it accepts the same tokens).
+    pub async fn new(
+        store: Store,
+        blobs: Arc<dyn BlobStore>,
+        limits: QueueLimits,
+        runner: RunnerConfig,
+        token_ttl_s: i64,
+    ) -> Result<Self, StartError> {
+        let secret = store.setting_or_init("jwt_secret", sw_store::new_secret).await?;
+        let (events, _) = broadcast::channel(4096);
+        Ok(Self {
+            store,
+            blobs,
+            tokens: Tokens::new(secret.as_bytes(), token_ttl_s),
+            limits,
+            runner,
+            events,
+            metrics: Arc::new(metrics::Counters::default()),
+            web_dir: None,
+            wake: Arc::new(tokio::sync::Notify::new()),
+        })
+    }
+}
+
+/// The HTTP routes (without static files).
+pub fn router(state: AppState) -> Router {
+    Router::new()
+        .route("/healthz", get(routes_misc::healthz))
+        .route("/metrics", get(metrics::metrics))
+        .route("/api/openapi.json", get(openapi::document))
+        .route("/api/auth/register", post(routes_auth::register))
+        .route("/api/auth/login", post(routes_auth::login))
+        .route("/api/auth/keys", post(routes_auth::create_key))
+        .route("/api/me", get(routes_auth::me))
+        .route("/api/jobs", post(routes_jobs::create).get(routes_jobs::list))
+        .route("/api/jobs/{id}", get(routes_jobs::show).delete(routes_jobs::cancel))
+        .route("/api/jobs/{id}/events", get(ws::events))
+        .route("/api/scenes", get(routes_scenes::list))
+        .route("/api/scenes/{id}", get(routes_scenes::show))
+        .route("/api/scenes/{id}/files/{*path}", get(routes_scenes::file))
+        .route("/api/scenes/{id}/package.zip", get(routes_scenes::package_zip))
+        .route("/api/scenes/{id}/edits", post(routes_scenes::edit))
+        .route("/api/assets", get(routes_misc::assets).post(routes_misc::create_asset))
+        .route("/api/assets/{id}", get(routes_misc::asset))
+        .route("/api/robots", get(routes_misc::robots))
+        .route("/api/admin/jobs", get(routes_jobs::admin_overview))
+        .fallback(routes_misc::not_found)
+        .layer(axum::middleware::from_fn_with_state(state.clone(), metrics::track))
+        .layer(DefaultBodyLimit::max(BODY_LIMIT))
+        .with_state(state)
+}
+
+/// Runs the service until Ctrl-C / SIGTERM: HTTP on `config.addr`, `config.workers` job
+/// runners, and the recovery of jobs whose runners were lost (at start and every second).
+pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
+    let (store, blobs) = open_data(&config.data_dir).await?;
+    let mut state = AppState::new(store, blobs, config.limits, config.runner.clone(), config.token_ttl_s).await?;
+    state.web_dir = config.web_dir.clone().filter(|d| d.is_dir());
+    let recovered = state.store.recover().await?;
+    if !recovered.requeued.is_empty() || !recovered.failed.is_empty() {
+        tracing::warn!(requeued = ?recovered.requeued, failed = ?recovered.failed, "recovered jobs of lost runners");
+    }
+    let app = router(state.clone());
+    let listener = tokio::net::TcpListener::bind(config.addr)
+        .await
+        .map_err(|e| StartError::Io { path: config.addr.to_string(), source: e })?;
+    let local = listener.local_addr().map_err(|e| StartError::Io { path: config.addr.to_string(), source: e })?;
+    tracing::info!(addr = %local, workers = config.workers, "serving");
+    // Scripts (and the tests) read the address from this line.
+    eprintln!("listening on http://{local}");
+    let runners = tokio::spawn(run_workers(state.clone(), config.workers, shutdown_signal()));
+    axum::serve(listener, app)
+        .with_graceful_shutdown(shutdown_signal())
+        .await
+        .map_err(|e| StartError::Io { path: local.to_string(), source: e })?;
+    let _ = tokio::time::timeout(Duration::from_secs(5), runners).await;
+    Ok(())
+}
+
+/// Resolves on Ctrl-C or SIGTERM.
+pub async fn shutdown_signal() {
+    let ctrl_c = async {
+        let _ = tokio::signal::ctrl_c().await;
+    };
+    #[cfg(unix)]
+    let term = async {
+        match tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()) {
+            Ok(mut s) => {
+                s.recv().await;
+            }
+            Err(_) => std::future::pending::<()>().await,
+        }
+    };
+    #[cfg(not(unix))]
+    let term = std::future::pending::<()>();
+    tokio::select! {
+        _ = ctrl_c => {},
+        _ = term => {},
+    }
+}

@@ -1,0 +1,96 @@
+//! The OpenAPI 3.1 document served at `/api/openapi.json`, written by hand next to the
+//! routes (a test checks that every route is in it).
+
+use axum::Json;
+use serde_json::{Value, json};
+
+fn op(summary: &str, auth: bool, body: Option<Value>, ok: (&str, &str), errors: &[&str]) -> Value {
+    let mut responses = serde_json::Map::new();
+    responses.insert(ok.0.to_string(), json!({ "description": ok.1 }));
+    for e in errors {
+        responses.insert((*e).to_string(), json!({ "$ref": format!("#/components/responses/E{e}") }));
+    }
+    let mut v = json!({ "summary": summary, "responses": responses });
+    if auth {
+        v["security"] = json!([{ "bearer": [] }, { "apiKey": [] }]);
+    }
+    if let Some(schema) = body {
+        v["requestBody"] = json!({ "required": true, "content": { "application/json": { "schema": schema } } });
+    }
+    v
+}
+
+fn id_param(name: &str) -> Value {
+    json!({ "name": name, "in": "path", "required": true, "schema": { "type": "string", "pattern": "^[0-9a-f]{32}$" } })
+}
+
+/// The document.
+pub fn spec() -> Value {
+    let creds = json!({ "type": "object", "required": ["username", "password"], "additionalProperties": false,
+        "properties": { "username": { "type": "string", "minLength": 3, "maxLength": 64, "pattern": "^[A-Za-z0-9_.-]+$" },
+                        "password": { "type": "string", "minLength": 8, "maxLength": 1024 } } });
+    let job_req = json!({ "type": "object", "required": ["prompt"], "additionalProperties": false, "properties": {
+        "prompt": { "type": "string", "maxLength": crate::PROMPT_LIMIT, "description": "what the scene holds, in English (at most 64 KiB)" },
+        "seed": { "type": "integer", "minimum": 0 },
+        "robots": { "type": "array", "items": { "type": "string" }, "description": "registry robots instead of the prompt's" },
+        "options": { "type": "object", "additionalProperties": false, "properties": {
+            "verify": { "type": "boolean", "default": true }, "rules": { "type": "string" } } } } });
+    let jobs_auth = ["400", "401", "404", "422"];
+    json!({
+        "openapi": "3.1.0",
+        "info": { "title": "scenewright", "version": env!("CARGO_PKG_VERSION"),
+                  "description": "Plain-English descriptions in, verified MuJoCo scenes out. Another user's job, scene or asset answers 404 exactly as a missing one." },
+        "paths": {
+            "/healthz": { "get": op("Health: 200 when the database answers", false, None, ("200", "ok"), &["500"]) },
+            "/metrics": { "get": op("Prometheus metrics", false, None, ("200", "text exposition format"), &[]) },
+            "/api/openapi.json": { "get": op("This document", false, None, ("200", "OpenAPI 3.1"), &[]) },
+            "/api/auth/register": { "post": op("Create a user (the first is the admin)", false, Some(creds.clone()), ("201", "the user"), &["400", "409", "415", "422"]) },
+            "/api/auth/login": { "post": op("Log in: an access token (JWT, HS256)", false, Some(creds), ("200", "{token, token_type, expires_in}"), &["400", "401", "422"]) },
+            "/api/auth/keys": { "post": op("Create an API key for scripts (shown once)", true,
+                Some(json!({ "type": "object", "required": ["name"], "properties": { "name": { "type": "string" } } })), ("201", "{id, name, key}"), &["401", "422"]) },
+            "/api/me": { "get": op("The caller", true, None, ("200", "the user"), &["401"]) },
+            "/api/jobs": {
+                "post": op("Queue a scene generation", true, Some(job_req), ("202", "{job_id, state}"), &["400", "401", "413", "415", "422", "429"]),
+                "get": op("The caller's jobs, newest first", true, None, ("200", "{jobs}"), &["401"]) },
+            "/api/jobs/{id}": {
+                "parameters": [id_param("id")],
+                "get": op("A job: state, stage, attempts, queue wait, error, scene_id", true, None, ("200", "the job"), &jobs_auth),
+                "delete": op("Cancel a job (a queued job never runs; a running job's result is discarded)", true, None, ("200", "the job"), &jobs_auth) },
+            "/api/jobs/{id}/events": {
+                "parameters": [id_param("id")],
+                "get": op("WebSocket: one JSON message per event (queued, started, stage_started, stage_finished, note, warning, requeued, error, cancelled, finished), then `result`; token in the header or ?token=", true, None, ("101", "switching protocols"), &jobs_auth) },
+            "/api/scenes": { "get": op("The caller's scenes", true, None, ("200", "{scenes}"), &["401"]) },
+            "/api/scenes/{id}": { "parameters": [id_param("id")],
+                "get": op("A scene: metadata, report.json, files, edit history", true, None, ("200", "the scene"), &jobs_auth) },
+            "/api/scenes/{id}/files/{path}": { "parameters": [id_param("id"), { "name": "path", "in": "path", "required": true, "schema": { "type": "string" } }],
+                "get": op("One file of the package (scene.xml, assets/…)", true, None, ("200", "the file"), &jobs_auth) },
+            "/api/scenes/{id}/package.zip": { "parameters": [id_param("id")],
+                "get": op("The package as a zip", true, None, ("200", "application/zip"), &jobs_auth) },
+            "/api/scenes/{id}/edits": { "parameters": [id_param("id")],
+                "post": op("Queue a plain-English edit; the job makes the next version", true,
+                    Some(json!({ "type": "object", "required": ["command"], "properties": { "command": { "type": "string", "maxLength": crate::PROMPT_LIMIT } } })),
+                    ("202", "{job_id, state, scene_id}"), &["400", "401", "404", "413", "422", "429"]) },
+            "/api/assets": {
+                "get": op("Catalog categories and the caller's assets matching ?q=", true, None, ("200", "{catalog, mine}"), &["400", "401"]),
+                "post": op("Record an asset description (matched to a catalog category)", true,
+                    Some(json!({ "type": "object", "required": ["description"], "properties": { "description": { "type": "string" } } })), ("201", "the asset"), &["400", "401", "413", "422"]) },
+            "/api/assets/{id}": { "parameters": [id_param("id")],
+                "get": op("One of the caller's assets", true, None, ("200", "the asset"), &["401", "404"]) },
+            "/api/robots": { "get": op("The robot registry", true, None, ("200", "{robots}"), &["401"]) },
+            "/api/admin/jobs": { "get": op("Jobs by state (admins)", true, None, ("200", "{by_state}"), &["401", "403"]) },
+        },
+        "components": {
+            "securitySchemes": {
+                "bearer": { "type": "http", "scheme": "bearer", "bearerFormat": "JWT or API key (swk_…)" },
+                "apiKey": { "type": "apiKey", "in": "header", "name": "X-API-Key" } },
+            "schemas": { "Error": { "type": "object", "required": ["error"], "properties": { "error": { "type": "string" } } } },
+            "responses": Value::Object(["400", "401", "403", "404", "409", "413", "415", "422", "429", "500"].iter().map(|c| {
+                (format!("E{c}"), json!({ "description": c, "content": { "application/json": { "schema": { "$ref": "#/components/schemas/Error" } } } }))
+            }).collect()),
+        },
+    })
+}
+
+pub async fn document() -> Json<Value> {
+    Json(spec())
+}

@@ -1,0 +1,99 @@
+//! Registration, login, API keys, the caller's identity.
+
+use axum::Json;
+use axum::extract::State;
+use axum::http::StatusCode;
+use serde::Deserialize;
+use serde_json::{Value, json};
+
+use crate::AppState;
+use crate::auth::{Caller, hash_password, new_api_key, verify_password};
+use crate::body::Body;
+use crate::error::{ApiError, ApiResult};
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Credentials {
+    username: String,
+    password: String,
+}
+
+fn check_username(u: &str) -> ApiResult<()> {
+    let ok_len = (3..=64).contains(&u.len());
+    let ok_chars = u.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.'));
+    if !ok_len || !ok_chars {
+        return Err(ApiError::new(
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "a user name is 3 to 64 characters of letters, digits, '_', '-' and '.'",
+        ));
+    }
+    Ok(())
+}
+
+/// `POST /api/auth/register {username, password}` → 201 the user. The first user is the admin.
+pub async fn register(State(s): State<AppState>, Body(c): Body<Credentials>) -> ApiResult<(StatusCode, Json<Value>)> {
+    check_username(&c.username)?;
+    if !(8..=1024).contains(&c.password.len()) {
+        return Err(ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, "a password is 8 to 1024 bytes"));
+    }
+    let password = c.password;
+    let hash = tokio::task::spawn_blocking(move || hash_password(&password)).await.map_err(ApiError::internal)??;
+    let user = s.store.create_user(&c.username, &hash, None).await?;
+    tracing::info!(user = %user.id, "registered");
+    Ok((StatusCode::CREATED, Json(json!(user))))
+}
+
+/// `POST /api/auth/login {username, password}` → `{token, token_type, expires_in}`.
+pub async fn login(State(s): State<AppState>, Body(c): Body<Credentials>) -> ApiResult<Json<Value>> {
+    let wrong = || ApiError::unauthorized("wrong user name or password");
+    if c.username.len() > 64 || c.password.len() > 1024 {
+        return Err(wrong());
+    }
+    let user = s.store.user_by_name(&c.username).await?;
+    let (hash, user) = match user {
+        Some(u) => (u.password_hash.clone(), Some(u)),
+        // Spend the same time on unknown names as on known ones.
+        None => (dummy_hash().to_string(), None),
+    };
+    let password = c.password;
+    let ok =
+        tokio::task::spawn_blocking(move || verify_password(&password, &hash)).await.map_err(ApiError::internal)?;
+    match user {
+        Some(u) if ok => {
+            let token = s.tokens.issue(&u)?;
+            Ok(Json(json!({ "token": token, "token_type": "Bearer", "expires_in": s.tokens.ttl_s })))
+        }
+        _ => Err(wrong()),
+    }
+}
+
+/// The argon2id hash of a random password nobody knows.
+fn dummy_hash() -> &'static str {
+    static HASH: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    HASH.get_or_init(|| hash_password(&sw_store::new_secret()).unwrap_or_default())
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct KeyRequest {
+    name: String,
+}
+
+/// `POST /api/auth/keys {name}` → 201 `{id, name, key}` (the key is shown only here).
+pub async fn create_key(
+    State(s): State<AppState>,
+    caller: Caller,
+    Body(k): Body<KeyRequest>,
+) -> ApiResult<(StatusCode, Json<Value>)> {
+    if k.name.trim().is_empty() || k.name.len() > 200 {
+        return Err(ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, "a key's name is 1 to 200 bytes"));
+    }
+    let (key, hash) = new_api_key();
+    let id = s.store.create_api_key(&caller.user.id, &k.name, &hash).await?;
+    Ok((StatusCode::CREATED, Json(json!({ "id": id, "name": k.name, "key": key }))))
+}
+
+/// `GET /api/me` → the caller.
+pub async fn me(caller: Caller) -> Json<Value> {
+    Json(json!(caller.user))
+}

@@ -1,0 +1,152 @@
+//! Health, robots, assets, static files of the web app, the JSON 404.
+
+use axum::Json;
+use axum::extract::{Path, Query, State};
+use axum::http::{StatusCode, Uri, header};
+use axum::response::{IntoResponse, Response};
+use serde::Deserialize;
+use serde_json::{Value, json};
+use sw_store::is_id;
+
+use crate::AppState;
+use crate::auth::Caller;
+use crate::body::Body;
+use crate::error::{ApiError, ApiResult};
+
+/// `GET /healthz` → 200 when the database answers.
+pub async fn healthz(State(s): State<AppState>) -> ApiResult<Json<Value>> {
+    s.store.count_by_state().await?;
+    Ok(Json(json!({ "status": "ok", "version": env!("CARGO_PKG_VERSION") })))
+}
+
+/// `GET /api/robots` → the registry's robots.
+pub async fn robots(_caller: Caller) -> Json<Value> {
+    let list: Vec<Value> = sw_robots::registry()
+        .iter()
+        .map(|r| {
+            json!({
+                "name": r.name, "display": r.display, "aliases": r.aliases, "kind": r.kind.label(),
+                "source": r.source, "licence": r.licence.name, "reach": r.reach, "height": r.height,
+            })
+        })
+        .collect();
+    Json(json!({ "robots": list }))
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AssetQuery {
+    #[serde(default)]
+    q: String,
+}
+
+fn catalog_matches(q: &str) -> Vec<Value> {
+    let q = q.trim().to_lowercase();
+    sw_catalog::categories()
+        .iter()
+        .filter(|c| {
+            q.is_empty()
+                || c.name.contains(&q)
+                || c.display.contains(&q)
+                || c.synonyms.iter().any(|s| s.contains(&q))
+                || c.tags.iter().any(|t| *t == q)
+        })
+        .map(|c| json!({ "name": c.name, "display": c.display, "tags": c.tags, "size": c.default_size(), "movable": c.movable }))
+        .collect()
+}
+
+/// The catalog category a description names: its registry name, display name or a
+/// synonym, exactly or as the longest phrase inside the description.
+fn match_category(description: &str) -> Option<&'static sw_catalog::Category> {
+    let d = description.trim().to_lowercase();
+    let padded = format!(" {} ", d.replace(|c: char| !c.is_alphanumeric(), " "));
+    let mut best: Option<(&'static sw_catalog::Category, usize)> = None;
+    for c in sw_catalog::categories() {
+        let underscored = c.name.replace('_', " ");
+        for phrase in [c.display, underscored.as_str()].into_iter().chain(c.synonyms.iter().copied()) {
+            if phrase == d {
+                return Some(c);
+            }
+            if padded.contains(&format!(" {phrase} ")) && best.is_none_or(|b| phrase.len() > b.1) {
+                best = Some((c, phrase.len()));
+            }
+        }
+    }
+    best.map(|b| b.0)
+}
+
+/// `GET /api/assets?q=` → catalog categories and the caller's own assets that match.
+pub async fn assets(State(s): State<AppState>, caller: Caller, Query(q): Query<AssetQuery>) -> ApiResult<Json<Value>> {
+    if q.q.len() > 1024 {
+        return Err(ApiError::bad_request("the query is longer than 1024 bytes"));
+    }
+    let mine = s.store.assets_of(&caller.user.id, &q.q).await?;
+    Ok(Json(json!({ "catalog": catalog_matches(&q.q), "mine": mine })))
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AssetRequest {
+    description: String,
+}
+
+/// `POST /api/assets {description}` → 201 the asset's metadata, matched to the catalog
+/// category the offline planner reads it as (or none).
+pub async fn create_asset(
+    State(s): State<AppState>,
+    caller: Caller,
+    Body(r): Body<AssetRequest>,
+) -> ApiResult<(StatusCode, Json<Value>)> {
+    crate::routes_jobs::check_text("description", &r.description)?;
+    if r.description.len() > 4096 {
+        return Err(ApiError::new(StatusCode::PAYLOAD_TOO_LARGE, "an asset description is at most 4096 bytes"));
+    }
+    let category = match_category(&r.description).map(|c| c.name);
+    let meta = match category.and_then(sw_catalog::find) {
+        Some(c) => json!({ "source": "catalog", "size": c.default_size(), "movable": c.movable, "tags": c.tags }),
+        None => {
+            json!({ "source": "none", "note": "no catalog category matches; the forge makes it when a scene needs it" })
+        }
+    };
+    let a = s.store.create_asset(&caller.user.id, r.description.trim(), category, &meta).await?;
+    Ok((StatusCode::CREATED, Json(json!(a))))
+}
+
+/// `GET /api/assets/{id}` → one of the caller's assets.
+pub async fn asset(State(s): State<AppState>, caller: Caller, Path(id): Path<String>) -> ApiResult<Json<Value>> {
+    if !is_id(&id) {
+        return Err(ApiError::not_found("asset"));
+    }
+    let a = s.store.asset_of(&id, &caller.user.id).await?.ok_or_else(|| ApiError::not_found("asset"))?;
+    Ok(Json(json!(a)))
+}
+
+/// Anything else: the web app's files when there is one, else a JSON 404.
+pub async fn not_found(State(s): State<AppState>, uri: Uri) -> Response {
+    let path = uri.path();
+    if let Some(web) = s.web_dir.as_ref().filter(|_| !path.starts_with("/api/"))
+        && let Some(r) = static_file(web, path).await
+    {
+        return r;
+    }
+    ApiError::new(StatusCode::NOT_FOUND, format!("no route for {path}")).into_response()
+}
+
+async fn static_file(web: &std::path::Path, path: &str) -> Option<Response> {
+    let rel = path.trim_start_matches('/');
+    let rel = if rel.is_empty() || rel.ends_with('/') { format!("{rel}index.html") } else { rel.to_string() };
+    sw_store::check_key(&rel).ok()?;
+    let file = web.join(&rel);
+    let data = tokio::fs::read(&file).await.ok()?;
+    let ct = match rel.rsplit('.').next().unwrap_or("") {
+        "html" => "text/html; charset=utf-8",
+        "js" | "mjs" => "text/javascript",
+        "css" => "text/css",
+        "json" => "application/json",
+        "wasm" => "application/wasm",
+        "svg" => "image/svg+xml",
+        "png" => "image/png",
+        _ => "application/octet-stream",
+    };
+    Some(([(header::CONTENT_TYPE, ct)], data).into_response())
+}

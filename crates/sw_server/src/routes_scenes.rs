@@ -1,0 +1,134 @@
+//! Scenes: list, metadata with report and edit history, files, the package as a zip, edits.
+
+use axum::Json;
+use axum::extract::{Path, State};
+use axum::http::{StatusCode, header};
+use axum::response::{IntoResponse, Response};
+use serde::Deserialize;
+use serde_json::{Value, json};
+use sw_store::{JobKind, NewJob, Scene, check_key, is_id};
+
+use crate::AppState;
+use crate::auth::Caller;
+use crate::body::Body;
+use crate::error::{ApiError, ApiResult};
+use crate::routes_jobs::check_text;
+
+/// The caller's scene, or 404 (also for another user's scene).
+async fn owned_scene(s: &AppState, caller: &Caller, id: &str) -> ApiResult<Scene> {
+    if !is_id(id) {
+        return Err(ApiError::not_found("scene"));
+    }
+    s.store.scene_of(id, &caller.user.id).await?.ok_or_else(|| ApiError::not_found("scene"))
+}
+
+fn summary(sc: &Scene) -> Value {
+    json!({
+        "id": sc.id, "job_id": sc.job_id, "parent_id": sc.parent_id, "version": sc.version,
+        "prompt": sc.prompt, "status": sc.status, "created_at": sc.created_at,
+    })
+}
+
+/// `GET /api/scenes` → the caller's scenes, newest first.
+pub async fn list(State(s): State<AppState>, caller: Caller) -> ApiResult<Json<Value>> {
+    let scenes = s.store.scenes_of(&caller.user.id, 500).await?;
+    Ok(Json(json!({ "scenes": scenes.iter().map(summary).collect::<Vec<_>>() })))
+}
+
+/// `GET /api/scenes/{id}` → metadata, report, files and edit history.
+pub async fn show(State(s): State<AppState>, caller: Caller, Path(id): Path<String>) -> ApiResult<Json<Value>> {
+    let sc = owned_scene(&s, &caller, &id).await?;
+    let edits = s.store.edits_of_scene(&sc.id, &caller.user.id).await?;
+    let mut v = summary(&sc);
+    v["report"] = sc.report.clone();
+    v["files"] = json!(sc.files);
+    v["edits"] = json!(edits);
+    Ok(Json(v))
+}
+
+/// A file path inside a package, checked: relative, plain segments, no traversal.
+fn check_path(path: &str) -> ApiResult<()> {
+    check_key(path).map_err(|e| ApiError::bad_request(format!("bad file path: {e}")))
+}
+
+fn content_type(path: &str) -> &'static str {
+    match path.rsplit('.').next().unwrap_or("") {
+        "xml" => "application/xml",
+        "json" => "application/json",
+        "png" => "image/png",
+        "obj" | "mtl" | "urdf" => "text/plain; charset=utf-8",
+        _ => "application/octet-stream",
+    }
+}
+
+/// `GET /api/scenes/{id}/files/{path}` → one file of the package.
+pub async fn file(
+    State(s): State<AppState>,
+    caller: Caller,
+    Path((id, path)): Path<(String, String)>,
+) -> ApiResult<Response> {
+    check_path(&path)?;
+    let sc = owned_scene(&s, &caller, &id).await?;
+    if !sc.files.iter().any(|f| f == &path) {
+        return Err(ApiError::not_found("file in this scene"));
+    }
+    let key = format!("scenes/{}/{path}", sc.id);
+    let blobs = s.blobs.clone();
+    let data = tokio::task::spawn_blocking(move || blobs.get(&key)).await.map_err(ApiError::internal)??;
+    let data = data.ok_or_else(|| ApiError::internal(format!("scene {} lost its file {path}", sc.id)))?;
+    Ok(([(header::CONTENT_TYPE, content_type(&path))], data).into_response())
+}
+
+/// `GET /api/scenes/{id}/package.zip` → the package as a zip (stored, not compressed).
+pub async fn package_zip(State(s): State<AppState>, caller: Caller, Path(id): Path<String>) -> ApiResult<Response> {
+    let sc = owned_scene(&s, &caller, &id).await?;
+    let blobs = s.blobs.clone();
+    let scene_id = sc.id.clone();
+    let files = sc.files.clone();
+    let zip = tokio::task::spawn_blocking(move || -> Result<Vec<u8>, ApiError> {
+        let mut w = crate::zip::ZipWriter::default();
+        for f in &files {
+            let data = blobs
+                .get(&format!("scenes/{scene_id}/{f}"))?
+                .ok_or_else(|| ApiError::internal(format!("scene {scene_id} lost its file {f}")))?;
+            w.add(f, &data);
+        }
+        Ok(w.finish())
+    })
+    .await
+    .map_err(ApiError::internal)??;
+    let disposition = format!("attachment; filename=\"scene_{}.zip\"", sc.id);
+    Ok(([(header::CONTENT_TYPE, "application/zip".to_string()), (header::CONTENT_DISPOSITION, disposition)], zip)
+        .into_response())
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EditRequest {
+    command: String,
+}
+
+/// `POST /api/scenes/{id}/edits {command}` → 202 `{job_id}`: a job that makes the next version.
+pub async fn edit(
+    State(s): State<AppState>,
+    caller: Caller,
+    Path(id): Path<String>,
+    Body(r): Body<EditRequest>,
+) -> ApiResult<(StatusCode, Json<Value>)> {
+    check_text("command", &r.command)?;
+    let sc = owned_scene(&s, &caller, &id).await?;
+    let new = NewJob {
+        user_id: caller.user.id.clone(),
+        kind: JobKind::Edit,
+        prompt: r.command,
+        seed: 0,
+        options: json!({}),
+        parent_scene_id: Some(sc.id.clone()),
+        timeout_ms: s.runner.job_timeout_ms,
+        max_attempts: s.runner.max_attempts,
+    };
+    let job = s.store.enqueue(&new, s.limits).await?;
+    s.store.append_event(&job.id, &json!({"event": "queued", "job_id": job.id})).await?;
+    s.wake.notify_one();
+    Ok((StatusCode::ACCEPTED, Json(json!({ "job_id": job.id, "state": job.state, "scene_id": sc.id }))))
+}

@@ -1,0 +1,355 @@
+//! Job runners: claim a job, keep its lease alive, run the pipeline on a blocking thread
+//! while forwarding its events, store the package in the blob store, and complete the job
+//! only if the claim is still ours. A recovery loop puts jobs of lost runners back.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
+
+use serde_json::{Value, json};
+use sw_pipeline::{EditReader, Event, Options, PipelineError};
+use sw_store::{BlobStore, Claim, JobKind, NewScene, Telemetry, new_id};
+use tracing::Instrument;
+
+use crate::AppState;
+
+/// How runners behave.
+#[derive(Debug, Clone)]
+pub struct RunnerConfig {
+    /// A claim's lease, ms; renewed every third of it.
+    pub lease_ms: i64,
+    /// A job running longer than this fails, ms.
+    pub job_timeout_ms: i64,
+    /// Claims of one job before it fails (its runners kept getting lost).
+    pub max_attempts: i64,
+    /// How often an idle runner looks for work from other processes, ms.
+    pub poll_ms: u64,
+    /// Scratch space for packages being made (default: the system's temp directory).
+    pub work_dir: Option<PathBuf>,
+}
+
+impl Default for RunnerConfig {
+    fn default() -> Self {
+        Self { lease_ms: 30_000, job_timeout_ms: 600_000, max_attempts: 3, poll_ms: 250, work_dir: None }
+    }
+}
+
+/// Runs `n` job runners and the recovery loop until `shutdown` resolves; each runner
+/// finishes the job it holds first (unless the process dies, when its lease expires and
+/// the job is run again elsewhere).
+pub async fn run_workers(state: AppState, n: usize, shutdown: impl Future<Output = ()> + Send + 'static) {
+    let stop = Arc::new(AtomicBool::new(false));
+    let wake = state.wake.clone();
+    let mut tasks = Vec::new();
+    let process = format!("{}-{}", std::process::id(), &new_id()[..8]);
+    for i in 0..n {
+        let (state, stop) = (state.clone(), stop.clone());
+        let name = format!("{process}-{i}");
+        tasks.push(tokio::spawn(runner(state, name, stop)));
+    }
+    let recovery = {
+        let (state, stop) = (state.clone(), stop.clone());
+        tokio::spawn(async move {
+            while !stop.load(Ordering::Relaxed) {
+                match state.store.recover().await {
+                    Ok(r) => {
+                        for id in r.requeued.iter().chain(&r.failed) {
+                            let _ = state.events.send(id.clone());
+                            state.wake.notify_one();
+                        }
+                        if !r.requeued.is_empty() || !r.failed.is_empty() {
+                            tracing::warn!(requeued = ?r.requeued, failed = ?r.failed, "recovered jobs of lost runners");
+                        }
+                    }
+                    Err(e) => tracing::error!(error = %e, "recovery failed"),
+                }
+                tokio::time::sleep(Duration::from_millis(1000)).await;
+            }
+        })
+    };
+    shutdown.await;
+    stop.store(true, Ordering::Relaxed);
+    for _ in 0..n {
+        wake.notify_one();
+    }
+    wake.notify_waiters();
+    for t in tasks {
+        let _ = t.await;
+    }
+    let _ = recovery.await;
+}
+
+async fn runner(state: AppState, name: String, stop: Arc<AtomicBool>) {
+    while !stop.load(Ordering::Relaxed) {
+        match state.store.claim(&name, state.runner.lease_ms, state.limits).await {
+            Ok(Some(claim)) => {
+                let span = tracing::info_span!("job", job = %claim.job.id, attempt = claim.attempt, worker = %name);
+                run_job(&state, claim).instrument(span).await;
+            }
+            Ok(None) => {
+                let _ = tokio::time::timeout(Duration::from_millis(state.runner.poll_ms), state.wake.notified()).await;
+            }
+            Err(e) => {
+                tracing::error!(error = %e, "claiming a job failed");
+                tokio::time::sleep(Duration::from_millis(1000)).await;
+            }
+        }
+    }
+}
+
+/// Appends an event to a job's stream and wakes its WebSocket listeners.
+async fn emit(state: &AppState, job_id: &str, body: Value) {
+    if let Err(e) = state.store.append_event(job_id, &body).await {
+        tracing::error!(error = %e, "storing an event failed");
+    }
+    let _ = state.events.send(job_id.to_string());
+}
+
+/// What the pipeline produced for a job.
+struct Made {
+    report: sw_plan::Report,
+    timings: sw_plan::Timings,
+    dir: PathBuf,
+    edit: Option<Value>,
+}
+
+async fn run_job(state: &AppState, claim: Claim) {
+    let job = claim.job.clone();
+    tracing::info!(kind = job.kind.as_str(), "job started");
+    emit(state, &job.id, json!({"event": "started", "attempt": claim.attempt})).await;
+
+    // Keep the lease alive; notice when the claim is lost (cancelled, timed out, taken over).
+    let lost = Arc::new(AtomicBool::new(false));
+    let heartbeat = {
+        let (store, claim, lost) = (state.store.clone(), claim.clone(), lost.clone());
+        let lease = state.runner.lease_ms;
+        tokio::spawn(async move {
+            loop {
+                tokio::time::sleep(Duration::from_millis((lease / 3).max(10) as u64)).await;
+                match store.heartbeat(&claim, lease).await {
+                    Ok(true) => {}
+                    Ok(false) => {
+                        lost.store(true, Ordering::Relaxed);
+                        break;
+                    }
+                    Err(e) => tracing::warn!(error = %e, "heartbeat failed"),
+                }
+            }
+        })
+    };
+
+    // Forward the pipeline's events as they come.
+    let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel::<Value>();
+    let forwarder = {
+        let (state, claim) = (state.clone(), claim.clone());
+        tokio::spawn(async move {
+            while let Some(ev) = rx.recv().await {
+                if ev["event"] == "stage_started"
+                    && let Some(stage) = ev["stage"].as_str()
+                {
+                    let _ = state.store.set_stage(&claim, stage).await;
+                }
+                emit(&state, &claim.job.id, ev).await;
+            }
+        })
+    };
+
+    let result = run_pipeline(state, &claim, tx).await;
+    let _ = forwarder.await;
+    heartbeat.abort();
+
+    match result {
+        Err(message) => {
+            if claim_still_ours(state, &claim, &lost).await {
+                match state.store.fail(&claim, &message).await {
+                    Ok(true) => {
+                        tracing::warn!(error = %message, "job failed");
+                        let _ = state.events.send(job.id.clone());
+                    }
+                    Ok(false) => {}
+                    Err(e) => tracing::error!(error = %e, "recording a failure failed"),
+                }
+            }
+        }
+        Ok((made, _tmp)) => {
+            if let Err(e) = finish(state, &claim, made).await {
+                tracing::error!(error = %e, "storing the package failed");
+                let _ = state.store.fail(&claim, &format!("storing the package failed: {e}")).await;
+                let _ = state.events.send(job.id.clone());
+            }
+        }
+    }
+}
+
+async fn claim_still_ours(state: &AppState, claim: &Claim, lost: &AtomicBool) -> bool {
+    if lost.load(Ordering::Relaxed) {
+        return false;
+    }
+    matches!(state.store.job(&claim.job.id).await, Ok(Some(j)) if j.state == sw_store::JobState::Running && j.attempts == claim.attempt)
+}
+
+/// Runs the pipeline on a blocking thread within the job's remaining time.
+async fn run_pipeline(
+    state: &AppState,
+    claim: &Claim,
+    tx: tokio::sync::mpsc::UnboundedSender<Value>,
+) -> Result<(Made, tempfile::TempDir), String> {
+    let job = claim.job.clone();
+    let work = state.runner.work_dir.clone().unwrap_or_else(std::env::temp_dir);
+    fs_err::create_dir_all(&work).map_err(|e| format!("scratch space: {e}"))?;
+    let tmp = tempfile::Builder::new()
+        .prefix(&format!("job-{}-", job.id))
+        .tempdir_in(&work)
+        .map_err(|e| format!("scratch space {}: {e}", work.display()))?;
+    let out = tmp.path().join("package");
+    let blobs = state.blobs.clone();
+    let parent_files = match &job.parent_scene_id {
+        Some(p) => match state.store.scene_of(p, &job.user_id).await {
+            Ok(Some(sc)) => sc.files,
+            Ok(None) => return Err(format!("the scene {p} to edit no longer exists")),
+            Err(e) => return Err(e.to_string()),
+        },
+        None => Vec::new(),
+    };
+    let handle = tokio::task::spawn_blocking(move || {
+        let mut on_event = |e: &Event| {
+            let _ = tx.send(serde_json::to_value(e).unwrap_or_else(|_| json!({"event": "note"})));
+        };
+        match job.kind {
+            JobKind::Generate => {
+                let opts = options(&job.options, job.seed);
+                let o = sw_pipeline::generate(&job.prompt, &out, &opts, &mut on_event).map_err(describe)?;
+                Ok(Made { report: o.report, timings: o.timings, dir: o.out_dir, edit: None })
+            }
+            JobKind::Edit => {
+                let parent = job.parent_scene_id.clone().ok_or("an edit job without a scene")?;
+                download(&*blobs, &parent, &parent_files, &out)?;
+                let o = sw_pipeline::edit_package(&out, &job.prompt, EditReader::Grammar, None, &mut on_event)
+                    .map_err(describe)?;
+                let record = serde_json::to_value(&o.record).unwrap_or(Value::Null);
+                Ok(Made { report: o.report, timings: o.timings, dir: o.dir, edit: Some(record) })
+            }
+        }
+    });
+    let started = job.started_at.unwrap_or_else(sw_store::now_ms);
+    let left = (started + job.timeout_ms - sw_store::now_ms()).max(0) as u64;
+    match tokio::time::timeout(Duration::from_millis(left), handle).await {
+        Ok(Ok(Ok(made))) => Ok((made, tmp)),
+        Ok(Ok(Err(message))) => Err(message),
+        Ok(Err(join)) => Err(format!("the pipeline crashed: {join}")),
+        Err(_) => Err(format!("timed out after {} s", job.timeout_ms / 1000)),
+    }
+}
+
+fn describe(e: PipelineError) -> String {
+    match e {
+        PipelineError::Input(m) => m,
+        e => e.to_string(),
+    }
+}
+
+/// The pipeline's options from a job's stored options.
+fn options(o: &Value, seed: u64) -> Options {
+    Options {
+        seed,
+        verify: o["verify"].as_bool().unwrap_or(true),
+        robots: o["robots"].as_array().map(|a| a.iter().filter_map(|x| x.as_str().map(str::to_string)).collect()),
+        rules_profile: o["rules"].as_str().map(str::to_string),
+        anomaly: None,
+    }
+}
+
+/// Copies a stored scene's files into `dir`.
+fn download(blobs: &dyn BlobStore, scene: &str, files: &[String], dir: &Path) -> Result<(), String> {
+    for f in files {
+        sw_store::check_key(f).map_err(|e| e.to_string())?;
+        let data = blobs
+            .get(&format!("scenes/{scene}/{f}"))
+            .map_err(|e| e.to_string())?
+            .ok_or_else(|| format!("scene {scene} lost its file {f}"))?;
+        let path = dir.join(f);
+        if let Some(p) = path.parent() {
+            fs_err::create_dir_all(p).map_err(|e| e.to_string())?;
+        }
+        fs_err::write(&path, data).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+/// Every file under `dir`, as relative `/` paths, sorted.
+fn list_files(dir: &Path) -> std::io::Result<Vec<String>> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in fs_err::read_dir(&d)? {
+            let entry = entry?;
+            let p = entry.path();
+            if entry.file_type()?.is_dir() {
+                stack.push(p);
+            } else if let Ok(rel) = p.strip_prefix(dir) {
+                let rel: Vec<String> = rel.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+                out.push(rel.join("/"));
+            }
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// Uploads the package and completes the job (or discards the upload if the claim was lost).
+async fn finish(state: &AppState, claim: &Claim, made: Made) -> Result<(), String> {
+    let scene_id = new_id();
+    let blobs = state.blobs.clone();
+    let dir = made.dir.clone();
+    let sid = scene_id.clone();
+    let files = tokio::task::spawn_blocking(move || -> Result<Vec<String>, String> {
+        let files = list_files(&dir).map_err(|e| e.to_string())?;
+        for f in &files {
+            let data = fs_err::read(dir.join(f)).map_err(|e| e.to_string())?;
+            blobs.put(&format!("scenes/{sid}/{f}"), &data).map_err(|e| e.to_string())?;
+        }
+        Ok(files)
+    })
+    .await
+    .map_err(|e| e.to_string())??;
+    let status = serde_json::to_value(made.report.status).ok().and_then(|v| v.as_str().map(str::to_string));
+    let telemetry = Telemetry {
+        stages: made.timings.stages.iter().map(|s| (stage_name(s.stage), s.ms)).collect(),
+        llm_calls: made
+            .report
+            .llm_calls
+            .iter()
+            .map(|c| {
+                let stage = serde_json::to_value(c.stage).ok().and_then(|v| v.as_str().map(str::to_string));
+                (stage.unwrap_or_default(), c.latency_ms, c.tokens_in as i64, c.tokens_out as i64)
+            })
+            .collect(),
+        cache: None,
+    };
+    let new = NewScene {
+        id: scene_id.clone(),
+        status: status.clone().unwrap_or_else(|| "unknown".into()),
+        report: serde_json::to_value(&made.report).map_err(|e| e.to_string())?,
+        files: files.clone(),
+        edit: made.edit.map(|r| (claim.job.prompt.clone(), r)),
+    };
+    for w in &made.report.warnings {
+        emit(state, &claim.job.id, json!({"event": "warning", "stage": w.stage, "code": w.code, "message": w.message}))
+            .await;
+    }
+    if state.store.complete(claim, &new, &telemetry).await.map_err(|e| e.to_string())? {
+        tracing::info!(scene = %scene_id, status = ?status, "job succeeded");
+        let _ = state.events.send(claim.job.id.clone());
+    } else {
+        // Cancelled, timed out or taken over while we worked: our result is not the job's.
+        tracing::warn!("the job's claim was lost before completion; discarding its package");
+        let blobs = state.blobs.clone();
+        let _ = tokio::task::spawn_blocking(move || blobs.delete_prefix(&format!("scenes/{scene_id}/"))).await;
+    }
+    Ok(())
+}
+
+fn stage_name(s: sw_plan::Stage) -> String {
+    serde_json::to_value(s).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default()
+}

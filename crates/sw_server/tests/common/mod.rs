@@ -1,0 +1,127 @@
+//! A service over a temporary data directory, driven through its `Router`.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+#![allow(dead_code)]
+
+use std::sync::Arc;
+
+use axum::Router;
+use axum::body::Body;
+use axum::http::{Method, Request, StatusCode};
+use serde_json::{Value, json};
+use sw_server::{AppState, RunnerConfig};
+use sw_store::QueueLimits;
+use tower::ServiceExt;
+
+pub const PROMPT: &str = "a 10 by 8 m warehouse with a conveyor, a table with four boxes on it, three chairs next to the conveyor, a red cabinet and a shelf against the north wall";
+
+pub struct App {
+    pub dir: tempfile::TempDir,
+    pub state: AppState,
+    pub router: Router,
+}
+
+pub fn runner() -> RunnerConfig {
+    RunnerConfig { poll_ms: 50, ..RunnerConfig::default() }
+}
+
+pub async fn app(limits: QueueLimits) -> App {
+    let dir = tempfile::tempdir().unwrap();
+    let (store, blobs) = sw_server::open_data(dir.path()).await.unwrap();
+    let mut r = runner();
+    r.work_dir = Some(dir.path().join("work"));
+    let state = AppState::new(store, blobs, limits, r, 3600).await.unwrap();
+    let router = sw_server::router(state.clone());
+    App { dir, state, router }
+}
+
+/// Starts `n` runners in this process; they stop when the returned sender is dropped or sent to.
+pub fn start_workers(state: &AppState, n: usize) -> tokio::sync::oneshot::Sender<()> {
+    let (tx, rx) = tokio::sync::oneshot::channel::<()>();
+    tokio::spawn(sw_server::run_workers(state.clone(), n, async move {
+        let _ = rx.await;
+    }));
+    tx
+}
+
+pub enum Payload<'a> {
+    None,
+    Json(Value),
+    Raw(&'a str, Option<&'a str>),
+}
+
+impl App {
+    pub async fn raw(
+        &self,
+        method: Method,
+        uri: &str,
+        token: Option<&str>,
+        body: Payload<'_>,
+    ) -> (StatusCode, Vec<u8>) {
+        let mut b = Request::builder().method(method).uri(uri);
+        if let Some(t) = token {
+            b = b.header("authorization", format!("Bearer {t}"));
+        }
+        let body = match body {
+            Payload::None => Body::empty(),
+            Payload::Json(v) => {
+                b = b.header("content-type", "application/json");
+                Body::from(v.to_string())
+            }
+            Payload::Raw(s, ct) => {
+                if let Some(ct) = ct {
+                    b = b.header("content-type", ct);
+                }
+                Body::from(s.to_string())
+            }
+        };
+        let resp = self.router.clone().oneshot(b.body(body).unwrap()).await.unwrap();
+        let status = resp.status();
+        let bytes = axum::body::to_bytes(resp.into_body(), usize::MAX).await.unwrap();
+        (status, bytes.to_vec())
+    }
+
+    pub async fn call(&self, method: Method, uri: &str, token: Option<&str>, body: Payload<'_>) -> (StatusCode, Value) {
+        let (s, b) = self.raw(method, uri, token, body).await;
+        let v = serde_json::from_slice(&b).unwrap_or_else(|_| Value::String(String::from_utf8_lossy(&b).into_owned()));
+        (s, v)
+    }
+
+    pub async fn get(&self, uri: &str, token: &str) -> (StatusCode, Value) {
+        self.call(Method::GET, uri, Some(token), Payload::None).await
+    }
+
+    pub async fn post(&self, uri: &str, token: &str, body: Value) -> (StatusCode, Value) {
+        self.call(Method::POST, uri, Some(token), Payload::Json(body)).await
+    }
+
+    /// Registers and logs in; returns the access token.
+    pub async fn user(&self, name: &str) -> String {
+        let creds = json!({"username": name, "password": "correct horse battery"});
+        let (s, v) = self.call(Method::POST, "/api/auth/register", None, Payload::Json(creds.clone())).await;
+        assert_eq!(s, StatusCode::CREATED, "{v}");
+        let (s, v) = self.call(Method::POST, "/api/auth/login", None, Payload::Json(creds)).await;
+        assert_eq!(s, StatusCode::OK, "{v}");
+        v["token"].as_str().unwrap().to_string()
+    }
+
+    /// Waits until a job is terminal (no time limit here: the job's own timeout ends it).
+    pub async fn wait_job(&self, id: &str, token: &str) -> Value {
+        loop {
+            let (s, v) = self.get(&format!("/api/jobs/{id}"), token).await;
+            assert_eq!(s, StatusCode::OK, "{v}");
+            if ["succeeded", "failed", "cancelled"].contains(&v["state"].as_str().unwrap()) {
+                return v;
+            }
+            tokio::time::sleep(std::time::Duration::from_millis(50)).await;
+        }
+    }
+
+    pub async fn jobs_stored(&self) -> i64 {
+        self.state.store.count_rows(sw_store::CountedTable::Jobs).await.unwrap()
+    }
+}
+
+pub fn shared<T>(t: T) -> Arc<T> {
+    Arc::new(t)
+}

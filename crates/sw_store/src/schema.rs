@@ -1,0 +1,98 @@
+//! The schema, created idempotently when a database is opened.
+
+use sqlx::SqlitePool;
+
+/// Statements run in order on every open; each is idempotent.
+const STATEMENTS: &[&str] = &[
+    "CREATE TABLE IF NOT EXISTS settings (name TEXT PRIMARY KEY, value TEXT NOT NULL)",
+    "CREATE TABLE IF NOT EXISTS users (
+        id TEXT PRIMARY KEY,
+        username TEXT NOT NULL UNIQUE,
+        password_hash TEXT NOT NULL,
+        role TEXT NOT NULL CHECK (role IN ('admin', 'user')),
+        created_at INTEGER NOT NULL)",
+    "CREATE TABLE IF NOT EXISTS api_keys (
+        id TEXT PRIMARY KEY,
+        user_id TEXT NOT NULL REFERENCES users(id),
+        name TEXT NOT NULL,
+        key_hash TEXT NOT NULL UNIQUE,
+        created_at INTEGER NOT NULL)",
+    "CREATE TABLE IF NOT EXISTS prompts (
+        id TEXT PRIMARY KEY,
+        user_id TEXT NOT NULL REFERENCES users(id),
+        text TEXT NOT NULL,
+        created_at INTEGER NOT NULL)",
+    "CREATE TABLE IF NOT EXISTS jobs (
+        id TEXT PRIMARY KEY,
+        user_id TEXT NOT NULL REFERENCES users(id),
+        kind TEXT NOT NULL CHECK (kind IN ('generate', 'edit')),
+        prompt_id TEXT REFERENCES prompts(id),
+        prompt TEXT NOT NULL,
+        seed INTEGER NOT NULL,
+        options TEXT NOT NULL,
+        parent_scene_id TEXT,
+        state TEXT NOT NULL CHECK (state IN ('queued', 'running', 'succeeded', 'failed', 'cancelled')),
+        stage TEXT,
+        attempts INTEGER NOT NULL DEFAULT 0,
+        max_attempts INTEGER NOT NULL,
+        worker TEXT,
+        lease_until INTEGER,
+        timeout_ms INTEGER NOT NULL,
+        created_at INTEGER NOT NULL,
+        started_at INTEGER,
+        finished_at INTEGER,
+        error TEXT,
+        scene_id TEXT,
+        completions INTEGER NOT NULL DEFAULT 0)",
+    "CREATE INDEX IF NOT EXISTS jobs_state ON jobs(state, created_at)",
+    "CREATE INDEX IF NOT EXISTS jobs_user ON jobs(user_id, state)",
+    "CREATE TABLE IF NOT EXISTS job_events (
+        job_id TEXT NOT NULL REFERENCES jobs(id),
+        seq INTEGER NOT NULL,
+        at INTEGER NOT NULL,
+        body TEXT NOT NULL,
+        PRIMARY KEY (job_id, seq))",
+    "CREATE TABLE IF NOT EXISTS scenes (
+        id TEXT PRIMARY KEY,
+        user_id TEXT NOT NULL REFERENCES users(id),
+        job_id TEXT NOT NULL REFERENCES jobs(id),
+        parent_id TEXT REFERENCES scenes(id),
+        version INTEGER NOT NULL,
+        prompt TEXT NOT NULL,
+        status TEXT NOT NULL,
+        report TEXT NOT NULL,
+        files TEXT NOT NULL,
+        created_at INTEGER NOT NULL)",
+    "CREATE INDEX IF NOT EXISTS scenes_user ON scenes(user_id, created_at)",
+    "CREATE TABLE IF NOT EXISTS edits (
+        id TEXT PRIMARY KEY,
+        user_id TEXT NOT NULL REFERENCES users(id),
+        scene_id TEXT NOT NULL REFERENCES scenes(id),
+        new_scene_id TEXT NOT NULL REFERENCES scenes(id),
+        command TEXT NOT NULL,
+        record TEXT NOT NULL,
+        created_at INTEGER NOT NULL)",
+    "CREATE TABLE IF NOT EXISTS assets (
+        id TEXT PRIMARY KEY,
+        user_id TEXT NOT NULL REFERENCES users(id),
+        description TEXT NOT NULL,
+        category TEXT,
+        meta TEXT NOT NULL,
+        created_at INTEGER NOT NULL)",
+    "CREATE TABLE IF NOT EXISTS telemetry (
+        job_id TEXT NOT NULL REFERENCES jobs(id),
+        kind TEXT NOT NULL,
+        name TEXT NOT NULL,
+        ms REAL NOT NULL,
+        tokens_in INTEGER NOT NULL DEFAULT 0,
+        tokens_out INTEGER NOT NULL DEFAULT 0,
+        at INTEGER NOT NULL)",
+    "CREATE INDEX IF NOT EXISTS telemetry_kind ON telemetry(kind, name)",
+];
+
+pub(crate) async fn migrate(pool: &SqlitePool) -> Result<(), sqlx::Error> {
+    for s in STATEMENTS {
+        sqlx::query(*s).execute(pool).await?;
+    }
+    Ok(())
+}
