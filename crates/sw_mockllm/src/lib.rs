@@ -362,7 +362,6 @@ fn serve(conn: TcpStream, responder: &Responder, log: &Mutex<Vec<Request>>, stop
     } else {
         Reply::status(404, &format!("no route {} {}", req.method, req.path))
     };
-    let _ = conn.set_nodelay(true);
     let mut w = Writer { conn: &conn };
     match reply {
         Reply::Answer { content, delay } => {
