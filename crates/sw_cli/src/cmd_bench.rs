@@ -19,6 +19,9 @@ const SUITE: &str = include_str!("../../../bench/prompts.txt");
 
 #[derive(Debug, Subcommand)]
 pub(crate) enum BenchCommand {
+    /// The service under load: WebSocket clients, or a deep queue and many runners.
+    #[command(subcommand)]
+    Server(crate::bench_server::ServerBench),
     /// Every prompt of the suite (or one prompt, repeated) through the pipeline.
     Scenes {
         /// A prompt file: one prompt per line, `#` comments (default: the built-in suite).
@@ -97,6 +100,7 @@ struct BenchResult {
 
 pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
     match c {
+        BenchCommand::Server(b) => crate::bench_server::run(b),
         BenchCommand::Scenes { suite, prompt, seeds, repeat, json } => scenes(suite, prompt, seeds, repeat, json),
         BenchCommand::Assets { seeds, only, json } => assets(seeds, &only, json),
         BenchCommand::LlmLatency { runs, time_scale, seed, json } => {

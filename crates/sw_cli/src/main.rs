@@ -4,6 +4,7 @@
 //! that failed verification.
 
 mod bench_llm;
+mod bench_server;
 mod cmd_assets;
 mod cmd_bench;
 mod cmd_edit;
