@@ -16,9 +16,9 @@ use crate::request::{ChatRequest, Shape, body};
 use crate::sse::{SseEvent, SseParser};
 
 /// The largest answer accepted, bytes.
-const MAX_ANSWER_BYTES: usize = 8 << 20;
+pub(crate) const MAX_ANSWER_BYTES: usize = 8 << 20;
 /// The largest error body read, bytes.
-const MAX_ERROR_BYTES: u64 = 64 << 10;
+pub(crate) const MAX_ERROR_BYTES: u64 = 64 << 10;
 
 /// A model's answer and what it cost.
 #[derive(Debug, Clone, PartialEq)]
@@ -109,20 +109,20 @@ pub struct Client {
 
 /// One failed attempt.
 #[derive(Debug)]
-struct AttemptError {
-    outcome: LlmOutcome,
-    message: String,
-    retry_after: Option<Duration>,
+pub(crate) struct AttemptError {
+    pub(crate) outcome: LlmOutcome,
+    pub(crate) message: String,
+    pub(crate) retry_after: Option<Duration>,
     /// The server refused part of the request shape (a simpler one may work).
     shape_refused: bool,
 }
 
 impl AttemptError {
-    fn new(outcome: LlmOutcome, message: impl Into<String>) -> Self {
+    pub(crate) fn new(outcome: LlmOutcome, message: impl Into<String>) -> Self {
         Self { outcome, message: message.into(), retry_after: None, shape_refused: false }
     }
 
-    fn retryable(&self) -> bool {
+    pub(crate) fn retryable(&self) -> bool {
         matches!(
             self.outcome,
             LlmOutcome::RateLimited
@@ -183,7 +183,7 @@ impl Client {
         self.call(stage, req, purpose, true, on)
     }
 
-    fn agent(&self, stage: LlmStage, ep: &Endpoint) -> ureq::Agent {
+    pub(crate) fn agent(&self, stage: LlmStage, ep: &Endpoint) -> ureq::Agent {
         let mut agents = match self.agents.lock() {
             Ok(a) => a,
             Err(p) => p.into_inner(),
@@ -304,12 +304,12 @@ impl Client {
     }
 }
 
-fn ms(d: Duration) -> f64 {
+pub(crate) fn ms(d: Duration) -> f64 {
     (d.as_secs_f64() * 1e6).round() / 1e3
 }
 
 /// Exponential back-off with ±25 % jitter, or the server's `Retry-After`, capped.
-fn backoff(ep: &Endpoint, retry: u32, retry_after: Option<Duration>) -> Duration {
+pub(crate) fn backoff(ep: &Endpoint, retry: u32, retry_after: Option<Duration>) -> Duration {
     if let Some(ra) = retry_after {
         return ra.min(ep.max_backoff);
     }
@@ -387,7 +387,7 @@ fn attempt(
     }
 }
 
-fn transport_error(e: ureq::Error) -> AttemptError {
+pub(crate) fn transport_error(e: ureq::Error) -> AttemptError {
     match e {
         ureq::Error::Timeout(t) => AttemptError::new(LlmOutcome::Timeout, format!("no answer in time ({t})")),
         ureq::Error::Io(io) if matches!(io.kind(), std::io::ErrorKind::TimedOut | std::io::ErrorKind::WouldBlock) => {
@@ -403,7 +403,7 @@ fn transport_error(e: ureq::Error) -> AttemptError {
 }
 
 /// `{"error": {"message": …}}` or `{"error": "…"}` or `{"message": …}`.
-fn error_message(text: &str) -> Option<String> {
+pub(crate) fn error_message(text: &str) -> Option<String> {
     let v: Value = serde_json::from_str(text).ok()?;
     let e = v.get("error").unwrap_or(&v);
     let m = e.get("message").and_then(Value::as_str).or_else(|| e.as_str())?;

@@ -101,6 +101,12 @@ impl Endpoint {
         let base = self.base_url.trim_end_matches('/');
         if base.ends_with("/chat/completions") { base.to_string() } else { format!("{base}/chat/completions") }
     }
+
+    /// `{base}/embeddings` (a base URL that already names the route is kept).
+    pub(crate) fn embeddings_url(&self) -> String {
+        let base = self.base_url.trim_end_matches('/');
+        if base.ends_with("/embeddings") { base.to_string() } else { format!("{base}/embeddings") }
+    }
 }
 
 /// Endpoints per stage. A stage with no endpoint does not call a model.

@@ -8,6 +8,7 @@
 //!   retries with exponential back-off on 429, 5xx, timeouts and broken connections
 //!   (honouring `Retry-After`), and a simpler request for servers that reject parts of
 //!   the OpenAI shape.
+//! - [`Client::embed`]: vectors from the embeddings stage's endpoint (`/embeddings`).
 //! - Telemetry: every call becomes an [`sw_plan::LlmCall`] (stage, model, latency,
 //!   tokens in and out, retries, outcome) in the client's [`Telemetry`] and in the
 //!   process-wide [`metrics`].
@@ -19,6 +20,7 @@
 
 mod client;
 mod config;
+mod embed;
 mod lenient;
 pub mod metrics;
 mod request;
@@ -27,6 +29,7 @@ mod sse;
 
 pub use client::{Client, Completion, LlmError, StreamEvent, Telemetry};
 pub use config::{ApiKey, ConfigError, Endpoint, LlmConfig};
+pub use embed::MAX_BATCH as EMBED_BATCH;
 pub use lenient::{ExtractError, extract_json, preview};
 pub use request::{ChatRequest, Message, Role};
 pub use scan::ArrayScanner;

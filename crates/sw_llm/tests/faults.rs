@@ -308,3 +308,57 @@ fn metrics_count_calls_by_stage_and_outcome() {
     assert!(text.contains("scenewright_llm_calls_total{stage=\"embeddings\",outcome=\"ok\"}"), "{text}");
     assert!(text.contains("scenewright_llm_latency_seconds_bucket{stage=\"embeddings\",outcome=\"ok\",le=\"+Inf\"}"));
 }
+
+#[test]
+fn embeddings_come_back_in_order_with_usage_and_similar_texts_point_alike() {
+    let server = MockServer::start(|req| {
+        assert!(req.path.ends_with("/embeddings"), "{}", req.path);
+        Reply::embeddings(req, 64)
+    })
+    .unwrap();
+    let c = client(&server);
+    let texts: Vec<String> = ["steel storage rack", "storage rack", "coffee mug"].map(String::from).to_vec();
+    let v = c.embed(&texts, "index").unwrap();
+    assert_eq!(v.len(), 3);
+    assert!(v.iter().all(|x| x.len() == 64));
+    let cos = |a: &[f32], b: &[f32]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>();
+    assert!(cos(&v[0], &v[1]) > cos(&v[0], &v[2]), "the double is not a real embedding otherwise");
+    let call = &c.telemetry().calls()[0];
+    assert_eq!((call.stage, call.outcome, call.tokens_estimated), (LlmStage::Embeddings, LlmOutcome::Ok, false));
+    let body = server.requests()[0].json().unwrap();
+    assert_eq!(body["model"], "mock-model");
+    assert_eq!(body["input"][2], "coffee mug");
+    // Nothing to embed: no request.
+    assert!(c.embed(&[], "index").unwrap().is_empty());
+    assert_eq!(server.requests().len(), 1);
+}
+
+#[test]
+fn embedding_faults_are_retried_or_named() {
+    let texts = vec!["a crate".to_string()];
+    let server = MockServer::start(script(vec![
+        Reply::rate_limited(0),
+        Reply::status(503, "overloaded"),
+        Reply::recorded(r#"{"data":[{"index":0,"embedding":[0.6,0.8]}]}"#, "application/json"),
+    ]))
+    .unwrap();
+    let c = client(&server);
+    let v = within(Duration::from_secs(3), || c.embed(&texts, "index")).unwrap();
+    assert_eq!(v, vec![vec![0.6f32, 0.8]]);
+    assert_eq!(c.telemetry().calls()[0].retries, 2);
+    for (reply, outcome) in [
+        (Reply::recorded("I am a language model and cannot embed.", "text/plain"), LlmOutcome::Malformed),
+        (Reply::recorded(r#"{"data":[{"index":0,"embedding":[1,"x"]}]}"#, "application/json"), LlmOutcome::Malformed),
+        (Reply::recorded(r#"{"data":[]}"#, "application/json"), LlmOutcome::Malformed),
+        (Reply::status(401, "bad key"), LlmOutcome::Rejected),
+        (Reply::Hang(Duration::from_secs(5)), LlmOutcome::Timeout),
+    ] {
+        let server = MockServer::start(move |_| reply.clone()).unwrap();
+        let c = client(&server);
+        let e = within(Duration::from_secs(8), || c.embed(&texts, "index")).unwrap_err();
+        assert_eq!(e.outcome(), outcome, "{e}");
+        assert!(e.to_string().contains("embeddings stage"), "{e}");
+    }
+    let e = Client::new(LlmConfig::offline()).embed(&texts, "index").unwrap_err();
+    assert!(e.to_string().contains("embeddings stage"), "{e}");
+}

@@ -130,6 +130,46 @@ impl Reply {
     pub fn recorded(body: impl Into<Vec<u8>>, content_type: &str) -> Reply {
         Reply::Raw { status: 200, content_type: content_type.to_string(), body: body.into(), delay: Duration::ZERO }
     }
+
+    /// An `/embeddings` answer for the request's `input`: per text, a unit vector of
+    /// `dims` hashed character trigrams (texts sharing words point the same way), in
+    /// the provider's shape with usage. A request without inputs gets a 400.
+    pub fn embeddings(req: &Request, dims: usize) -> Reply {
+        let inputs: Vec<String> = match req.json().and_then(|v| v.get("input").cloned()) {
+            Some(Value::String(s)) => vec![s],
+            Some(Value::Array(a)) => a.iter().filter_map(|x| x.as_str().map(str::to_string)).collect(),
+            _ => return Reply::status(400, "'input' is required"),
+        };
+        let dims = dims.max(1);
+        let data: Vec<Value> = inputs
+            .iter()
+            .enumerate()
+            .map(|(i, t)| json!({ "object": "embedding", "index": i, "embedding": trigram_vector(t, dims) }))
+            .collect();
+        let tokens: usize = inputs.iter().map(|t| t.len().div_ceil(4)).sum();
+        let body = json!({ "object": "list", "data": data, "model": req.model(), "usage": { "prompt_tokens": tokens, "total_tokens": tokens } });
+        Reply::recorded(body.to_string(), "application/json")
+    }
+}
+
+/// A unit vector of hashed character trigrams of the lower-cased, padded words.
+fn trigram_vector(text: &str, dims: usize) -> Vec<f32> {
+    let mut v = vec![0f32; dims];
+    for word in text.to_lowercase().split(|c: char| !c.is_alphanumeric()).filter(|w| !w.is_empty()) {
+        let padded: Vec<char> = format!(" {word} ").chars().collect();
+        for w in padded.windows(3) {
+            let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+            for c in w {
+                h = (h ^ u64::from(*c)).wrapping_mul(0x0100_0000_01b3);
+            }
+            v[(h % dims as u64) as usize] += 1.0;
+        }
+    }
+    let n = v.iter().map(|x| x * x).sum::<f32>().sqrt();
+    if n > 0.0 {
+        v.iter_mut().for_each(|x| *x /= n);
+    }
+    v
 }
 
 type Responder = dyn Fn(&Request) -> Reply + Send + Sync;
@@ -357,7 +397,8 @@ fn serve(conn: TcpStream, responder: &Responder, log: &Mutex<Vec<Request>>, stop
     }
     let model = req.model();
     let prompt_tokens = req.body.len().div_ceil(4);
-    let reply = if req.method == "POST" && req.path.ends_with("/chat/completions") {
+    let routed = req.path.ends_with("/chat/completions") || req.path.ends_with("/embeddings");
+    let reply = if req.method == "POST" && routed {
         responder(&req)
     } else {
         Reply::status(404, &format!("no route {} {}", req.method, req.path))
