@@ -8,6 +8,7 @@ mod bench_server;
 mod cmd_assets;
 mod cmd_bench;
 mod cmd_edit;
+mod cmd_forge;
 mod cmd_generate;
 mod cmd_llm;
 mod cmd_robots;
