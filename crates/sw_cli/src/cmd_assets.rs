@@ -1,4 +1,4 @@
-//! `assets list|show|render|sheet`.
+//! `assets list|show|render|sheet|generate`.
 
 use std::path::{Path, PathBuf};
 
@@ -35,6 +35,19 @@ pub(crate) enum AssetsCommand {
         seed: u64,
         #[arg(long, default_value_t = 640)]
         size: u32,
+    },
+    /// A part from a dimensioned mechanical prompt, offline: CadQuery code from the
+    /// template synthesizer, run in the sandbox, validated (size 1 %, volume 2 %), written
+    /// as part.stl (metres), part.py, part.json and preview.png.
+    Generate {
+        prompt: String,
+        #[arg(long)]
+        out: PathBuf,
+        /// Skip the preview picture.
+        #[arg(long)]
+        no_preview: bool,
+        #[arg(long)]
+        json: bool,
     },
     /// A contact sheet of every category (or of the listed ones).
     Sheet {
@@ -184,6 +197,9 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
                 print(&lines.join("\n"));
             }
             Ok(0)
+        }
+        AssetsCommand::Generate { prompt, out, no_preview, json } => {
+            crate::cmd_forge::generate(&prompt, out, no_preview, json)
         }
         AssetsCommand::Render { name, out, seed, size } => {
             let cat = find(&name)?;

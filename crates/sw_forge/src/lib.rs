@@ -4,9 +4,13 @@
 //!   (or OpenSCAD) code and hand back an STL or a structured error;
 //! - [`validate`]: is the mesh a closed solid of the requested size, volume and number
 //!   of through-holes;
-//! - [`failure`]: the taxonomy every failed attempt is filed under.
+//! - [`failure`]: the taxonomy every failed attempt is filed under;
+//! - [`synth`]: the offline template synthesizer, CadQuery code for dimensioned prompts;
+//! - [`part`]: synthesize, run, validate and write one part offline.
 
 pub mod failure;
 pub mod mesh_io;
+pub mod part;
 pub mod runner;
+pub mod synth;
 pub mod validate;

@@ -93,6 +93,20 @@ pub struct Visual {
     pub mesh: Mesh,
 }
 
+/// A convex collision piece of a link: MuJoCo collides a mesh geom as the convex hull of
+/// its vertices, so a concave object (a generated part) collides as several of these.
+/// The mesh is the piece's hull, in the link frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConvexPiece {
+    pub mesh: Mesh,
+}
+
+impl ConvexPiece {
+    pub fn aabb(&self) -> Aabb {
+        self.mesh.bounds()
+    }
+}
+
 /// One collision primitive of a link, posed in the link frame.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Collision {
@@ -138,6 +152,8 @@ pub struct Link {
     pub joint: Option<JointSpec>,
     pub visuals: Vec<Visual>,
     pub collisions: Vec<Collision>,
+    /// Convex mesh pieces that collide besides the primitives (generated assets).
+    pub convex: Vec<ConvexPiece>,
     /// Mass of a moving link, kg (the root's mass is the asset's [`MassModel`]).
     pub mass: f64,
 }
@@ -223,7 +239,10 @@ impl Asset {
         self.links
             .iter()
             .zip(&poses)
-            .flat_map(|(link, lp)| link.collisions.iter().map(move |c| c.aabb().transformed(lp)))
+            .flat_map(|(link, lp)| {
+                let primitives = link.collisions.iter().map(move |c| c.aabb().transformed(lp));
+                primitives.chain(link.convex.iter().map(move |p| p.aabb().transformed(lp)))
+            })
             .collect()
     }
 
@@ -237,6 +256,9 @@ impl Asset {
             }
             for c in &link.collisions {
                 b = b.union(&c.aabb().transformed(lp));
+            }
+            for p in &link.convex {
+                b = b.union(&p.aabb().transformed(lp));
             }
         }
         b
@@ -262,6 +284,11 @@ impl Asset {
             for v in &mut link.visuals {
                 for p in &mut v.mesh.vertices {
                     *p = p.map(|c| (f64::from(c) * f) as f32);
+                }
+            }
+            for p in &mut link.convex {
+                for v in &mut p.mesh.vertices {
+                    *v = v.map(|c| (f64::from(c) * f) as f32);
                 }
             }
             for c in &mut link.collisions {
@@ -320,6 +347,7 @@ impl AssetBuilder {
                     joint: None,
                     visuals: Vec::new(),
                     collisions: Vec::new(),
+                    convex: Vec::new(),
                     mass: 0.0,
                 }],
                 surfaces: Vec::new(),
@@ -356,6 +384,7 @@ impl AssetBuilder {
             joint: Some(joint),
             visuals: Vec::new(),
             collisions: Vec::new(),
+            convex: Vec::new(),
             mass,
         });
         self.asset.links.len() - 1
@@ -401,6 +430,14 @@ impl AssetBuilder {
     pub fn collision_on(&mut self, link: usize, shape: Shape, pose: Pose) -> &mut Self {
         if let Some(l) = self.asset.links.get_mut(link) {
             l.collisions.push(Collision { shape, pose });
+        }
+        self
+    }
+
+    /// A convex collision piece on link `link` (its hull mesh, in the link frame).
+    pub fn convex_on(&mut self, link: usize, mesh: Mesh) -> &mut Self {
+        if let Some(l) = self.asset.links.get_mut(link) {
+            l.convex.push(ConvexPiece { mesh });
         }
         self
     }

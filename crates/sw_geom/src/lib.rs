@@ -14,7 +14,7 @@ mod rng;
 mod stl;
 
 pub use asset::{
-    Asset, AssetBuilder, Collision, JointKind, JointSpec, Link, MassModel, Material, PlacementKind, Shape,
+    Asset, AssetBuilder, Collision, ConvexPiece, JointKind, JointSpec, Link, MassModel, Material, PlacementKind, Shape,
     SupportSurface, Visual,
 };
 pub use mesh::{Aabb, Mesh, MeshCheck};

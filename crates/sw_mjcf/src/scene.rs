@@ -542,6 +542,21 @@ fn fill_link(
         }
         body.children.push(g);
     }
+    // Convex pieces of generated assets: MuJoCo collides a mesh as its convex hull.
+    let first = link.collisions.len();
+    for (k, piece) in link.convex.iter().enumerate() {
+        if piece.mesh.is_empty() {
+            continue;
+        }
+        let mesh = meshes.intern(&format!("{}_hull", asset.category), &piece.mesh);
+        body.children.push(
+            Element::new("geom")
+                .with("name", format!("{prefix}_c{}", first + k))
+                .with("class", "sw_collision")
+                .with("type", "mesh")
+                .with("mesh", mesh),
+        );
+    }
     for (ci, child) in asset.links.iter().enumerate().filter(|(_, l)| l.parent == Some(index)) {
         let mut b = Element::new("body")
             .with("name", format!("{}_{}", obj.name, child.name))
@@ -575,6 +590,9 @@ fn inertial(link: &Link, mass: f64) -> Element {
     let mut b = Aabb::EMPTY;
     for c in &link.collisions {
         b = b.union(&c.aabb());
+    }
+    for p in &link.convex {
+        b = b.union(&p.aabb());
     }
     let (c, s) = if b.is_empty() { ([0.0; 3], [0.1; 3]) } else { (b.center(), b.size()) };
     let m = mass.max(1e-3);

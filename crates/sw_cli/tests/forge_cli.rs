@@ -1,0 +1,49 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! `assets generate` and `bench cad` through the binary. Needs `scripts/setup.sh --tests`
+//! (the CadQuery venv).
+
+use std::process::Command;
+
+const BIN: &str = env!("CARGO_BIN_EXE_scenewright");
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(BIN).args(args).output().expect("run scenewright");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn assets_generate_writes_the_washer_of_the_issue() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("washer");
+    let prompt = "A flat washer: outer diameter 20mm, inner diameter 10.5mm, thickness 2mm";
+    let (code, stdout, stderr) = run(&["assets", "generate", prompt, "--out", out.to_str().unwrap(), "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(v["metadata"]["template"], "washer");
+    let measured = v["metadata"]["measured_size_mm"].as_array().unwrap();
+    let want = [20.0, 20.0, 2.0];
+    for (m, w) in measured.iter().zip(want) {
+        assert!((m.as_f64().unwrap() - w).abs() <= 0.01 * w + 0.02, "{measured:?}");
+    }
+    let mesh = sw_geom::read_stl(std::fs::File::open(out.join("part.stl")).unwrap()).unwrap();
+    assert!(mesh.check().watertight);
+    let analytic = std::f64::consts::PI * (10.0f64.powi(2) - 5.25f64.powi(2)) * 2.0 * 1e-9;
+    assert!((mesh.volume() - analytic).abs() / analytic < 0.02, "{} m³", mesh.volume());
+    assert!(out.join("part.py").is_file() && out.join("preview.png").is_file());
+}
+
+#[test]
+fn assets_generate_refuses_bad_prompts_with_one_line_and_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("x");
+    for prompt in ["", "a teapot", "a washer", "A washer: outer diameter 10mm, inner diameter 12mm, 2mm thick"] {
+        let (code, stdout, stderr) = run(&["assets", "generate", prompt, "--out", out.to_str().unwrap()]);
+        assert_eq!(code, 2, "{prompt}: {stdout}{stderr}");
+        assert_eq!(stderr.trim().lines().count(), 1, "{stderr}");
+        assert!(!out.exists(), "nothing is written for bad input");
+    }
+}
