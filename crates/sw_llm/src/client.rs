@@ -337,38 +337,28 @@ fn attempt(
         r = r.header("authorization", format!("Bearer {}", k.expose()));
     }
     let resp = r.send(payload.as_bytes()).map_err(transport_error)?;
-    let status = resp.status().as_u16();
-    let retry_after = resp
-        .headers()
-        .get("retry-after")
-        .and_then(|v| v.to_str().ok())
-        .and_then(|v| v.trim().parse::<f64>().ok())
-        .filter(|v| v.is_finite() && *v >= 0.0)
-        .map(|v| Duration::from_secs_f64(v.min(3600.0)));
     let content_type =
         resp.headers().get("content-type").and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase();
-    let mut body = resp.into_body();
-    if !(200..300).contains(&status) {
-        let text = body
-            .with_config()
-            .limit(MAX_ERROR_BYTES)
-            .read_to_vec()
-            .map(|b| String::from_utf8_lossy(&b).into_owned())
-            .unwrap_or_default();
-        let message = error_message(&text).unwrap_or_else(|| preview(&text));
-        let outcome = match status {
-            429 => LlmOutcome::RateLimited,
-            500..=599 => LlmOutcome::ServerError,
-            _ => LlmOutcome::Rejected,
-        };
-        let lower = text.to_ascii_lowercase();
-        let shape_refused = matches!(status, 400 | 422)
-            && shape != Shape::Plain
-            && ["response_format", "json_schema", "stream_options", "unsupported", "not supported", "extra", "unknown"]
+    let mut body = match http_error(resp) {
+        Ok(body) => body,
+        Err((mut e, status, text)) => {
+            let lower = text.to_ascii_lowercase();
+            e.shape_refused = matches!(status, 400 | 422)
+                && shape != Shape::Plain
+                && [
+                    "response_format",
+                    "json_schema",
+                    "stream_options",
+                    "unsupported",
+                    "not supported",
+                    "extra",
+                    "unknown",
+                ]
                 .iter()
                 .any(|w| lower.contains(w));
-        return Err(AttemptError { outcome, message: format!("HTTP {status}: {message}"), retry_after, shape_refused });
-    }
+            return Err(e);
+        }
+    };
     if stream && content_type.contains("text/event-stream") {
         read_stream(body.into_reader(), started, on)
     } else {
@@ -385,6 +375,37 @@ fn attempt(
         }
         Ok(Answer { first_token: Some(started.elapsed()), ..a })
     }
+}
+
+/// A 2xx response's body, or the error a non-2xx one means (with its `Retry-After`), its
+/// status and the error body's text.
+pub(crate) fn http_error(resp: ureq::http::Response<ureq::Body>) -> Result<ureq::Body, (AttemptError, u16, String)> {
+    let status = resp.status().as_u16();
+    let retry_after = resp
+        .headers()
+        .get("retry-after")
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.trim().parse::<f64>().ok())
+        .filter(|v| v.is_finite() && *v >= 0.0)
+        .map(|v| Duration::from_secs_f64(v.min(3600.0)));
+    let mut body = resp.into_body();
+    if (200..300).contains(&status) {
+        return Ok(body);
+    }
+    let text = body
+        .with_config()
+        .limit(MAX_ERROR_BYTES)
+        .read_to_vec()
+        .map(|b| String::from_utf8_lossy(&b).into_owned())
+        .unwrap_or_default();
+    let message = error_message(&text).unwrap_or_else(|| preview(&text));
+    let outcome = match status {
+        429 => LlmOutcome::RateLimited,
+        500..=599 => LlmOutcome::ServerError,
+        _ => LlmOutcome::Rejected,
+    };
+    let e = AttemptError { outcome, message: format!("HTTP {status}: {message}"), retry_after, shape_refused: false };
+    Err((e, status, text))
 }
 
 pub(crate) fn transport_error(e: ureq::Error) -> AttemptError {

@@ -2,15 +2,13 @@
 //! shape): the provider's alternative to the in-process model of the asset index. The
 //! same retries, back-off and telemetry as chat calls.
 
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use serde_json::{Value, json};
 use sw_plan::{LlmCall, LlmOutcome, LlmStage};
 use tracing::{debug, info_span};
 
-use crate::client::{
-    AttemptError, Client, LlmError, MAX_ANSWER_BYTES, MAX_ERROR_BYTES, backoff, error_message, ms, transport_error,
-};
+use crate::client::{AttemptError, Client, LlmError, MAX_ANSWER_BYTES, backoff, http_error, ms, transport_error};
 use crate::config::Endpoint;
 use crate::lenient::preview;
 
@@ -88,32 +86,7 @@ fn attempt(agent: &ureq::Agent, ep: &Endpoint, texts: &[String]) -> Result<(Vec<
         r = r.header("authorization", format!("Bearer {}", k.expose()));
     }
     let resp = r.send(payload.as_bytes()).map_err(transport_error)?;
-    let status = resp.status().as_u16();
-    let retry_after = resp
-        .headers()
-        .get("retry-after")
-        .and_then(|v| v.to_str().ok())
-        .and_then(|v| v.trim().parse::<f64>().ok())
-        .filter(|v| v.is_finite() && *v >= 0.0)
-        .map(|v| Duration::from_secs_f64(v.min(3600.0)));
-    let mut body = resp.into_body();
-    if !(200..300).contains(&status) {
-        let text = body
-            .with_config()
-            .limit(MAX_ERROR_BYTES)
-            .read_to_vec()
-            .map(|b| String::from_utf8_lossy(&b).into_owned())
-            .unwrap_or_default();
-        let message = error_message(&text).unwrap_or_else(|| preview(&text));
-        let outcome = match status {
-            429 => LlmOutcome::RateLimited,
-            500..=599 => LlmOutcome::ServerError,
-            _ => LlmOutcome::Rejected,
-        };
-        let mut e = AttemptError::new(outcome, format!("HTTP {status}: {message}"));
-        e.retry_after = retry_after;
-        return Err(e);
-    }
+    let mut body = http_error(resp).map_err(|(e, _, _)| e)?;
     let bytes = body.with_config().limit(MAX_ANSWER_BYTES as u64).read_to_vec().map_err(transport_error)?;
     parse(&String::from_utf8_lossy(&bytes), texts.len())
 }
