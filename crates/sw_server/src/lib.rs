@@ -27,7 +27,7 @@ use std::time::Duration;
 use axum::Router;
 use axum::extract::DefaultBodyLimit;
 use axum::routing::{get, post};
-use sw_store::{BlobStore, LocalBlobs, QueueLimits, Store};
+use sw_store::{BlobStore, LocalBlobs, QueueLimits, S3Blobs, S3Config, Store};
 use tokio::sync::broadcast;
 
 pub use auth::{Claims, Tokens, hash_password};
@@ -98,11 +98,22 @@ pub enum StartError {
     Io { path: String, source: std::io::Error },
 }
 
-/// Opens the database and blob store under `data_dir`.
+/// Opens the database under `data_dir` and the blob store: an S3-compatible bucket when
+/// `SCENEWRIGHT_S3_ENDPOINT` is set (see [`S3Config::from_env`]), else `data_dir/blobs`.
 pub async fn open_data(data_dir: &std::path::Path) -> Result<(Store, Arc<dyn BlobStore>), StartError> {
     fs_err::create_dir_all(data_dir).map_err(|e| StartError::Io { path: data_dir.display().to_string(), source: e })?;
     let store = Store::open_sqlite(&data_dir.join("scenewright.db")).await?;
-    let blobs: Arc<dyn BlobStore> = Arc::new(LocalBlobs::new(data_dir.join("blobs"))?);
+    let blobs: Arc<dyn BlobStore> = match S3Config::from_env() {
+        Some(config) => {
+            tracing::info!(endpoint = %config.endpoint, bucket = %config.bucket, "packages in S3");
+            let s3 = S3Blobs::new(config);
+            let s3 = tokio::task::spawn_blocking(move || s3.ensure_bucket().map(|()| s3))
+                .await
+                .map_err(|e| StartError::Io { path: "S3".into(), source: std::io::Error::other(e) })??;
+            Arc::new(s3)
+        }
+        None => Arc::new(LocalBlobs::new(data_dir.join("blobs"))?),
+    };
     Ok((store, blobs))
 }
 

@@ -14,6 +14,7 @@
 //! never completed twice.
 
 mod blob;
+mod blob_s3;
 mod ids;
 mod jobs;
 mod scenes;
@@ -28,6 +29,7 @@ use sqlx::SqlitePool;
 use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode, SqlitePoolOptions, SqliteSynchronous};
 
 pub use blob::{BlobError, BlobStore, LocalBlobs, check_key};
+pub use blob_s3::{S3Blobs, S3Config};
 pub use ids::{is_id, new_id, new_secret, now_ms};
 pub use jobs::{Claim, Job, JobKind, JobState, NewJob, QueueLimits, Recovered};
 pub use scenes::{Asset, EditRecord, NewScene, Scene, StageStat, Telemetry};
