@@ -50,6 +50,24 @@ pub(crate) enum BenchCommand {
         #[arg(long)]
         json: bool,
     },
+    /// A CAD prompt suite through the offline template synthesizer and the sandboxed
+    /// runner: execution rate, retries, failure kinds, extent and volume errors against
+    /// the suite's references, Chamfer distance where a reference mesh is given, and the
+    /// warm runner's latency per simple part.
+    Cad {
+        /// standard_100, abstract_45, or a TSV file (id<TAB>tier<TAB>prompt; references
+        /// from FILE.refs.tsv beside it).
+        #[arg(long, default_value = "standard_100")]
+        suite: String,
+        /// Runner workers (parts run in parallel).
+        #[arg(long, default_value_t = 2)]
+        workers: usize,
+        /// Times the executed T1 parts are run again, one at a time, for the latency.
+        #[arg(long, default_value_t = 3)]
+        latency_repeat: usize,
+        #[arg(long)]
+        json: bool,
+    },
     /// End-to-end latency with LLM stages against a local server with the paper's
     /// per-call latencies (time-scaled), ours next to the paper's structure.
     LlmLatency {
@@ -103,6 +121,9 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
         BenchCommand::Server(b) => crate::bench_server::run(b),
         BenchCommand::Scenes { suite, prompt, seeds, repeat, json } => scenes(suite, prompt, seeds, repeat, json),
         BenchCommand::Assets { seeds, only, json } => assets(seeds, &only, json),
+        BenchCommand::Cad { suite, workers, latency_repeat, json } => {
+            crate::bench_cad::run(&suite, workers, latency_repeat, json)
+        }
         BenchCommand::LlmLatency { runs, time_scale, seed, json } => {
             crate::bench_llm::run(runs, time_scale, seed, json)
         }

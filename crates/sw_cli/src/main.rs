@@ -3,6 +3,7 @@
 //! Exit codes: 0 success; 2 bad input (one line on stderr); 1 internal error or a scene
 //! that failed verification.
 
+mod bench_cad;
 mod bench_llm;
 mod bench_server;
 mod cmd_assets;

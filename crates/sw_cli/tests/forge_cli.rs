@@ -47,3 +47,40 @@ fn assets_generate_refuses_bad_prompts_with_one_line_and_exit_2() {
         assert!(!out.exists(), "nothing is written for bad input");
     }
 }
+
+#[test]
+fn bench_cad_measures_against_references_and_catches_a_wrong_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let suite = dir.path().join("mini.tsv");
+    std::fs::write(
+        &suite,
+        "# a small suite\nA1\tT1\tA cube with 20mm sides.\nA2\tT1\tA cylinder 10mm in diameter and 30mm tall.\nA3\tT2\tA teapot.\n",
+    )
+    .unwrap();
+    // A2's reference volume is deliberately 10 % off.
+    let v2 = std::f64::consts::PI * 25.0 * 30.0 * 1.1;
+    std::fs::write(dir.path().join("mini.refs.tsv"), format!("A1\t20\t20\t20\t8000\t-\nA2\t10\t10\t30\t{v2}\t-\n"))
+        .unwrap();
+    let (code, stdout, stderr) =
+        run(&["bench", "cad", "--suite", suite.to_str().unwrap(), "--workers", "1", "--latency-repeat", "1", "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let outcomes = v["outcomes"].as_array().unwrap();
+    let by_id = |id: &str| outcomes.iter().find(|o| o["id"] == id).unwrap();
+    assert_eq!(by_id("A1")["pass"], true);
+    assert_eq!(by_id("A2")["executed"], true);
+    assert_eq!(by_id("A2")["pass"], false);
+    assert_eq!(by_id("A2")["failure"], "semantic_mismatch");
+    assert_eq!(by_id("A3")["executed"], false);
+    assert_eq!(by_id("A3")["failure"], "writer");
+    assert_eq!(v["tiers"]["T1"]["executed"], 2);
+    assert_eq!(v["tiers"]["T1"]["passed"], 1);
+    assert!(v["warm_latency"]["median_ms"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn bench_cad_refuses_an_unknown_suite() {
+    let (code, _, stderr) = run(&["bench", "cad", "--suite", "no_such_suite"]);
+    assert_eq!(code, 2);
+    assert_eq!(stderr.trim().lines().count(), 1, "{stderr}");
+}

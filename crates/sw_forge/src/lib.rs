@@ -10,6 +10,7 @@
 
 pub mod failure;
 pub mod mesh_io;
+pub mod metrics;
 pub mod part;
 pub mod runner;
 pub mod synth;
