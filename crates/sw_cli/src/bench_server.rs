@@ -42,6 +42,9 @@ pub(crate) enum ServerBench {
         workers: usize,
         #[arg(long)]
         no_verify: bool,
+        /// An empty PostgreSQL database to run on (default: SQLite in a temporary directory).
+        #[arg(long, value_name = "URL")]
+        database: Option<String>,
         #[arg(long)]
         json: bool,
     },
@@ -63,13 +66,15 @@ pub(crate) fn run(c: ServerBench) -> Result<u8, Failure> {
             ServerBench::Websockets { clients, workers, no_verify, json } => {
                 websockets(clients, workers, !no_verify, json).await
             }
-            ServerBench::Queue { jobs, workers, no_verify, json } => queue(jobs, workers, !no_verify, json).await,
+            ServerBench::Queue { jobs, workers, no_verify, database, json } => {
+                queue(jobs, workers, !no_verify, database, json).await
+            }
         }
     })
 }
 
-async fn state(dir: &std::path::Path, limits: QueueLimits) -> Result<AppState, Failure> {
-    let (store, blobs) = sw_server::open_data(dir).await.map_err(|e| Failure::internal(e.to_string()))?;
+async fn state(dir: &std::path::Path, database: Option<&str>, limits: QueueLimits) -> Result<AppState, Failure> {
+    let (store, blobs) = sw_server::open_data(dir, database).await.map_err(|e| Failure::internal(e.to_string()))?;
     let runner = RunnerConfig { work_dir: Some(dir.join("work")), poll_ms: 100, ..RunnerConfig::default() };
     AppState::new(store, blobs, limits, runner, 3600).await.map_err(|e| Failure::internal(e.to_string()))
 }
@@ -124,7 +129,7 @@ struct WsResult {
 async fn websockets(clients: usize, workers: usize, verify: bool, json_out: bool) -> Result<u8, Failure> {
     let dir = tempfile::tempdir().map_err(|e| Failure::internal(e.to_string()))?;
     let limits = QueueLimits { queue_cap: clients.max(100) as i64, per_user_running: 5 };
-    let st = state(dir.path(), limits).await?;
+    let st = state(dir.path(), None, limits).await?;
     let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.map_err(|e| Failure::internal(e.to_string()))?;
     let addr = listener.local_addr().map_err(|e| Failure::internal(e.to_string()))?;
     let app = sw_server::router(st.clone());
@@ -255,6 +260,7 @@ async fn axum_serve(listener: tokio::net::TcpListener, app: axum::Router) {
 
 #[derive(Debug, Serialize)]
 struct QueueResult {
+    database: &'static str,
     jobs: usize,
     workers: usize,
     verify: bool,
@@ -270,10 +276,16 @@ struct QueueResult {
     errors: Vec<String>,
 }
 
-async fn queue(jobs: usize, workers: usize, verify: bool, json_out: bool) -> Result<u8, Failure> {
+async fn queue(
+    jobs: usize,
+    workers: usize,
+    verify: bool,
+    database: Option<String>,
+    json_out: bool,
+) -> Result<u8, Failure> {
     let dir = tempfile::tempdir().map_err(|e| Failure::internal(e.to_string()))?;
     let limits = QueueLimits { queue_cap: jobs as i64 + 1, per_user_running: workers as i64 };
-    let st = state(dir.path(), limits).await?;
+    let st = state(dir.path(), database.as_deref(), limits).await?;
     let store = st.store.clone();
     let ie = |e: sw_store::StoreError| Failure::internal(e.to_string());
     let mut users = Vec::new();
@@ -326,6 +338,7 @@ async fn queue(jobs: usize, workers: usize, verify: bool, json_out: bool) -> Res
     errors.sort();
     errors.dedup();
     let r = QueueResult {
+        database: if database.is_some() { "postgresql" } else { "sqlite" },
         jobs,
         workers,
         verify,
@@ -344,7 +357,8 @@ async fn queue(jobs: usize, workers: usize, verify: bool, json_out: bool) -> Res
         print_json(&r);
     } else {
         eprintln!(
-            "queue: {} jobs, {} runners, verify {}: {} succeeded, {} failed, {} lost, {} completed twice, {} scenes stored, {} verified; {:.1} s, {:.2} scenes/s; queue wait p50 {:.0} ms",
+            "queue ({}): {} jobs, {} runners, verify {}: {} succeeded, {} failed, {} lost, {} completed twice, {} scenes stored, {} verified; {:.1} s, {:.2} scenes/s; queue wait p50 {:.0} ms",
+            r.database,
             r.jobs,
             r.workers,
             r.verify,

@@ -15,6 +15,10 @@ pub(crate) struct QueueArgs {
     /// Directory of the database (scenewright.db) and the package blobs (blobs/).
     #[arg(long, default_value = "scenewright-data")]
     data: PathBuf,
+    /// The database, when not `DATA/scenewright.db`: `postgres://USER@HOST:PORT/DB` for
+    /// scale-out (also SCENEWRIGHT_DATABASE_URL).
+    #[arg(long, value_name = "URL")]
+    database: Option<String>,
     /// Job runners in this process.
     #[arg(long, default_value_t = 5)]
     workers: usize,
@@ -37,6 +41,10 @@ pub(crate) struct QueueArgs {
 }
 
 impl QueueArgs {
+    fn database(&self) -> Option<String> {
+        self.database.clone().or_else(|| std::env::var("SCENEWRIGHT_DATABASE_URL").ok().filter(|u| !u.is_empty()))
+    }
+
     fn limits(&self) -> QueueLimits {
         QueueLimits { queue_cap: self.queue_cap, per_user_running: self.per_user }
     }
@@ -79,6 +87,7 @@ fn runtime() -> Result<tokio::runtime::Runtime, Failure> {
 
 pub(crate) fn serve(a: ServeArgs) -> Result<u8, Failure> {
     let mut config = ServerConfig::new(a.addr, a.queue.data.clone());
+    config.database_url = a.queue.database();
     config.workers = a.queue.workers;
     config.limits = a.queue.limits();
     config.runner = a.queue.runner();
@@ -90,7 +99,8 @@ pub(crate) fn serve(a: ServeArgs) -> Result<u8, Failure> {
 pub(crate) fn worker(a: WorkerArgs) -> Result<u8, Failure> {
     let q = a.queue;
     runtime()?.block_on(async move {
-        let (store, blobs) = sw_server::open_data(&q.data).await.map_err(|e| Failure::input(e.to_string()))?;
+        let (store, blobs) =
+            sw_server::open_data(&q.data, q.database().as_deref()).await.map_err(|e| Failure::input(e.to_string()))?;
         let state = AppState::new(store, blobs, q.limits(), q.runner(), 3600)
             .await
             .map_err(|e| Failure::internal(e.to_string()))?;

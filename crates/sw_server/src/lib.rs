@@ -45,6 +45,8 @@ pub struct ServerConfig {
     pub addr: SocketAddr,
     /// Holds `scenewright.db` and `blobs/`.
     pub data_dir: PathBuf,
+    /// A database URL instead of `data_dir/scenewright.db` (`postgres://…`).
+    pub database_url: Option<String>,
     /// Job runners in this process (0: HTTP only, the jobs run in `scenewright worker`s).
     pub workers: usize,
     pub limits: QueueLimits,
@@ -60,6 +62,7 @@ impl ServerConfig {
         Self {
             addr,
             data_dir,
+            database_url: None,
             workers: 5,
             limits: QueueLimits::default(),
             runner: RunnerConfig::default(),
@@ -100,9 +103,16 @@ pub enum StartError {
 
 /// Opens the database under `data_dir` and the blob store: an S3-compatible bucket when
 /// `SCENEWRIGHT_S3_ENDPOINT` is set (see [`S3Config::from_env`]), else `data_dir/blobs`.
-pub async fn open_data(data_dir: &std::path::Path) -> Result<(Store, Arc<dyn BlobStore>), StartError> {
+/// The database is `database_url` (`postgres://…` for scale-out) or `data_dir/scenewright.db`.
+pub async fn open_data(
+    data_dir: &std::path::Path,
+    database_url: Option<&str>,
+) -> Result<(Store, Arc<dyn BlobStore>), StartError> {
     fs_err::create_dir_all(data_dir).map_err(|e| StartError::Io { path: data_dir.display().to_string(), source: e })?;
-    let store = Store::open_sqlite(&data_dir.join("scenewright.db")).await?;
+    let store = match database_url {
+        Some(url) => Store::open(url).await?,
+        None => Store::open_sqlite(&data_dir.join("scenewright.db")).await?,
+    };
     let blobs: Arc<dyn BlobStore> = match S3Config::from_env() {
         Some(config) => {
             tracing::info!(endpoint = %config.endpoint, bucket = %config.bucket, "packages in S3");
@@ -174,7 +184,7 @@ pub fn router(state: AppState) -> Router {
 /// Runs the service until Ctrl-C / SIGTERM: HTTP on `config.addr`, `config.workers` job
 /// runners, and the recovery of jobs whose runners were lost (at start and every second).
 pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
-    let (store, blobs) = open_data(&config.data_dir).await?;
+    let (store, blobs) = open_data(&config.data_dir, config.database_url.as_deref()).await?;
     let mut state = AppState::new(store, blobs, config.limits, config.runner.clone(), config.token_ttl_s).await?;
     state.web_dir = config.web_dir.clone().filter(|d| d.is_dir());
     let recovered = state.store.recover().await?;

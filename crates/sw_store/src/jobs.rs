@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 use sqlx::Row;
-use sqlx::sqlite::SqliteRow;
+use sqlx::any::AnyRow;
 
 use crate::{Result, Store, StoreError, new_id, now_ms};
 
@@ -95,7 +95,7 @@ pub struct Job {
 }
 
 impl Job {
-    fn from_row(r: &SqliteRow) -> Result<Self> {
+    fn from_row(r: &AnyRow) -> Result<Self> {
         let kind: String = r.try_get("kind")?;
         let state: String = r.try_get("state")?;
         let options: String = r.try_get("options")?;
@@ -194,7 +194,7 @@ impl Store {
         let options = new.options.to_string();
         let mut tx = self.pool.begin().await?;
         let prompt_id = new_id();
-        sqlx::query("INSERT INTO prompts (id, user_id, text, created_at) VALUES (?, ?, ?, ?)")
+        sqlx::query("INSERT INTO prompts (id, user_id, text, created_at) VALUES ($1, $2, $3, $4)")
             .bind(&prompt_id)
             .bind(&new.user_id)
             .bind(&new.prompt)
@@ -202,9 +202,9 @@ impl Store {
             .execute(&mut *tx)
             .await?;
         let done = sqlx::query(
-            "INSERT INTO jobs (id, user_id, kind, prompt_id, prompt, seed, options, parent_scene_id, state, max_attempts, timeout_ms, created_at)
-             SELECT ?, ?, ?, ?, ?, ?, ?, ?, 'queued', ?, ?, ?
-             WHERE (SELECT COUNT(*) FROM jobs WHERE state = 'queued') < ?",
+            "INSERT INTO jobs (id, user_id, kind, prompt_id, prompt, seed, options, parent_scene_id, state, max_attempts, timeout_ms, created_at, qseq)
+             SELECT $1, $2, $3, $4, $5, $6, $7, $8, 'queued', $9, $10, $11, (SELECT COALESCE(MAX(qseq), 0) + 1 FROM jobs)
+             WHERE (SELECT COUNT(*) FROM jobs WHERE state = 'queued') < $12",
         )
         .bind(&id)
         .bind(&new.user_id)
@@ -230,7 +230,7 @@ impl Store {
 
     /// Any job by id.
     pub async fn job(&self, id: &str) -> Result<Option<Job>> {
-        let row = sqlx::query(concat!("SELECT ", job_columns!(), " FROM jobs WHERE id = ?"))
+        let row = sqlx::query(concat!("SELECT ", job_columns!(), " FROM jobs WHERE id = $1"))
             .bind(id)
             .fetch_optional(&self.pool)
             .await?;
@@ -247,7 +247,7 @@ impl Store {
         let rows = sqlx::query(concat!(
             "SELECT ",
             job_columns!(),
-            " FROM jobs WHERE user_id = ? ORDER BY created_at DESC LIMIT ?"
+            " FROM jobs WHERE user_id = $1 ORDER BY created_at DESC LIMIT $2"
         ))
         .bind(user_id)
         .bind(limit)
@@ -268,23 +268,39 @@ impl Store {
     /// with a lease of `lease_ms`. One statement: two claimers never get the same job.
     pub async fn claim(&self, worker: &str, lease_ms: i64, limits: QueueLimits) -> Result<Option<Claim>> {
         let now = now_ms();
-        let row = sqlx::query(concat!(
-            "UPDATE jobs SET state = 'running', worker = ?, lease_until = ?, attempts = attempts + 1, started_at = ?, stage = NULL
-             WHERE id = (
-                SELECT q.id FROM jobs q
-                WHERE q.state = 'queued'
-                  AND (SELECT COUNT(*) FROM jobs r WHERE r.user_id = q.user_id AND r.state = 'running') < ?
-                ORDER BY q.created_at, q.id LIMIT 1)
-               AND state = 'queued'
-             RETURNING ",
-            job_columns!()
-        ))
-        .bind(worker)
-        .bind(now + lease_ms)
-        .bind(now)
-        .bind(limits.per_user_running)
-        .fetch_optional(&self.pool)
-        .await?;
+        let sql = match self.backend {
+            crate::Backend::Sqlite => concat!(
+                "UPDATE jobs SET state = 'running', worker = $1, lease_until = $2, attempts = attempts + 1, started_at = $3, stage = NULL
+                 WHERE id = (
+                    SELECT q.id FROM jobs q
+                    WHERE q.state = 'queued'
+                      AND (SELECT COUNT(*) FROM jobs r WHERE r.user_id = q.user_id AND r.state = 'running') < $4
+                    ORDER BY q.qseq, q.id LIMIT 1)
+                   AND state = 'queued'
+                 RETURNING ",
+                job_columns!()
+            ),
+            // Concurrent claimers skip each other's locked rows instead of queueing on them.
+            crate::Backend::Postgres => concat!(
+                "UPDATE jobs SET state = 'running', worker = $1, lease_until = $2, attempts = attempts + 1, started_at = $3, stage = NULL
+                 WHERE id = (
+                    SELECT q.id FROM jobs q
+                    WHERE q.state = 'queued'
+                      AND (SELECT COUNT(*) FROM jobs r WHERE r.user_id = q.user_id AND r.state = 'running') < $4
+                    ORDER BY q.qseq, q.id LIMIT 1
+                    FOR UPDATE SKIP LOCKED)
+                   AND state = 'queued'
+                 RETURNING ",
+                job_columns!()
+            ),
+        };
+        let row = sqlx::query(sql)
+            .bind(worker)
+            .bind(now + lease_ms)
+            .bind(now)
+            .bind(limits.per_user_running)
+            .fetch_optional(&self.pool)
+            .await?;
         match row {
             None => Ok(None),
             Some(r) => {
@@ -299,7 +315,7 @@ impl Store {
     /// was cancelled, failed by a timeout, or taken over after the lease expired).
     pub async fn heartbeat(&self, claim: &Claim, lease_ms: i64) -> Result<bool> {
         let r = sqlx::query(
-            "UPDATE jobs SET lease_until = ? WHERE id = ? AND worker = ? AND attempts = ? AND state = 'running'",
+            "UPDATE jobs SET lease_until = $1 WHERE id = $2 AND worker = $3 AND attempts = $4 AND state = 'running'",
         )
         .bind(now_ms() + lease_ms)
         .bind(&claim.job.id)
@@ -312,7 +328,7 @@ impl Store {
 
     /// Records the stage a claimed job is in.
     pub async fn set_stage(&self, claim: &Claim, stage: &str) -> Result<()> {
-        sqlx::query("UPDATE jobs SET stage = ? WHERE id = ? AND worker = ? AND attempts = ? AND state = 'running'")
+        sqlx::query("UPDATE jobs SET stage = $1 WHERE id = $2 AND worker = $3 AND attempts = $4 AND state = 'running'")
             .bind(stage)
             .bind(&claim.job.id)
             .bind(&claim.worker)
@@ -327,8 +343,8 @@ impl Store {
     pub async fn fail(&self, claim: &Claim, reason: &str) -> Result<bool> {
         let mut tx = self.pool.begin().await?;
         let r = sqlx::query(
-            "UPDATE jobs SET state = 'failed', error = ?, finished_at = ?, lease_until = NULL
-             WHERE id = ? AND worker = ? AND attempts = ? AND state = 'running'",
+            "UPDATE jobs SET state = 'failed', error = $1, finished_at = $2, lease_until = NULL
+             WHERE id = $3 AND worker = $4 AND attempts = $5 AND state = 'running'",
         )
         .bind(reason)
         .bind(now_ms())
@@ -352,8 +368,8 @@ impl Store {
     pub async fn cancel(&self, id: &str, user_id: &str) -> Result<Option<JobState>> {
         let mut tx = self.pool.begin().await?;
         let r = sqlx::query(
-            "UPDATE jobs SET state = 'cancelled', finished_at = ?, error = 'cancelled by the user', lease_until = NULL
-             WHERE id = ? AND user_id = ? AND state IN ('queued', 'running')",
+            "UPDATE jobs SET state = 'cancelled', finished_at = $1, error = 'cancelled by the user', lease_until = NULL
+             WHERE id = $2 AND user_id = $3 AND state IN ('queued', 'running')",
         )
         .bind(now_ms())
         .bind(id)
@@ -375,9 +391,9 @@ impl Store {
         let mut out = Recovered::default();
         let mut tx = self.pool.begin().await?;
         let timed_out: Vec<(String,)> = sqlx::query_as(
-            "UPDATE jobs SET state = 'failed', finished_at = ?, lease_until = NULL,
+            "UPDATE jobs SET state = 'failed', finished_at = $1, lease_until = NULL,
                  error = 'timed out after ' || (timeout_ms / 1000) || ' s'
-             WHERE state = 'running' AND started_at + timeout_ms < ?
+             WHERE state = 'running' AND started_at + timeout_ms < $2
              RETURNING id",
         )
         .bind(now)
@@ -386,9 +402,9 @@ impl Store {
         .await?;
         out.failed.extend(timed_out.into_iter().map(|r| r.0));
         let exhausted: Vec<(String,)> = sqlx::query_as(
-            "UPDATE jobs SET state = 'failed', finished_at = ?, lease_until = NULL,
+            "UPDATE jobs SET state = 'failed', finished_at = $1, lease_until = NULL,
                  error = 'its runner was lost (crashed or stopped) ' || attempts || ' time(s); not retried again'
-             WHERE state = 'running' AND lease_until < ? AND attempts >= max_attempts
+             WHERE state = 'running' AND lease_until < $2 AND attempts >= max_attempts
              RETURNING id",
         )
         .bind(now)
@@ -398,7 +414,7 @@ impl Store {
         out.failed.extend(exhausted.into_iter().map(|r| r.0));
         let requeued: Vec<(String,)> = sqlx::query_as(
             "UPDATE jobs SET state = 'queued', worker = NULL, lease_until = NULL, stage = NULL
-             WHERE state = 'running' AND lease_until < ? AND attempts < max_attempts
+             WHERE state = 'running' AND lease_until < $1 AND attempts < max_attempts
              RETURNING id",
         )
         .bind(now)
@@ -407,7 +423,7 @@ impl Store {
         out.requeued.extend(requeued.into_iter().map(|r| r.0));
         for id in &out.failed {
             let (reason,): (Option<String>,) =
-                sqlx::query_as("SELECT error FROM jobs WHERE id = ?").bind(id).fetch_one(&mut *tx).await?;
+                sqlx::query_as("SELECT error FROM jobs WHERE id = $1").bind(id).fetch_one(&mut *tx).await?;
             push_event(&mut *tx, id, &serde_json::json!({"event": "error", "message": reason})).await?;
         }
         for id in &out.requeued {
@@ -436,7 +452,7 @@ impl Store {
     /// A job's events after `seq`, in order.
     pub async fn events_after(&self, job_id: &str, seq: i64) -> Result<Vec<(i64, serde_json::Value)>> {
         let rows: Vec<(i64, String)> =
-            sqlx::query_as("SELECT seq, body FROM job_events WHERE job_id = ? AND seq > ? ORDER BY seq")
+            sqlx::query_as("SELECT seq, body FROM job_events WHERE job_id = $1 AND seq > $2 ORDER BY seq")
                 .bind(job_id)
                 .bind(seq)
                 .fetch_all(&self.pool)
@@ -453,11 +469,11 @@ impl Store {
 /// the same transaction, so a job's stream is complete once its state is terminal).
 pub(crate) async fn push_event<'e, E>(e: E, job_id: &str, body: &serde_json::Value) -> Result<i64>
 where
-    E: sqlx::Executor<'e, Database = sqlx::Sqlite>,
+    E: sqlx::Executor<'e, Database = sqlx::Any>,
 {
     let (seq,): (i64,) = sqlx::query_as(
         "INSERT INTO job_events (job_id, seq, at, body)
-         VALUES (?, (SELECT COALESCE(MAX(seq), 0) + 1 FROM job_events WHERE job_id = ?), ?, ?)
+         VALUES ($1, (SELECT COALESCE(MAX(seq), 0) + 1 FROM job_events WHERE job_id = $2), $3, $4)
          RETURNING seq",
     )
     .bind(job_id)

@@ -3,8 +3,9 @@
 //! telemetry, and the blob store that holds packages.
 //!
 //! The default database is one SQLite file (WAL mode, so the server and any number of
-//! `scenewright worker` processes on the machine share it). Every statement is a fixed
-//! string with bound parameters; nothing a user sends is ever spliced into SQL.
+//! `scenewright worker` processes on the machine share it); PostgreSQL serves scale-out
+//! (claims with `FOR UPDATE SKIP LOCKED`). Every statement is a fixed string with bound
+//! parameters; nothing a user sends is ever spliced into SQL.
 //!
 //! A job survives the crash of whoever runs it: a claim takes a lease that the runner
 //! renews; [`Store::recover`] (run by every server and worker, periodically) puts jobs
@@ -23,10 +24,11 @@ mod users;
 
 use std::path::Path;
 use std::str::FromStr;
-use std::time::Duration;
 
-use sqlx::SqlitePool;
-use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode, SqlitePoolOptions, SqliteSynchronous};
+use sqlx::AnyPool;
+use sqlx::any::AnyPoolOptions;
+use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode};
+use sqlx::{ConnectOptions, Connection};
 
 pub use blob::{BlobError, BlobStore, LocalBlobs, check_key};
 pub use blob_s3::{S3Blobs, S3Config};
@@ -53,44 +55,87 @@ pub enum StoreError {
 
 pub type Result<T> = std::result::Result<T, StoreError>;
 
-/// The database: a pool of connections.
+/// Which database a store is on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Backend {
+    /// One file, WAL mode: the server and workers on one machine.
+    Sqlite,
+    /// Scale-out: jobs claimed with `FOR UPDATE SKIP LOCKED`.
+    Postgres,
+}
+
+/// The database: a pool of connections (sqlx's `Any` driver over SQLite or PostgreSQL; every
+/// statement is written once, in the SQL both understand, with `$n` parameters).
 #[derive(Debug, Clone)]
 pub struct Store {
-    pool: SqlitePool,
+    pool: AnyPool,
+    backend: Backend,
 }
 
 impl Store {
     /// Opens (creating if needed) the SQLite database at `path` and brings its schema up to date.
     pub async fn open_sqlite(path: &Path) -> Result<Self> {
         let url = format!("sqlite://{}", path.display());
-        let opts = SqliteConnectOptions::from_str(&url)?
-            .create_if_missing(true)
-            .journal_mode(SqliteJournalMode::Wal)
-            // WAL + NORMAL: a process crash loses nothing that was committed.
-            .synchronous(SqliteSynchronous::Normal)
-            .busy_timeout(Duration::from_secs(30))
-            .foreign_keys(true);
-        let pool = SqlitePoolOptions::new().max_connections(16).connect_with(opts).await?;
-        schema::migrate(&pool).await?;
-        Ok(Self { pool })
+        // Create the file and switch it to WAL (a property of the file) with the typed driver.
+        let opts = SqliteConnectOptions::from_str(&url)?.create_if_missing(true).journal_mode(SqliteJournalMode::Wal);
+        let conn = opts.connect().await?;
+        conn.close().await?;
+        Self::open_url(&url).await
+    }
+
+    /// Opens a database by URL: `sqlite://PATH` or `postgres://USER@HOST:PORT/DB`.
+    pub async fn open(url: &str) -> Result<Self> {
+        match url.split_once("://").map(|x| x.0) {
+            Some("sqlite") => Self::open_sqlite(Path::new(url.trim_start_matches("sqlite://"))).await,
+            Some("postgres" | "postgresql") => Self::open_url(url).await,
+            _ => Err(StoreError::Conflict(format!("unsupported database URL '{url}' (sqlite:// or postgres://)"))),
+        }
+    }
+
+    async fn open_url(url: &str) -> Result<Self> {
+        sqlx::any::install_default_drivers();
+        let backend = if url.starts_with("sqlite:") { Backend::Sqlite } else { Backend::Postgres };
+        let pool = AnyPoolOptions::new()
+            .max_connections(16)
+            .after_connect(move |conn, _| {
+                Box::pin(async move {
+                    if backend == Backend::Sqlite {
+                        // WAL + NORMAL: a process crash loses nothing that was committed.
+                        for pragma in
+                            ["PRAGMA busy_timeout = 30000", "PRAGMA foreign_keys = ON", "PRAGMA synchronous = NORMAL"]
+                        {
+                            sqlx::query(pragma).execute(&mut *conn).await?;
+                        }
+                    }
+                    Ok(())
+                })
+            })
+            .connect(url)
+            .await?;
+        schema::migrate(&pool, backend).await?;
+        Ok(Self { pool, backend })
     }
 
     /// The connection pool (for the store's own modules and tests).
-    pub fn pool(&self) -> &SqlitePool {
+    pub fn pool(&self) -> &AnyPool {
         &self.pool
+    }
+
+    pub fn backend(&self) -> Backend {
+        self.backend
     }
 
     /// A setting, created with `init` the first time it is asked for (e.g. the JWT secret,
     /// shared by every process on the database).
     pub async fn setting_or_init(&self, name: &str, init: impl FnOnce() -> String) -> Result<String> {
         let value = init();
-        sqlx::query("INSERT INTO settings (name, value) VALUES (?, ?) ON CONFLICT(name) DO NOTHING")
+        sqlx::query("INSERT INTO settings (name, value) VALUES ($1, $2) ON CONFLICT(name) DO NOTHING")
             .bind(name)
             .bind(&value)
             .execute(&self.pool)
             .await?;
         let (v,): (String,) =
-            sqlx::query_as("SELECT value FROM settings WHERE name = ?").bind(name).fetch_one(&self.pool).await?;
+            sqlx::query_as("SELECT value FROM settings WHERE name = $1").bind(name).fetch_one(&self.pool).await?;
         Ok(v)
     }
 }

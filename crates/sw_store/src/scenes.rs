@@ -109,8 +109,8 @@ impl Store {
         let job = &claim.job;
         let mut tx = self.pool.begin().await?;
         let r = sqlx::query(
-            "UPDATE jobs SET state = 'succeeded', finished_at = ?, scene_id = ?, lease_until = NULL, completions = completions + 1
-             WHERE id = ? AND worker = ? AND attempts = ? AND state = 'running'",
+            "UPDATE jobs SET state = 'succeeded', finished_at = $1, scene_id = $2, lease_until = NULL, completions = completions + 1
+             WHERE id = $3 AND worker = $4 AND attempts = $5 AND state = 'running'",
         )
         .bind(now)
         .bind(&new.id)
@@ -127,13 +127,13 @@ impl Store {
             None => 1,
             Some(p) => {
                 let (v,): (i64,) =
-                    sqlx::query_as("SELECT version FROM scenes WHERE id = ?").bind(p).fetch_one(&mut *tx).await?;
+                    sqlx::query_as("SELECT version FROM scenes WHERE id = $1").bind(p).fetch_one(&mut *tx).await?;
                 v + 1
             }
         };
         sqlx::query(
             "INSERT INTO scenes (id, user_id, job_id, parent_id, version, prompt, status, report, files, created_at)
-             VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+             VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10)",
         )
         .bind(&new.id)
         .bind(&job.user_id)
@@ -149,7 +149,7 @@ impl Store {
         .await?;
         if let (Some((command, record)), Some(parent)) = (&new.edit, &job.parent_scene_id) {
             sqlx::query(
-                "INSERT INTO edits (id, user_id, scene_id, new_scene_id, command, record, created_at) VALUES (?, ?, ?, ?, ?, ?, ?)",
+                "INSERT INTO edits (id, user_id, scene_id, new_scene_id, command, record, created_at) VALUES ($1, $2, $3, $4, $5, $6, $7)",
             )
             .bind(new_id())
             .bind(&job.user_id)
@@ -177,7 +177,7 @@ impl Store {
         rows.push(("job", "run", job.started_at.map(|s| (now - s) as f64).unwrap_or(0.0), 0, 0));
         for (kind, name, ms, a, b) in rows {
             sqlx::query(
-                "INSERT INTO telemetry (job_id, kind, name, ms, tokens_in, tokens_out, at) VALUES (?, ?, ?, ?, ?, ?, ?)",
+                "INSERT INTO telemetry (job_id, kind, name, ms, tokens_in, tokens_out, at) VALUES ($1, $2, $3, $4, $5, $6, $7)",
             )
             .bind(&job.id)
             .bind(kind)
@@ -201,7 +201,7 @@ impl Store {
     pub async fn scene_of(&self, id: &str, user_id: &str) -> Result<Option<Scene>> {
         let r: Option<SceneRow> = sqlx::query_as(
             "SELECT id, user_id, job_id, parent_id, version, prompt, status, report, files, created_at
-             FROM scenes WHERE id = ? AND user_id = ?",
+             FROM scenes WHERE id = $1 AND user_id = $2",
         )
         .bind(id)
         .bind(user_id)
@@ -214,7 +214,7 @@ impl Store {
     pub async fn scenes_of(&self, user_id: &str, limit: i64) -> Result<Vec<Scene>> {
         let rows: Vec<SceneRow> = sqlx::query_as(
             "SELECT id, user_id, job_id, parent_id, version, prompt, status, report, files, created_at
-             FROM scenes WHERE user_id = ? ORDER BY created_at DESC, id LIMIT ?",
+             FROM scenes WHERE user_id = $1 ORDER BY created_at DESC, id LIMIT $2",
         )
         .bind(user_id)
         .bind(limit)
@@ -227,7 +227,7 @@ impl Store {
     pub async fn edits_of_scene(&self, scene_id: &str, user_id: &str) -> Result<Vec<EditRecord>> {
         let rows: Vec<(String, String, String, String, String, i64)> = sqlx::query_as(
             "SELECT id, scene_id, new_scene_id, command, record, created_at FROM edits
-             WHERE user_id = ? AND (scene_id = ? OR new_scene_id = ?) ORDER BY created_at",
+             WHERE user_id = $1 AND (scene_id = $2 OR new_scene_id = $3) ORDER BY created_at",
         )
         .bind(user_id)
         .bind(scene_id)
@@ -265,7 +265,7 @@ impl Store {
             created_at: now_ms(),
         };
         sqlx::query(
-            "INSERT INTO assets (id, user_id, description, category, meta, created_at) VALUES (?, ?, ?, ?, ?, ?)",
+            "INSERT INTO assets (id, user_id, description, category, meta, created_at) VALUES ($1, $2, $3, $4, $5, $6)",
         )
         .bind(&a.id)
         .bind(&a.user_id)
@@ -283,7 +283,7 @@ impl Store {
         let pattern = format!("%{}%", q.replace('\\', "\\\\").replace('%', "\\%").replace('_', "\\_"));
         let rows: Vec<(String, String, String, Option<String>, String, i64)> = sqlx::query_as(
             "SELECT id, user_id, description, category, meta, created_at FROM assets
-             WHERE user_id = ? AND (description LIKE ? ESCAPE '\\' OR COALESCE(category, '') LIKE ? ESCAPE '\\')
+             WHERE user_id = $1 AND (description LIKE $2 ESCAPE '\\' OR COALESCE(category, '') LIKE $3 ESCAPE '\\')
              ORDER BY created_at DESC",
         )
         .bind(user_id)
@@ -313,7 +313,8 @@ impl Store {
     /// Totals per telemetry series (stage latencies, LLM calls, cache, queue wait).
     pub async fn telemetry_totals(&self) -> Result<Vec<StageStat>> {
         let rows: Vec<(String, String, i64, f64, i64, i64)> = sqlx::query_as(
-            "SELECT kind, name, COUNT(*), SUM(ms), SUM(tokens_in), SUM(tokens_out) FROM telemetry GROUP BY kind, name ORDER BY kind, name",
+            "SELECT kind, name, COUNT(*), CAST(SUM(ms) AS DOUBLE PRECISION), CAST(SUM(tokens_in) AS BIGINT), CAST(SUM(tokens_out) AS BIGINT)
+             FROM telemetry GROUP BY kind, name ORDER BY kind, name",
         )
         .fetch_all(&self.pool)
         .await?;

@@ -1,6 +1,8 @@
 //! The schema, created idempotently when a database is opened.
 
-use sqlx::SqlitePool;
+use sqlx::AnyPool;
+
+use crate::Backend;
 
 /// Statements run in order on every open; each is idempotent.
 const STATEMENTS: &[&str] = &[
@@ -43,8 +45,10 @@ const STATEMENTS: &[&str] = &[
         finished_at INTEGER,
         error TEXT,
         scene_id TEXT,
-        completions INTEGER NOT NULL DEFAULT 0)",
-    "CREATE INDEX IF NOT EXISTS jobs_state ON jobs(state, created_at)",
+        completions INTEGER NOT NULL DEFAULT 0,
+        -- Arrival order (FIFO; ties, possible under concurrent PostgreSQL inserts, go by id).
+        qseq INTEGER NOT NULL DEFAULT 0)",
+    "CREATE INDEX IF NOT EXISTS jobs_state ON jobs(state, qseq)",
     "CREATE INDEX IF NOT EXISTS jobs_user ON jobs(user_id, state)",
     "CREATE TABLE IF NOT EXISTS job_events (
         job_id TEXT NOT NULL REFERENCES jobs(id),
@@ -90,9 +94,19 @@ const STATEMENTS: &[&str] = &[
     "CREATE INDEX IF NOT EXISTS telemetry_kind ON telemetry(kind, name)",
 ];
 
-pub(crate) async fn migrate(pool: &SqlitePool) -> Result<(), sqlx::Error> {
+pub(crate) async fn migrate(pool: &AnyPool, backend: Backend) -> Result<(), sqlx::Error> {
     for s in STATEMENTS {
-        sqlx::query(*s).execute(pool).await?;
+        match backend {
+            Backend::Sqlite => {
+                sqlx::query(*s).execute(pool).await?;
+            }
+            Backend::Postgres => {
+                // The same tables with PostgreSQL's 64-bit and double types. The text is
+                // derived from the constants above, never from input.
+                let pg = s.replace("INTEGER", "BIGINT").replace("REAL", "DOUBLE PRECISION");
+                sqlx::query(sqlx::AssertSqlSafe(pg)).execute(pool).await?;
+            }
+        }
     }
     Ok(())
 }

@@ -60,8 +60,8 @@ impl Store {
         let now = now_ms();
         let r = sqlx::query(
             "INSERT INTO users (id, username, password_hash, role, created_at)
-             SELECT ?, ?, ?, COALESCE(?, CASE WHEN (SELECT COUNT(*) FROM users) = 0 THEN 'admin' ELSE 'user' END), ?
-             WHERE NOT EXISTS (SELECT 1 FROM users WHERE username = ?)",
+             SELECT $1, $2, $3, COALESCE($4, CASE WHEN (SELECT COUNT(*) FROM users) = 0 THEN 'admin' ELSE 'user' END), $5
+             WHERE NOT EXISTS (SELECT 1 FROM users WHERE username = $6)",
         )
         .bind(&id)
         .bind(username)
@@ -84,7 +84,7 @@ impl Store {
 
     pub async fn user(&self, id: &str) -> Result<Option<User>> {
         let r: Option<UserRow> =
-            sqlx::query_as("SELECT id, username, password_hash, role, created_at FROM users WHERE id = ?")
+            sqlx::query_as("SELECT id, username, password_hash, role, created_at FROM users WHERE id = $1")
                 .bind(id)
                 .fetch_optional(&self.pool)
                 .await?;
@@ -93,7 +93,7 @@ impl Store {
 
     pub async fn user_by_name(&self, username: &str) -> Result<Option<User>> {
         let r: Option<UserRow> =
-            sqlx::query_as("SELECT id, username, password_hash, role, created_at FROM users WHERE username = ?")
+            sqlx::query_as("SELECT id, username, password_hash, role, created_at FROM users WHERE username = $1")
                 .bind(username)
                 .fetch_optional(&self.pool)
                 .await?;
@@ -103,7 +103,7 @@ impl Store {
     /// Stores an API key's hash; returns the key's id.
     pub async fn create_api_key(&self, user_id: &str, name: &str, key_hash: &str) -> Result<String> {
         let id = new_id();
-        sqlx::query("INSERT INTO api_keys (id, user_id, name, key_hash, created_at) VALUES (?, ?, ?, ?, ?)")
+        sqlx::query("INSERT INTO api_keys (id, user_id, name, key_hash, created_at) VALUES ($1, $2, $3, $4, $5)")
             .bind(&id)
             .bind(user_id)
             .bind(name)
@@ -118,7 +118,7 @@ impl Store {
     pub async fn user_by_api_key(&self, key_hash: &str) -> Result<Option<User>> {
         let r: Option<UserRow> = sqlx::query_as(
             "SELECT u.id, u.username, u.password_hash, u.role, u.created_at
-             FROM api_keys k JOIN users u ON u.id = k.user_id WHERE k.key_hash = ?",
+             FROM api_keys k JOIN users u ON u.id = k.user_id WHERE k.key_hash = $1",
         )
         .bind(key_hash)
         .fetch_optional(&self.pool)

@@ -27,7 +27,7 @@ pub fn runner() -> RunnerConfig {
 
 pub async fn app(limits: QueueLimits) -> App {
     let dir = tempfile::tempdir().unwrap();
-    let (store, blobs) = sw_server::open_data(dir.path()).await.unwrap();
+    let (store, blobs) = sw_server::open_data(dir.path(), None).await.unwrap();
     let mut r = runner();
     r.work_dir = Some(dir.path().join("work"));
     let state = AppState::new(store, blobs, limits, r, 3600).await.unwrap();
