@@ -244,3 +244,29 @@ async fn assets_and_robots() {
     assert_eq!(s, StatusCode::UNPROCESSABLE_ENTITY);
     assert_eq!(a.state.store.count_rows(CountedTable::Assets).await.unwrap(), 1);
 }
+
+#[tokio::test]
+async fn the_web_app_is_served_outside_the_api_and_cannot_be_escaped() {
+    let mut a = app(QueueLimits::default()).await;
+    let web = a.dir.path().join("web");
+    std::fs::create_dir_all(web.join("js")).unwrap();
+    std::fs::write(web.join("index.html"), "<!doctype html><title>scenewright</title>").unwrap();
+    std::fs::write(web.join("js/app.js"), "export const x = 1;").unwrap();
+    std::fs::write(a.dir.path().join("secret.txt"), "not for the web").unwrap();
+    a.state.web_dir = Some(web);
+    a.router = sw_server::router(a.state.clone());
+    let (s, body) = a.raw(Method::GET, "/", None, Payload::None).await;
+    assert_eq!(s, StatusCode::OK);
+    assert!(String::from_utf8_lossy(&body).contains("<title>scenewright</title>"));
+    let (s, body) = a.raw(Method::GET, "/js/app.js", None, Payload::None).await;
+    assert_eq!((s, String::from_utf8_lossy(&body).into_owned()), (StatusCode::OK, "export const x = 1;".to_string()));
+    for evil in ["/../secret.txt", "/%2e%2e/secret.txt", "/js/..%2f..%2fsecret.txt", "/scenewright.db"] {
+        let (s, body) = a.raw(Method::GET, evil, None, Payload::None).await;
+        assert_eq!(s, StatusCode::NOT_FOUND, "{evil}");
+        assert!(!String::from_utf8_lossy(&body).contains("not for the web"), "{evil}");
+    }
+    // API paths never fall through to files.
+    let (s, v) = a.call(Method::GET, "/api/index.html", None, Payload::None).await;
+    assert_eq!(s, StatusCode::NOT_FOUND);
+    assert!(err(&v).contains("no route"));
+}
