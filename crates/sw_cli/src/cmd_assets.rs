@@ -18,11 +18,15 @@ pub(crate) enum AssetsCommand {
         #[arg(long)]
         json: bool,
     },
-    /// A category's parameters, surfaces and mass.
+    /// A category's parameters, surfaces and mass — or a stored asset, by its id (or a
+    /// unique prefix of 8+ hex digits, as `assets generate` and `assets search` print).
     Show {
         name: String,
         #[arg(long, default_value_t = 0)]
         seed: u64,
+        /// The asset store for ids (default: SCENEWRIGHT_ASSET_STORE or .cache/assets).
+        #[arg(long)]
+        store: Option<PathBuf>,
         #[arg(long)]
         json: bool,
     },
@@ -46,6 +50,23 @@ pub(crate) enum AssetsCommand {
         /// Skip the preview picture.
         #[arg(long)]
         no_preview: bool,
+        /// The asset store to put the part in (default: SCENEWRIGHT_ASSET_STORE or
+        /// .cache/assets in the checkout).
+        #[arg(long)]
+        store: Option<PathBuf>,
+        /// Do not store and index the part.
+        #[arg(long)]
+        no_store: bool,
+        #[arg(long)]
+        json: bool,
+    },
+    /// Stored assets nearest in meaning to a description (all-MiniLM-L6-v2).
+    Search {
+        query: String,
+        #[arg(long, default_value_t = 5)]
+        top: usize,
+        #[arg(long)]
+        store: Option<PathBuf>,
         #[arg(long)]
         json: bool,
     },
@@ -136,7 +157,11 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
             }
             Ok(0)
         }
-        AssetsCommand::Show { name, seed, json } => {
+        AssetsCommand::Show { name, seed, store, json } => {
+            let looks_like_id = name.len() >= 8 && name.bytes().all(|b| b.is_ascii_hexdigit());
+            if looks_like_id && sw_catalog::find(&name).is_none() {
+                return crate::cmd_forge::show_stored(&name, store, json);
+            }
             let cat = find(&name)?;
             let a = build(cat, seed)?;
             let info = AssetInfo {
@@ -198,9 +223,10 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
             }
             Ok(0)
         }
-        AssetsCommand::Generate { prompt, out, no_preview, json } => {
-            crate::cmd_forge::generate(&prompt, out, no_preview, json)
+        AssetsCommand::Generate { prompt, out, no_preview, store, no_store, json } => {
+            crate::cmd_forge::generate(&prompt, out, no_preview, store, no_store, json)
         }
+        AssetsCommand::Search { query, top, store, json } => crate::cmd_forge::search(&query, top, store, json),
         AssetsCommand::Render { name, out, seed, size } => {
             let cat = find(&name)?;
             let a = build(cat, seed)?;

@@ -68,6 +68,14 @@ pub(crate) enum BenchCommand {
         #[arg(long)]
         json: bool,
     },
+    /// The semantic asset index: precision and recall of the reuse threshold on the
+    /// labelled pairs, and retrieval time over N assets embedded with all-MiniLM-L6-v2.
+    AssetIndex {
+        #[arg(long, default_value_t = 10_000)]
+        assets: usize,
+        #[arg(long)]
+        json: bool,
+    },
     /// End-to-end latency with LLM stages against a local server with the paper's
     /// per-call latencies (time-scaled), ours next to the paper's structure.
     LlmLatency {
@@ -124,6 +132,7 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
         BenchCommand::Cad { suite, workers, latency_repeat, json } => {
             crate::bench_cad::run(&suite, workers, latency_repeat, json)
         }
+        BenchCommand::AssetIndex { assets, json } => crate::bench_index::run(assets, json),
         BenchCommand::LlmLatency { runs, time_scale, seed, json } => {
             crate::bench_llm::run(runs, time_scale, seed, json)
         }

@@ -20,7 +20,17 @@ fn assets_generate_writes_the_washer_of_the_issue() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("washer");
     let prompt = "A flat washer: outer diameter 20mm, inner diameter 10.5mm, thickness 2mm";
-    let (code, stdout, stderr) = run(&["assets", "generate", prompt, "--out", out.to_str().unwrap(), "--json"]);
+    let store = dir.path().join("store");
+    let (code, stdout, stderr) = run(&[
+        "assets",
+        "generate",
+        prompt,
+        "--out",
+        out.to_str().unwrap(),
+        "--store",
+        store.to_str().unwrap(),
+        "--json",
+    ]);
     assert_eq!(code, 0, "{stderr}");
     let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
     assert_eq!(v["metadata"]["template"], "washer");
@@ -34,6 +44,21 @@ fn assets_generate_writes_the_washer_of_the_issue() {
     let analytic = std::f64::consts::PI * (10.0f64.powi(2) - 5.25f64.powi(2)) * 2.0 * 1e-9;
     assert!((mesh.volume() - analytic).abs() / analytic < 0.02, "{} m³", mesh.volume());
     assert!(out.join("part.py").is_file() && out.join("preview.png").is_file());
+
+    // Stored and indexed: found by meaning, shown by its id prefix.
+    let id = v["stored"].as_str().unwrap().to_string();
+    let (code, stdout, stderr) =
+        run(&["assets", "search", "a ring-shaped spacer washer", "--store", store.to_str().unwrap(), "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    let hits: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(hits["hits"][0]["id"], id.as_str());
+    let (code, stdout, stderr) = run(&["assets", "show", &id[..12], "--store", store.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("template:washer"), "{stdout}");
+    let (code, _, stderr) = run(&["assets", "show", "deadbeefdeadbeef", "--store", store.to_str().unwrap()]);
+    assert_eq!(code, 2, "{stderr}");
+    let (code, _, _) = run(&["assets", "search", "  ", "--store", store.to_str().unwrap()]);
+    assert_eq!(code, 2);
 }
 
 #[test]
@@ -41,7 +66,7 @@ fn assets_generate_refuses_bad_prompts_with_one_line_and_exit_2() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("x");
     for prompt in ["", "a teapot", "a washer", "A washer: outer diameter 10mm, inner diameter 12mm, 2mm thick"] {
-        let (code, stdout, stderr) = run(&["assets", "generate", prompt, "--out", out.to_str().unwrap()]);
+        let (code, stdout, stderr) = run(&["assets", "generate", prompt, "--out", out.to_str().unwrap(), "--no-store"]);
         assert_eq!(code, 2, "{prompt}: {stdout}{stderr}");
         assert_eq!(stderr.trim().lines().count(), 1, "{stderr}");
         assert!(!out.exists(), "nothing is written for bad input");

@@ -6,12 +6,21 @@
 //!   of through-holes;
 //! - [`failure`]: the taxonomy every failed attempt is filed under;
 //! - [`synth`]: the offline template synthesizer, CadQuery code for dimensioned prompts;
-//! - [`part`]: synthesize, run, validate and write one part offline.
+//! - [`part`]: synthesize, run, validate and write one part offline;
+//! - [`store`]: meshes and metadata by content address (a local directory; the trait for
+//!   an S3-compatible bucket); [`index`]: the semantic index over their labels;
+//!   `embed` (feature `embed`, on by default): all-MiniLM-L6-v2 on candle.
 
+#[cfg(feature = "embed")]
+pub mod embed;
 pub mod failure;
+pub mod index;
+#[cfg(feature = "embed")]
+pub mod library;
 pub mod mesh_io;
 pub mod metrics;
 pub mod part;
 pub mod runner;
+pub mod store;
 pub mod synth;
 pub mod validate;

@@ -722,7 +722,11 @@ mod tests {
 
     #[test]
     fn coordinates_are_not_sizes() {
-        let r = read("a flange 30mm outer diameter, 3mm thick (Z=0 to Z=3mm)");
-        assert_eq!(r.dims.len(), 2);
+        let r = read("a flange 30mm outer diameter, 3mm thick (Z=0 to Z=3mm) at X=-25");
+        assert_eq!(r.dims.iter().filter(|d| d.coord.is_none()).count(), 2);
+        let coords: Vec<(Option<Axis>, f64)> =
+            r.dims.iter().filter(|d| d.coord.is_some()).map(|d| (d.coord, d.mm)).collect();
+        assert_eq!(coords, vec![(Some(Axis::Z), 0.0), (Some(Axis::Z), 3.0), (Some(Axis::X), -25.0)]);
+        assert_eq!(r.mm(Role::Thickness, &[], &[]), Some(3.0));
     }
 }

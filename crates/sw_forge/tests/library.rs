@@ -1,0 +1,92 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! The semantic index with the real embedder (all-MiniLM-L6-v2 on candle): similar labels
+//! score above the reuse threshold, unrelated ones below, and a library reuses what it
+//! stored. Needs `scripts/setup.sh --cad` or `--tests` (the model in `.cache/minilm`); fails, never skips.
+
+use std::sync::OnceLock;
+
+use sw_forge::embed::{DIM, MiniLm};
+use sw_forge::index::{DEFAULT_THRESHOLD, evaluate};
+use sw_forge::library::AssetLibrary;
+use sw_forge::store::{AssetId, AssetRecord, AssetStore};
+
+fn model() -> &'static MiniLm {
+    static M: OnceLock<MiniLm> = OnceLock::new();
+    M.get_or_init(|| MiniLm::load_default().unwrap_or_else(|e| panic!("{e}")))
+}
+
+fn cos(a: &[f32], b: &[f32]) -> f32 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+#[test]
+fn vectors_are_unit_length_and_batching_does_not_change_them() {
+    let texts = ["shelving unit", "a very long description of a grey steel storage rack with five levels"];
+    let batch = model().embed(&texts).unwrap();
+    assert_eq!(batch.len(), 2);
+    for (t, v) in texts.iter().zip(&batch) {
+        assert_eq!(v.len(), DIM);
+        assert!((cos(v, v) - 1.0).abs() < 1e-4);
+        // Alone (no padding) and in a padded batch: the same vector.
+        let alone = model().embed(&[t]).unwrap().remove(0);
+        assert!(cos(v, &alone) > 0.9999, "{t}: padding changed the vector");
+    }
+}
+
+#[test]
+fn the_issue_examples_fall_on_either_side_of_the_threshold() {
+    let v = model().embed(&["shelving unit", "storage rack", "shelf", "self-driving car"]).unwrap();
+    let same = cos(&v[0], &v[1]);
+    let different = cos(&v[2], &v[3]);
+    assert!(same >= DEFAULT_THRESHOLD, "shelving unit ~ storage rack: {same}");
+    assert!(different < DEFAULT_THRESHOLD, "shelf ~ self-driving car: {different}");
+}
+
+#[test]
+fn the_labelled_pairs_are_separated_at_the_default_threshold() {
+    let text = include_str!("../../../bench/forge/label_pairs.tsv");
+    let rows: Vec<(&str, &str, bool)> = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|l| {
+            let c: Vec<&str> = l.split('\t').collect();
+            (c[0], c[1], c[2].trim() == "1")
+        })
+        .collect();
+    assert!(rows.len() >= 200);
+    let a: Vec<&str> = rows.iter().map(|r| r.0).collect();
+    let b: Vec<&str> = rows.iter().map(|r| r.1).collect();
+    let (va, vb) = (model().embed(&a).unwrap(), model().embed(&b).unwrap());
+    let scored: Vec<(f32, bool)> = rows.iter().enumerate().map(|(i, r)| (cos(&va[i], &vb[i]), r.2)).collect();
+    let p = evaluate(&scored, DEFAULT_THRESHOLD);
+    assert!(p.precision >= 0.68 && p.recall >= 0.78, "{p:?}");
+}
+
+#[test]
+fn a_library_stores_indexes_persists_and_reuses() {
+    let dir = tempfile::tempdir().unwrap();
+    let record = |label: &str| AssetRecord {
+        id: AssetId::of(b""),
+        label: label.into(),
+        description: label.into(),
+        source: "test".into(),
+        size_m: [1.0, 0.5, 2.0],
+        triangles: 12,
+        code: None,
+        extra: serde_json::Value::Null,
+    };
+    let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
+    let rack = lib.add(b"rack mesh", record("shelving unit")).unwrap();
+    lib.add(b"mug mesh", record("coffee mug")).unwrap();
+    lib.add(b"cone mesh", record("traffic cone")).unwrap();
+    let hit = lib.lookup("storage rack").unwrap().expect("a shelving unit serves a storage rack");
+    assert_eq!(hit.id, rack.id);
+    assert!(lib.lookup("self-driving car").unwrap().is_none());
+    drop(lib);
+    // Reopened from disk: the same index.
+    let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
+    assert_eq!(lib.len(), 3);
+    assert_eq!(lib.search("mug", 1).unwrap()[0].label, "coffee mug");
+    assert_eq!(lib.store().mesh(&rack.id).unwrap(), b"rack mesh");
+    assert!(lib.search("   ", 1).is_err());
+}
