@@ -15,9 +15,14 @@ const BIN: &str = env!("CARGO_BIN_EXE_scenewright");
 
 /// A `scenewright serve`, and the address it printed.
 fn serve(data: &Path, workers: usize) -> (Child, SocketAddr) {
+    serve_on(data, None, workers)
+}
+
+fn serve_on(data: &Path, database: Option<&str>, workers: usize) -> (Child, SocketAddr) {
     let mut child = Command::new(BIN)
         .args(["serve", "--addr", "127.0.0.1:0", "--lease-ms", "1500", "--workers", &workers.to_string(), "--data"])
         .arg(data)
+        .args(database.map(|d| vec!["--database", d]).unwrap_or_default())
         .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
@@ -36,9 +41,14 @@ fn serve(data: &Path, workers: usize) -> (Child, SocketAddr) {
 }
 
 fn worker(data: &Path, workers: usize) -> Child {
+    worker_on(data, None, workers)
+}
+
+fn worker_on(data: &Path, database: Option<&str>, workers: usize) -> Child {
     Command::new(BIN)
         .args(["worker", "--lease-ms", "1500", "--workers", &workers.to_string(), "--data"])
         .arg(data)
+        .args(database.map(|d| vec!["--database", d]).unwrap_or_default())
         .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::null())
@@ -112,19 +122,32 @@ fn wait_all_terminal(addr: SocketAddr, token: &str) -> Vec<Value> {
 }
 
 /// Jobs the database says were running (read straight from the file, as the crash left it).
+fn open(data: &Path, database: Option<&str>) -> impl Future<Output = sw_store::Store> {
+    let url = database.map_or_else(|| format!("sqlite://{}", data.join("scenewright.db").display()), str::to_string);
+    async move { sw_store::Store::open(&url).await.unwrap() }
+}
+
 fn running_in_db(data: &Path) -> Vec<String> {
+    running_in(data, None)
+}
+
+fn running_in(data: &Path, database: Option<&str>) -> Vec<String> {
     let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
     rt.block_on(async {
-        let store = sw_store::Store::open_sqlite(&data.join("scenewright.db")).await.unwrap();
+        let store = open(data, database).await;
         let all = store.all_jobs().await.unwrap();
         all.into_iter().filter(|j| j.state == sw_store::JobState::Running).map(|j| j.id).collect()
     })
 }
 
 fn check_db(data: &Path, ids: &[String], rerun: &[String]) {
+    check(data, None, ids, rerun)
+}
+
+fn check(data: &Path, database: Option<&str>, ids: &[String], rerun: &[String]) {
     let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
     rt.block_on(async {
-        let store = sw_store::Store::open_sqlite(&data.join("scenewright.db")).await.unwrap();
+        let store = open(data, database).await;
         let all = store.all_jobs().await.unwrap();
         assert_eq!(all.len(), ids.len(), "no job lost, none invented");
         for j in &all {
@@ -188,4 +211,101 @@ fn killing_a_worker_process_mid_job_loses_nothing() {
     kill9(&mut w);
     kill9(&mut server);
     check_db(&data, &ids, &rerun);
+}
+
+/// A throwaway PostgreSQL cluster on loopback (initdb + pg_ctl, as `postgres` when root).
+struct Postgres {
+    dir: tempfile::TempDir,
+    bin: std::path::PathBuf,
+    as_postgres: bool,
+    url: String,
+}
+
+impl Postgres {
+    fn run(bin: &Path, as_postgres: bool, tool: &str, args: &[&str]) -> std::process::Output {
+        let mut cmd = if as_postgres {
+            let mut c = Command::new("runuser");
+            c.args(["-u", "postgres", "--"]).arg(bin.join(tool));
+            c
+        } else {
+            Command::new(bin.join(tool))
+        };
+        cmd.args(args).output().unwrap()
+    }
+
+    fn start() -> Self {
+        let mut versions: Vec<std::path::PathBuf> = std::fs::read_dir("/usr/lib/postgresql")
+            .expect("PostgreSQL is not installed: run scripts/setup.sh --tests")
+            .filter_map(|e| e.ok().map(|e| e.path().join("bin")))
+            .filter(|p| p.join("initdb").exists())
+            .collect();
+        versions.sort();
+        let bin = versions.pop().expect("no initdb: run scripts/setup.sh --tests");
+        let as_postgres = Command::new("id").arg("-u").output().is_ok_and(|o| o.stdout.starts_with(b"0\n"));
+        let dir = tempfile::Builder::new().prefix("sw-pg-").tempdir().unwrap();
+        if as_postgres {
+            assert!(
+                Command::new("chown").args(["-R", "postgres:postgres"]).arg(dir.path()).status().unwrap().success()
+            );
+        }
+        let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
+        let data = dir.path().join("data").display().to_string();
+        let out = Self::run(&bin, as_postgres, "initdb", &["-D", &data, "-A", "trust", "-U", "sw", "--no-sync"]);
+        assert!(out.status.success(), "initdb: {}", String::from_utf8_lossy(&out.stderr));
+        let opts = format!("-h 127.0.0.1 -p {port} -k {} -c max_connections=200", dir.path().display());
+        let log = dir.path().join("log").display().to_string();
+        let out = Self::run(&bin, as_postgres, "pg_ctl", &["-D", &data, "-l", &log, "-w", "-o", &opts, "start"]);
+        assert!(out.status.success(), "pg_ctl: {}", String::from_utf8_lossy(&out.stderr));
+        Postgres { dir, bin, as_postgres, url: format!("postgres://sw@127.0.0.1:{port}/postgres") }
+    }
+}
+
+impl Drop for Postgres {
+    fn drop(&mut self) {
+        let data = self.dir.path().join("data").display().to_string();
+        let _ = Self::run(&self.bin, self.as_postgres, "pg_ctl", &["-D", &data, "-m", "immediate", "stop"]);
+    }
+}
+
+#[test]
+fn killing_a_worker_on_postgresql_loses_nothing() {
+    let pg = Postgres::start();
+    let db = Some(pg.url.as_str());
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("data");
+    // HTTP only; two worker processes share the PostgreSQL queue; one is killed mid-job.
+    let (mut server, addr) = serve_on(&data, db, 0);
+    let token = login(addr);
+    let ids = submit(addr, &token, 8);
+    let mut steady = worker_on(&data, db, 1);
+    let mut w = worker_on(&data, db, 2);
+    let mut rerun = Vec::new();
+    while rerun.is_empty() {
+        wait_until_one_runs(addr, &token);
+        let pid = w.id();
+        kill9(&mut w);
+        // The jobs the killed process held (runner names start with its process id).
+        rerun = held_by(&data, db, pid);
+        w = worker_on(&data, db, 2);
+    }
+    let done = wait_all_terminal(addr, &token);
+    assert_eq!(done.len(), ids.len());
+    kill9(&mut w);
+    kill9(&mut steady);
+    kill9(&mut server);
+    check(&data, db, &ids, &rerun);
+}
+
+fn held_by(data: &Path, database: Option<&str>, pid: u32) -> Vec<String> {
+    let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    rt.block_on(async {
+        let store = open(data, database).await;
+        let all = store.all_jobs().await.unwrap();
+        let prefix = format!("{pid}-");
+        all.into_iter()
+            .filter(|j| j.state == sw_store::JobState::Running)
+            .filter(|j| j.worker.as_deref().is_some_and(|w| w.starts_with(&prefix)))
+            .map(|j| j.id)
+            .collect()
+    })
 }
