@@ -7,6 +7,8 @@
 //! - [`failure`]: the taxonomy every failed attempt is filed under;
 //! - [`synth`]: the offline template synthesizer, CadQuery code for dimensioned prompts;
 //! - [`part`]: synthesize, run, validate and write one part offline;
+//! - [`generate`]: the generation loop — a writer (LLM or template) writes, the runner
+//!   runs, the validator checks, failures go back to the writer, K attempts then fallback;
 //! - [`store`]: meshes and metadata by content address (a local directory; the trait for
 //!   an S3-compatible bucket); [`index`]: the semantic index over their labels;
 //!   `embed` (feature `embed`, on by default): all-MiniLM-L6-v2 on candle.
@@ -14,6 +16,7 @@
 #[cfg(feature = "embed")]
 pub mod embed;
 pub mod failure;
+pub mod generate;
 pub mod index;
 #[cfg(feature = "embed")]
 pub mod library;
