@@ -144,6 +144,14 @@ pub struct Forged {
     pub writer: String,
 }
 
+impl Forged {
+    /// The part as a scene asset in metres: its mesh as the visual, its convex
+    /// decomposition as collision, standing on z = 0.
+    pub fn asset(&self, category: &str, mass_kg: Option<f64>, placement: sw_geom::PlacementKind) -> sw_geom::Asset {
+        crate::collision::part_asset(category, &mesh_io::scaled(&self.mesh_mm, 1e-3), mass_kg, placement)
+    }
+}
+
 /// How the loop ended.
 #[derive(Debug, Clone)]
 pub enum ForgeOutcome {

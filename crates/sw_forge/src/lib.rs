@@ -7,12 +7,14 @@
 //! - [`failure`]: the taxonomy every failed attempt is filed under;
 //! - [`synth`]: the offline template synthesizer, CadQuery code for dimensioned prompts;
 //! - [`part`]: synthesize, run, validate and write one part offline;
+//! - [`collision`]: convex collision pieces of generated parts (V-HACD), and parts as assets;
 //! - [`generate`]: the generation loop — a writer (LLM or template) writes, the runner
 //!   runs, the validator checks, failures go back to the writer, K attempts then fallback;
 //! - [`store`]: meshes and metadata by content address (a local directory; the trait for
 //!   an S3-compatible bucket); [`index`]: the semantic index over their labels;
 //!   `embed` (feature `embed`, on by default): all-MiniLM-L6-v2 on candle.
 
+pub mod collision;
 #[cfg(feature = "embed")]
 pub mod embed;
 pub mod failure;

@@ -94,4 +94,13 @@ fn the_template_writer_makes_dimensioned_parts_in_one_attempt() {
     let ForgeOutcome::Made(part) = out else { panic!("{:?}", out.attempts()) };
     assert_eq!(part.attempts.len(), 1);
     assert_eq!(part.report.genus, 1);
+    // A washer is concave: it collides as several convex pieces, not as a disc.
+    let asset = part.asset("generated_washer", Some(0.005), sw_geom::PlacementKind::OnSurface);
+    let pieces = &asset.links[0].convex;
+    assert!(pieces.len() >= 2, "{} pieces", pieces.len());
+    let hull_volume: f64 = pieces.iter().map(|p| p.mesh.volume()).sum();
+    let disc = std::f64::consts::PI * 0.01f64.powi(2) * 0.002;
+    assert!(hull_volume < 0.95 * disc, "the pieces fill the hole: {hull_volume} vs disc {disc}");
+    let size = asset.bounds().size();
+    assert!((size[0] - 0.02).abs() < 2e-4 && (size[2] - 0.002).abs() < 2e-5, "{size:?}");
 }
