@@ -95,6 +95,13 @@ impl Progress {
                 Some(b) => b.println(format!("  {:<9} {message}", stage.label())),
                 None => eprintln!("  {:<9}             {message}", stage.label()),
             },
+            // Per-object steps show on the spinner; plain lines stay one per stage.
+            (Progress::Lines, Event::Object { .. }) => {}
+            (Progress::Bars(bar), Event::Object { stage, object, step }) => {
+                if let Some(b) = bar {
+                    b.set_message(format!("{} … {object}: {step}", stage.label()));
+                }
+            }
         }
     }
 }
@@ -111,6 +118,7 @@ pub(crate) fn run(a: GenerateArgs) -> Result<u8, Failure> {
         robots: a.robot.clone(),
         rules_profile: a.rules.clone(),
         anomaly,
+        cancel: None,
     };
     if let Some(n) = a.variations {
         return run_variations(&prompt, &a.out, n, &opts, a.json);

@@ -89,7 +89,7 @@ pub(crate) fn progress(json: bool) -> impl FnMut(&Event) {
         match e {
             Event::StageFinished { stage, ms, summary } => eprintln!("{:<9} {:>8.1} ms  {summary}", stage.label(), ms),
             Event::Note { stage, message } => eprintln!("{:<9}             {message}", stage.label()),
-            Event::StageStarted { .. } => {}
+            Event::StageStarted { .. } | Event::Object { .. } => {}
         }
     }
 }

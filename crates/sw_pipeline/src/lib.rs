@@ -11,6 +11,7 @@ mod edit;
 mod edit_ops;
 mod edit_work;
 mod forge;
+mod forge_source;
 mod llm_generate;
 mod package;
 mod rebuild;
@@ -20,18 +21,21 @@ mod robot_facts;
 mod variations;
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use serde::Serialize;
 use sw_plan::{
     AnomalyKind, AnomalyRequest, LaidOutScene, Mount, Report, RobotPlan, ScenePlan, Stage, StageTiming, Status,
-    Timings, Verification, Warning,
+    Support, Timings, Verification, Warning,
 };
 use tracing::info_span;
 
 pub use asset_source::{AssetSource, CadCallSource, CatalogSource, GroupAssets, MadeAsset};
 pub use edit::{EditOutcome, EditReader, edit_package};
 pub use forge::{Forged, ForgedObject, forge};
+pub use forge_source::ForgeSource;
 pub use llm_generate::{LlmRun, Structure, generate_with_llm, plan_with_llm};
 pub use package::{OutputError, discard_staged_packages, validate_dir};
 pub use refine::{Refined, Refiner, Turn};
@@ -51,11 +55,23 @@ pub struct Options {
     pub rules_profile: Option<String>,
     /// Inject controlled anomalies (`--anomaly`), labelled in layout.json.
     pub anomaly: Option<AnomalyRequest>,
+    /// Set by another thread to stop the run between stages (a cancelled or timed-out
+    /// job): the run ends with [`PipelineError::Cancelled`] and writes nothing.
+    pub cancel: Option<Arc<AtomicBool>>,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Self { seed: 0, verify: true, robots: None, rules_profile: None, anomaly: None }
+        Self { seed: 0, verify: true, robots: None, rules_profile: None, anomaly: None, cancel: None }
+    }
+}
+
+impl Options {
+    fn check_cancel(&self) -> Result<(), PipelineError> {
+        match &self.cancel {
+            Some(c) if c.load(Ordering::Relaxed) => Err(PipelineError::Cancelled),
+            _ => Ok(()),
+        }
     }
 }
 
@@ -63,9 +79,25 @@ impl Default for Options {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "event", rename_all = "snake_case")]
 pub enum Event {
-    StageStarted { stage: Stage },
-    StageFinished { stage: Stage, ms: f64, summary: String },
-    Note { stage: Stage, message: String },
+    StageStarted {
+        stage: Stage,
+    },
+    StageFinished {
+        stage: Stage,
+        ms: f64,
+        summary: String,
+    },
+    Note {
+        stage: Stage,
+        message: String,
+    },
+    /// One object's step within a stage: its asset made (L2), where it was placed or
+    /// why it was left out (L3).
+    Object {
+        stage: Stage,
+        object: String,
+        step: String,
+    },
 }
 
 /// Why a run did not produce a package.
@@ -80,6 +112,9 @@ pub enum PipelineError {
     /// A bug or an environment failure (exit code 1).
     #[error("internal error: {0}")]
     Internal(String),
+    /// Stopped through [`Options::cancel`] (exit code 130); nothing was written.
+    #[error("cancelled")]
+    Cancelled,
 }
 
 impl PipelineError {
@@ -88,6 +123,7 @@ impl PipelineError {
         match self {
             PipelineError::Input(_) | PipelineError::Output(_) => 2,
             PipelineError::Internal(_) => 1,
+            PipelineError::Cancelled => 130,
         }
     }
 }
@@ -139,6 +175,7 @@ pub fn generate(
     };
     apply_options(&mut plan, opts)?;
     finish(Stage::Plan, t, report::plan_summary(&plan), &mut timings, on_event);
+    opts.check_cancel()?;
     run_from_plan(prompt, plan, out, opts, Prepared::default(), timings, started, on_event)
 }
 
@@ -191,6 +228,28 @@ fn stage_finished(s: Stage, t0: Instant, summary: String, timings: &mut Timings,
     on_event(&Event::StageFinished { stage: s, ms, summary });
 }
 
+/// One event per placed object and robot (where, on what) and per group left out.
+fn placement_events(layout: &LaidOutScene, on_event: &mut dyn FnMut(&Event)) {
+    for o in &layout.objects {
+        let on = match &o.support {
+            Support::Floor => "on the floor".to_string(),
+            Support::Object { object, surface } => format!("on {object} ({surface})"),
+            Support::Wall { wall } => format!("in the {} wall", wall.name()),
+        };
+        let step = format!("placed at ({:.2}, {:.2}) {on}", o.pos[0], o.pos[1]);
+        on_event(&Event::Object { stage: Stage::Layout, object: o.name.clone(), step });
+    }
+    for r in &layout.robots {
+        let on = r.mounted_on.as_ref().map_or_else(|| format!("mounted: {}", r.mount), |m| format!("on {m}"));
+        let step = format!("{} spawned at ({:.2}, {:.2}), {on}", r.model, r.pos[0], r.pos[1]);
+        on_event(&Event::Object { stage: Stage::Layout, object: r.name.clone(), step });
+    }
+    for l in &layout.left_out {
+        let step = format!("{} of {} left out: {}", l.requested - l.placed.min(l.requested), l.requested, l.reason);
+        on_event(&Event::Object { stage: Stage::Layout, object: l.group.clone(), step });
+    }
+}
+
 /// L2 to verification for a plan, and the package.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn run_from_plan(
@@ -216,7 +275,16 @@ pub(crate) fn run_from_plan(
             None => forge(&plan, opts.seed),
         }
     };
+    for o in &forged.objects {
+        let step = if o.label == o.category.replace('_', " ") {
+            format!("asset ready ({})", o.category)
+        } else {
+            format!("asset ready ({}, \"{}\")", o.category, o.label)
+        };
+        on_event(&Event::Object { stage: Stage::Forge, object: o.name.clone(), step });
+    }
     finish(Stage::Forge, t, report::count(forged.objects.len(), "asset", "assets"), &mut timings, on_event);
+    opts.check_cancel()?;
 
     // L3
     let t = stage(Stage::Layout, on_event);
@@ -264,6 +332,7 @@ pub(crate) fn run_from_plan(
             o.asset = o.asset.scaled(label.magnitude);
         }
     }
+    placement_events(&layout, on_event);
     finish(Stage::Layout, t, report::layout_summary(&layout), &mut timings, on_event);
     let expected = report::anomaly_bodies(&layout);
 
@@ -271,6 +340,7 @@ pub(crate) fn run_from_plan(
     warnings.extend(forged.warnings.iter().cloned());
     let mut verification: Option<Verification> = None;
     for round in 0..=MAX_REPAIRS {
+        opts.check_cancel()?;
         // L4
         let t = stage(Stage::Bridge, on_event);
         let files = {
@@ -297,6 +367,7 @@ pub(crate) fn run_from_plan(
         if !opts.verify {
             break;
         }
+        opts.check_cancel()?;
         let t = stage(Stage::Verify, on_event);
         let v = {
             let _s = info_span!("stage", stage = "verify").entered();

@@ -131,3 +131,73 @@ fn every_stage_reports_progress_and_a_time() {
         assert!(o.timings.get(s).is_some(), "{s:?}");
     }
 }
+
+#[test]
+fn every_object_reports_its_asset_and_its_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut events = Vec::new();
+    let o = generate(
+        "a kitchen with a table, three mugs on the table and a TurtleBot",
+        &dir.path().join("k"),
+        &Options::default(),
+        &mut |e| events.push(e.clone()),
+    )
+    .unwrap();
+    use sw_pipeline::Event;
+    let steps = |st: sw_plan::Stage| -> Vec<(String, String)> {
+        events
+            .iter()
+            .filter_map(|e| match e {
+                Event::Object { stage, object, step } if *stage == st => Some((object.clone(), step.clone())),
+                _ => None,
+            })
+            .collect()
+    };
+    let (made, laid) = (steps(sw_plan::Stage::Forge), steps(sw_plan::Stage::Layout));
+    for p in &o.layout.objects {
+        assert!(made.iter().any(|(n, _)| *n == p.name), "no asset step for {}: {made:?}", p.name);
+        let (_, step) =
+            laid.iter().find(|(n, _)| *n == p.name).unwrap_or_else(|| panic!("{} not placed: {laid:?}", p.name));
+        if p.category == "mug" {
+            assert!(step.contains("on table_1"), "{step}");
+        }
+    }
+    assert!(laid.iter().any(|(n, s)| *n == o.layout.robots[0].name && s.contains("spawned")), "{laid:?}");
+    // Each object step comes inside its stage: after the stage started, before it finished.
+    let pos = |f: &dyn Fn(&Event) -> bool| events.iter().position(f).unwrap();
+    let forge_done = pos(&|e| matches!(e, Event::StageFinished { stage: sw_plan::Stage::Forge, .. }));
+    let layout_start = pos(&|e| matches!(e, Event::StageStarted { stage: sw_plan::Stage::Layout }));
+    let first_place = pos(&|e| matches!(e, Event::Object { stage: sw_plan::Stage::Layout, .. }));
+    assert!(pos(&|e| matches!(e, Event::Object { stage: sw_plan::Stage::Forge, .. })) < forge_done);
+    assert!(layout_start < first_place);
+}
+
+#[test]
+fn a_cancelled_run_stops_at_the_next_stage_and_writes_nothing() {
+    use std::sync::Arc;
+    use std::sync::atomic::{AtomicBool, Ordering};
+    let dir = tempfile::tempdir().unwrap();
+    for stop_after in [sw_plan::Stage::Plan, sw_plan::Stage::Forge, sw_plan::Stage::Layout, sw_plan::Stage::Bridge] {
+        let flag = Arc::new(AtomicBool::new(false));
+        let opts = Options { cancel: Some(flag.clone()), ..Options::default() };
+        let out = dir.path().join(format!("{stop_after:?}"));
+        let mut started = Vec::new();
+        let e = generate("a warehouse with two pallet racks and six boxes", &out, &opts, &mut |e| {
+            if let sw_pipeline::Event::StageStarted { stage } = e {
+                started.push(*stage);
+            }
+            if let sw_pipeline::Event::StageFinished { stage, .. } = e
+                && *stage == stop_after
+            {
+                flag.store(true, Ordering::Relaxed);
+            }
+        })
+        .unwrap_err();
+        assert!(matches!(e, sw_pipeline::PipelineError::Cancelled), "{e}");
+        assert_eq!(e.exit_code(), 130);
+        assert_eq!(started.last(), Some(&stop_after), "no stage after a cancel: {started:?}");
+        assert!(!out.exists(), "a cancelled run wrote {}", out.display());
+        let leftovers: Vec<_> = std::fs::read_dir(dir.path()).unwrap().flatten().map(|e| e.file_name()).collect();
+        assert!(leftovers.is_empty(), "staging left behind: {leftovers:?}");
+    }
+}

@@ -58,7 +58,7 @@ pub fn spec() -> Value {
                 "delete": op("Cancel a job (a queued job never runs; a running job's result is discarded)", true, None, ("200", "the job"), &jobs_auth) },
             "/api/jobs/{id}/events": {
                 "parameters": [id_param("id")],
-                "get": op("WebSocket: one JSON message per event (queued, started, stage_started, stage_finished, note, warning, requeued, error, cancelled, finished), then `result`; token in the header or ?token=", true, None, ("101", "switching protocols"), &jobs_auth) },
+                "get": op("WebSocket: one JSON message per event (queued, started, stage_started, stage_finished, object, note, warning, requeued, error, cancelled, finished), then `result`; token in the header or ?token=", true, None, ("101", "switching protocols"), &jobs_auth) },
             "/api/scenes": { "get": op("The caller's scenes", true, None, ("200", "{scenes}"), &["401"]) },
             "/api/scenes/{id}": { "parameters": [id_param("id")],
                 "get": op("A scene: metadata, report.json, files, edit history", true, None, ("200", "the scene"), &jobs_auth) },

@@ -155,7 +155,7 @@ async fn run_job(state: &AppState, claim: Claim) {
         })
     };
 
-    let result = run_pipeline(state, &claim, tx).await;
+    let result = run_pipeline(state, &claim, tx, lost.clone()).await;
     let _ = forwarder.await;
     heartbeat.abort();
 
@@ -190,10 +190,15 @@ async fn claim_still_ours(state: &AppState, claim: &Claim, lost: &AtomicBool) ->
 }
 
 /// Runs the pipeline on a blocking thread within the job's remaining time.
+///
+/// `stop` is the pipeline's cancel flag: the heartbeat sets it when the claim is lost
+/// (cancelled, timed out, taken over), and the time limit sets it here, so the thread
+/// stops at the next stage instead of finishing work nobody will keep.
 async fn run_pipeline(
     state: &AppState,
     claim: &Claim,
     tx: tokio::sync::mpsc::UnboundedSender<Value>,
+    stop: Arc<AtomicBool>,
 ) -> Result<(Made, tempfile::TempDir), String> {
     let job = claim.job.clone();
     let work = state.runner.work_dir.clone().unwrap_or_else(std::env::temp_dir);
@@ -212,13 +217,14 @@ async fn run_pipeline(
         },
         None => Vec::new(),
     };
+    let cancel = stop.clone();
     let handle = tokio::task::spawn_blocking(move || {
         let mut on_event = |e: &Event| {
             let _ = tx.send(serde_json::to_value(e).unwrap_or_else(|_| json!({"event": "note"})));
         };
         match job.kind {
             JobKind::Generate => {
-                let opts = options(&job.options, job.seed);
+                let opts = Options { cancel: Some(cancel), ..options(&job.options, job.seed) };
                 let o = sw_pipeline::generate(&job.prompt, &out, &opts, &mut on_event).map_err(describe)?;
                 Ok(Made { report: o.report, timings: o.timings, dir: o.out_dir, edit: None })
             }
@@ -238,7 +244,10 @@ async fn run_pipeline(
         Ok(Ok(Ok(made))) => Ok((made, tmp)),
         Ok(Ok(Err(message))) => Err(message),
         Ok(Err(join)) => Err(format!("the pipeline crashed: {join}")),
-        Err(_) => Err(format!("timed out after {} s", job.timeout_ms / 1000)),
+        Err(_) => {
+            stop.store(true, Ordering::Relaxed);
+            Err(format!("timed out after {} s", job.timeout_ms / 1000))
+        }
     }
 }
 
@@ -257,6 +266,7 @@ fn options(o: &Value, seed: u64) -> Options {
         robots: o["robots"].as_array().map(|a| a.iter().filter_map(|x| x.as_str().map(str::to_string)).collect()),
         rules_profile: o["rules"].as_str().map(str::to_string),
         anomaly: None,
+        cancel: None,
     }
 }
 

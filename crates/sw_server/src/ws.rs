@@ -1,6 +1,6 @@
 //! `GET /api/jobs/{id}/events`: a WebSocket that sends every event of a job as one JSON
 //! text message (`{"seq", "event", ...}`: queued, started, stage_started, stage_finished,
-//! note, warning, requeued, error, cancelled, finished), then a last `result` message
+//! object (per-object steps), note, warning, requeued, error, cancelled, finished), then a last `result` message
 //! with the job and, when it made one, the scene — and closes. A client that connects
 //! late gets the whole history first.
 

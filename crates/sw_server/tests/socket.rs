@@ -89,6 +89,20 @@ async fn clients_follow_their_jobs_over_websockets() {
                 "{id}: no stage_finished {stage}"
             );
         }
+        // Per-object steps: each asset made, each placed object (every one of them made
+        // in L2), and the robot's spawn.
+        let steps = |stage: &str| -> Vec<(String, String)> {
+            events
+                .iter()
+                .filter(|e| e["event"] == "object" && e["stage"] == stage)
+                .map(|e| (e["object"].as_str().unwrap_or("").to_string(), e["step"].as_str().unwrap_or("").to_string()))
+                .collect()
+        };
+        let (made, laid) = (steps("forge"), steps("layout"));
+        let placed: Vec<&(String, String)> = laid.iter().filter(|(_, s)| s.starts_with("placed at")).collect();
+        assert!(!placed.is_empty(), "{id}: {laid:?}");
+        assert!(placed.iter().all(|(o, _)| made.iter().any(|(m, _)| m == o)), "{id}: {made:?} vs {laid:?}");
+        assert!(laid.iter().any(|(_, s)| s.starts_with("ur5e spawned")), "{id}: {laid:?}");
         let seqs: Vec<i64> = events.iter().filter_map(|e| e["seq"].as_i64()).collect();
         assert!(seqs.windows(2).all(|w| w[1] == w[0] + 1) && seqs[0] == 1, "gapless: {seqs:?}");
         assert!(events.iter().any(|e| e["event"] == "finished"));
