@@ -9,7 +9,9 @@ use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex};
 
 use sw_forge::generate::{CodeWriter, ForgeOutcome, LoopConfig, PartRequest, forge};
+use sw_forge::library::AssetLibrary;
 use sw_forge::runner::CadRunner;
+use sw_forge::store::{AssetId, AssetRecord, AssetStore as _};
 use sw_geom::{Asset, PlacementKind};
 use sw_plan::ObjectPlan;
 
@@ -21,6 +23,7 @@ pub struct ForgeSource {
     writer: Arc<dyn CodeWriter>,
     config: LoopConfig,
     made: Mutex<BTreeMap<String, Asset>>,
+    library: Option<Arc<AssetLibrary>>,
 }
 
 impl std::fmt::Debug for ForgeSource {
@@ -31,12 +34,40 @@ impl std::fmt::Debug for ForgeSource {
 
 impl ForgeSource {
     pub fn new(runner: CadRunner, writer: Arc<dyn CodeWriter>, config: LoopConfig) -> Self {
-        Self { runner, writer, config, made: Mutex::new(BTreeMap::new()) }
+        Self { runner, writer, config, made: Mutex::new(BTreeMap::new()), library: None }
+    }
+
+    /// Reuses stored assets by meaning and stores every part made.
+    pub fn with_library(mut self, library: Arc<AssetLibrary>) -> Self {
+        self.library = Some(library);
+        self
+    }
+
+    /// A stored asset that serves this label, as an asset.
+    fn reuse(&self, label: &str, movable: bool) -> Option<(Asset, String)> {
+        let lib = self.library.as_ref()?;
+        let hit = lib.lookup(label).ok()??;
+        let bytes = lib.store().mesh(&hit.id).ok()?;
+        let mesh = sw_geom::read_stl(bytes.as_slice()).ok()?;
+        let rec = lib.store().record(&hit.id).ok()?;
+        let mass = rec.extra.get("mass_kg").and_then(serde_json::Value::as_f64).filter(|_| movable);
+        let placement = if movable { PlacementKind::OnSurface } else { PlacementKind::Floor };
+        let a =
+            sw_forge::collision::part_asset(&format!("generated_{}", label.replace(' ', "_")), &mesh, mass, placement);
+        Some((a, format!("{} ({:.2})", hit.label, hit.score)))
     }
 
     fn cached(&self, key: &str) -> Option<Asset> {
         self.made.lock().ok().and_then(|m| m.get(key).cloned())
     }
+}
+
+/// Binary STL of a mm mesh, in metres.
+fn stl_m(mesh_mm: &sw_geom::Mesh) -> Vec<u8> {
+    let m = sw_forge::mesh_io::scaled(mesh_mm, 1e-3);
+    let mut bytes = Vec::new();
+    let _ = sw_geom::write_stl(&mut bytes, &m, "generated");
+    bytes
 }
 
 impl AssetSource for ForgeSource {
@@ -54,6 +85,14 @@ impl AssetSource for ForgeSource {
         let key = asset_key(group);
         let asset = match self.cached(&key) {
             Some(a) => a,
+            None if self.reuse(&proxy.label, proxy.movable).is_some() => {
+                let Some((a, what)) = self.reuse(&proxy.label, proxy.movable) else { return out };
+                if let Ok(mut m) = self.made.lock() {
+                    m.insert(key, a.clone());
+                }
+                out.warnings.push(format!("{}: reused the stored asset \"{what}\"", group.phrase));
+                a
+            }
             None => {
                 out.cached = false;
                 let request = PartRequest {
@@ -67,6 +106,23 @@ impl AssetSource for ForgeSource {
                         let mass = proxy.movable.then(|| (part.report.volume * 1e-9 * 500.0).max(0.05));
                         let category = format!("generated_{}", proxy.label.replace(' ', "_"));
                         let a = part.asset(&category, mass, placement);
+                        if let Some(lib) = &self.library {
+                            let stl = stl_m(&part.mesh_mm);
+                            let b = part.report.size;
+                            let record = AssetRecord {
+                                id: AssetId::of(&stl),
+                                label: proxy.label.clone(),
+                                description: group.phrase.clone(),
+                                source: part.writer.clone(),
+                                size_m: [b[0] * 1e-3, b[1] * 1e-3, b[2] * 1e-3],
+                                triangles: part.report.triangles,
+                                code: Some(part.code.clone()),
+                                extra: serde_json::json!({ "mass_kg": mass, "attempts": part.attempts.len() }),
+                            };
+                            if let Err(e) = lib.add(&stl, record) {
+                                out.warnings.push(format!("{}: not stored in the asset library ({e})", group.phrase));
+                            }
+                        }
                         if let Ok(mut m) = self.made.lock() {
                             m.insert(key, a.clone());
                         }

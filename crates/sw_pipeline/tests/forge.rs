@@ -11,7 +11,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
+use sw_forge::embed::MiniLm;
 use sw_forge::generate::{LlmWriter, LoopConfig};
+use sw_forge::library::AssetLibrary;
 use sw_forge::runner::{CadRunner, RunnerConfig};
 use sw_llm::{Client, Endpoint, LlmConfig, LlmStage};
 use sw_mockllm::{MockServer, Reply, Request};
@@ -74,7 +76,10 @@ fn a_novel_object_is_generated_fed_back_decomposed_and_settles_in_mujoco() {
     let runner =
         CadRunner::start(RunnerConfig { workers: 1, timeout: Duration::from_secs(20), ..RunnerConfig::default() })
             .unwrap_or_else(|e| panic!("the CAD runner must start (run scripts/setup.sh --tests): {e}"));
-    let source = ForgeSource::new(runner, Arc::new(LlmWriter::new(client.clone())), LoopConfig::default());
+    let store = tempfile::tempdir().unwrap();
+    let library = Arc::new(AssetLibrary::open(store.path(), MiniLm::load_default().unwrap()).unwrap());
+    let source = ForgeSource::new(runner.clone(), Arc::new(LlmWriter::new(client.clone())), LoopConfig::default())
+        .with_library(Arc::clone(&library));
     let mut run = LlmRun::new(client);
     run.assets = Arc::new(source);
     let dir = tempfile::tempdir().unwrap();
@@ -90,4 +95,25 @@ fn a_novel_object_is_generated_fed_back_decomposed_and_settles_in_mujoco() {
     let hull_geoms =
         xml.lines().filter(|l| l.contains("<geom") && l.contains("generated_spectrum_analyzer_hull")).count();
     assert!(hull_geoms >= 2, "the pocketed case collides as several convex pieces ({hull_geoms})");
+
+    // Stored and indexed: the next scene asking for the same kind of object reuses it
+    // with no model call (a fresh source, so only the library can know it).
+    assert_eq!(library.len(), 1);
+    let mut run2 = LlmRun::new(Client::new(
+        LlmConfig::offline()
+            .with(LlmStage::Plan, endpoint(&server, "m-plan"))
+            .with(LlmStage::Cad, endpoint(&server, "m-cad")),
+    ));
+    run2.assets = Arc::new(
+        ForgeSource::new(runner, Arc::new(LlmWriter::new(run2.client.clone())), LoopConfig::default())
+            .with_library(Arc::clone(&library)),
+    );
+    let o2 = generate_with_llm(PROMPT, &dir.path().join("s2"), &Options::default(), &run2, &mut |_| {}).unwrap();
+    assert_eq!(o2.report.status, Status::Verified);
+    assert_eq!(cad_calls.load(Ordering::SeqCst), 2, "reused: no third CAD call");
+    assert!(
+        o2.report.warnings.iter().any(|w| w.message.contains("reused the stored asset")),
+        "{:?}",
+        o2.report.warnings
+    );
 }
