@@ -4,11 +4,14 @@
 //! `scenewright generate` stays offline.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use clap::Subcommand;
 use serde_json::json;
+use sw_forge::generate::{LlmWriter, LoopConfig};
+use sw_forge::runner::{CadRunner, RunnerConfig};
 use sw_llm::{Client, LlmConfig, LlmStage};
-use sw_pipeline::{Event, LlmRun, Options};
+use sw_pipeline::{Event, ForgeSource, LlmRun, Options};
 use sw_plan::{LlmCall, LlmOutcome, Status};
 
 use crate::Failure;
@@ -29,6 +32,10 @@ pub(crate) enum LlmCommand {
         /// Fail instead of planning offline when the endpoint fails.
         #[arg(long)]
         no_fallback: bool,
+        /// Keep objects the catalog does not have as labelled proxies instead of having
+        /// the CAD stage's model write them (used when a CAD endpoint is configured).
+        #[arg(long)]
+        no_forge: bool,
         /// A JSON file with the endpoints (else the environment).
         #[arg(long, value_name = "FILE")]
         llm_config: Option<PathBuf>,
@@ -94,6 +101,25 @@ pub(crate) fn progress(json: bool) -> impl FnMut(&Event) {
     }
 }
 
+/// L2 with the forge: the CAD stage's model writes parts the catalog lacks, run in the
+/// sandboxed runner; the asset library (when its embedder is set up) reuses parts made
+/// before by meaning and keeps every new one.
+fn forge_source(client: &Client) -> Result<ForgeSource, String> {
+    let runner = CadRunner::start(RunnerConfig::default()).map_err(|e| e.to_string())?;
+    let source = ForgeSource::new(runner, Arc::new(LlmWriter::new(client.clone())), LoopConfig::default());
+    let dir = sw_forge::library::default_store_dir();
+    match sw_forge::embed::MiniLm::load_default()
+        .map_err(|e| e.to_string())
+        .and_then(|m| sw_forge::library::AssetLibrary::open(&dir, m).map_err(|e| format!("{}: {e}", dir.display())))
+    {
+        Ok(library) => Ok(source.with_library(Arc::new(library))),
+        Err(why) => {
+            eprintln!("warning: generated parts are not stored for reuse: {why}");
+            Ok(source)
+        }
+    }
+}
+
 /// One line per stage of calls: "plan 1 call · 2.31 s · 1203 tokens in / 356 out".
 pub(crate) fn calls_summary(calls: &[LlmCall]) -> Vec<String> {
     let mut out = Vec::new();
@@ -125,11 +151,17 @@ pub(crate) fn calls_summary(calls: &[LlmCall]) -> Vec<String> {
 
 pub(crate) fn run(c: LlmCommand) -> Result<u8, Failure> {
     match c {
-        LlmCommand::Generate { prompt, out, seed, no_verify, no_fallback, llm_config, json } => {
+        LlmCommand::Generate { prompt, out, seed, no_verify, no_fallback, no_forge, llm_config, json } => {
             let cfg = config(llm_config.as_deref())?;
             need(&cfg, LlmStage::Plan)?;
             let mut run = LlmRun::new(Client::new(cfg));
             run.fallback = !no_fallback;
+            if !no_forge && run.client.has(LlmStage::Cad) {
+                match forge_source(&run.client) {
+                    Ok(source) => run.assets = Arc::new(source),
+                    Err(why) => eprintln!("warning: objects the catalog lacks stay labelled proxies: {why}"),
+                }
+            }
             let opts = Options { seed, verify: !no_verify, ..Options::default() };
             let o = sw_pipeline::generate_with_llm(&prompt, &out, &opts, &run, &mut progress(json)).map_err(failure)?;
             let code = if sw_pipeline::succeeded(&o.report) { 0 } else { 1 };

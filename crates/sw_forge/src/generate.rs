@@ -36,6 +36,10 @@ pub struct Attempt {
 pub trait CodeWriter: Send + Sync {
     fn name(&self) -> String;
     fn write(&self, request: &PartRequest, history: &[Attempt]) -> Result<String, Failure>;
+    /// The model calls made since the last take, for the run's telemetry.
+    fn take_calls(&self) -> Vec<sw_llm::LlmCall> {
+        Vec::new()
+    }
 }
 
 /// The offline template synthesizer as a writer (deterministic: it never improves on a
@@ -115,6 +119,10 @@ pub fn extract_code(answer: &str) -> String {
 }
 
 impl CodeWriter for LlmWriter {
+    fn take_calls(&self) -> Vec<sw_llm::LlmCall> {
+        self.client.telemetry().take()
+    }
+
     fn name(&self) -> String {
         self.client.config().endpoint(LlmStage::Cad).map_or_else(|| "llm".into(), |e| format!("llm:{}", e.model))
     }

@@ -26,8 +26,8 @@ pub struct GroupAssets {
     pub instances: Vec<Result<MadeAsset, String>>,
     /// True when no slow work was needed (catalog, cache).
     pub cached: bool,
-    /// Best-effort problems, for the report's warnings.
-    pub warnings: Vec<String>,
+    /// Best-effort problems and what was done about them, for the report's warnings.
+    pub warnings: Vec<sw_plan::Warning>,
     /// Language-model calls made for the group, for the report's telemetry.
     pub llm_calls: Vec<sw_plan::LlmCall>,
 }
@@ -136,9 +136,17 @@ impl AssetSource for CadCallSource {
         let client = self.client.fresh();
         match client.complete(LlmStage::Cad, &req, &format!("cad: {what}")) {
             Ok(_) => self.remember(group),
-            Err(e) => out.warnings.push(format!("{}: asset generation failed ({e}); used the stand-in", group.phrase)),
+            Err(e) => out.warnings.push(forge_warning(
+                "asset_generation_failed",
+                format!("{}: asset generation failed ({e}); used the stand-in", group.phrase),
+            )),
         }
         out.llm_calls = client.telemetry().take();
         out
     }
+}
+
+/// A warning of L2.
+pub(crate) fn forge_warning(code: &str, message: String) -> sw_plan::Warning {
+    sw_plan::Warning::new(sw_plan::Stage::Forge, code, message)
 }

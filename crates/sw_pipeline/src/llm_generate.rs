@@ -298,9 +298,7 @@ impl Workers {
         });
         for g in &plan.objects {
             if let Some(made) = results.get(&key(g)) {
-                for w in &made.warnings {
-                    forged.warnings.push(Warning::new(Stage::Forge, "asset_generation_failed", w.clone()));
-                }
+                forged.warnings.extend(made.warnings.iter().cloned());
             }
         }
         forged
