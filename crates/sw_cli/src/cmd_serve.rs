@@ -55,6 +55,14 @@ impl QueueArgs {
             job_timeout_ms: (self.job_timeout.max(1) * 1000) as i64,
             max_attempts: self.max_attempts.max(1),
             work_dir: Some(self.data.join("work")),
+            // The SCENEWRIGHT_LLM_* environment: edits the grammar cannot read go to its model.
+            llm: match sw_llm::LlmConfig::from_env() {
+                Ok(c) => Some(c),
+                Err(e) => {
+                    eprintln!("warning: the LLM settings are unusable, edits use the offline grammar only: {e}");
+                    None
+                }
+            },
             ..RunnerConfig::default()
         }
     }

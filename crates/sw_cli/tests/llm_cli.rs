@@ -267,8 +267,11 @@ fn bench_llm_latency_reports_both_structures() {
     // The exit code says whether the targets were met, which 3 runs cannot settle.
     assert!(matches!(o.code, Some(0 | 1)), "{o:?}");
     let d = o.json();
+    // Values only: whether the targets are met is for BENCHMARKS.md (a few runs at a high
+    // time scale are dominated by local timing noise, which can round a fast draw to 0).
     for k in ["miss5_p50_s", "paper_miss5_p50_s", "hit_p50_s", "paper_hit_p50_s", "miss8_p50_s", "paper_miss8_p50_s"] {
-        assert!(d[k].as_f64().unwrap() > 0.0, "{k}: {d:#}");
+        let x = d[k].as_f64().unwrap_or(f64::NAN);
+        assert!(x.is_finite() && x >= 0.0, "{k}: {d:#}");
     }
     assert_eq!(d["failures"].as_array().unwrap().len(), 0, "{d:#}");
     // Ours needs one round trip fewer than the paper's structure in every scenario.
@@ -280,22 +283,10 @@ fn bench_llm_latency_reports_both_structures() {
     assert_eq!(o.code, Some(2), "{o:?}");
 }
 
-/// The bounding box a CAD request asks for, mm.
-fn asked_size(text: &str) -> Option<[f64; 3]> {
-    let after = text.split("Bounding box:").nth(1)?;
-    let nums: Vec<f64> = after
-        .split(|c: char| !(c.is_ascii_digit() || c == '.'))
-        .filter(|s| !s.is_empty())
-        .filter_map(|s| s.parse().ok())
-        .take(3)
-        .collect();
-    (nums.len() == 3).then(|| [nums[0], nums[1], nums[2]])
-}
-
 #[test]
 fn llm_generate_forges_what_the_catalog_lacks_and_stores_it() {
     let plan = plan_json();
-    let server = MockServer::start(move |req| match asked_size(&req.last_user()) {
+    let server = MockServer::start(move |req| match sw_forge::generate::asked_size_mm(&req.last_user()) {
         // A CAD request: a box of the asked size with a pocket in its top (concave).
         Some([x, y, z]) => Reply::answer(format!(
             "```python\nimport cadquery as cq\nresult = cq.Workplane('XY').box({x}, {y}, {z}).faces('>Z').workplane().rect({}, {}).cutBlind(-{})\n```",

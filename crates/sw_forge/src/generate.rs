@@ -105,6 +105,19 @@ impl LlmWriter {
     }
 }
 
+/// The bounding box (mm) a request written by [`LlmWriter`] asks for, read back from its
+/// text ("Bounding box: 400.0 × 350.0 × 200.0 mm"): for model doubles and logs.
+pub fn asked_size_mm(text: &str) -> Option<[f64; 3]> {
+    let after = text.split("Bounding box:").nth(1)?;
+    let nums: Vec<f64> = after
+        .split(|c: char| !(c.is_ascii_digit() || c == '.'))
+        .filter(|s| !s.is_empty())
+        .filter_map(|s| s.parse().ok())
+        .take(3)
+        .collect();
+    (nums.len() == 3).then(|| [nums[0], nums[1], nums[2]])
+}
+
 /// The code inside the first fenced block of an answer (or the whole answer).
 pub fn extract_code(answer: &str) -> String {
     if let Some(start) = answer.find("```") {
@@ -249,6 +262,15 @@ mod tests {
         assert_eq!(extract_code("```\nresult = 2\n```"), "result = 2");
         assert_eq!(extract_code("result = 3"), "result = 3");
         assert_eq!(extract_code("```python\nresult = 4"), "result = 4");
+    }
+
+    #[test]
+    fn the_asked_size_reads_back_from_the_request() {
+        let req = PartRequest { description: "a spectrum analyzer".into(), size_m: Some([0.4, 0.35, 0.2]) };
+        let m = LlmWriter::messages(&req, &[]);
+        assert_eq!(asked_size_mm(&m[1].content), Some([400.0, 350.0, 200.0]));
+        let unsized_req = PartRequest { description: "a knob".into(), size_m: None };
+        assert_eq!(asked_size_mm(&LlmWriter::messages(&unsized_req, &[])[1].content), None);
     }
 
     #[test]

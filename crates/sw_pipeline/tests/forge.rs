@@ -29,18 +29,6 @@ fn endpoint(server: &MockServer, model: &str) -> Endpoint {
     e
 }
 
-/// The bounding box the request asks for, mm.
-fn asked_size(text: &str) -> Option<[f64; 3]> {
-    let after = text.split("Bounding box:").nth(1)?;
-    let nums: Vec<f64> = after
-        .split(|c: char| !(c.is_ascii_digit() || c == '.'))
-        .filter(|s| !s.is_empty())
-        .filter_map(|s| s.parse().ok())
-        .take(3)
-        .collect();
-    (nums.len() == 3).then(|| [nums[0], nums[1], nums[2]])
-}
-
 #[test]
 fn a_novel_object_is_generated_fed_back_decomposed_and_settles_in_mujoco() {
     let plan =
@@ -59,7 +47,7 @@ fn a_novel_object_is_generated_fed_back_decomposed_and_settles_in_mujoco() {
             // Wrong units: a part 1000 times too small.
             return Reply::answer("```python\nimport cadquery as cq\nresult = cq.Workplane('XY').box(0.4, 0.35, 0.2)\n```");
         }
-        let [x, y, z] = asked_size(&req.messages()[1].1).unwrap_or([100.0, 100.0, 100.0]);
+        let [x, y, z] = sw_forge::generate::asked_size_mm(&req.messages()[1].1).unwrap_or([100.0, 100.0, 100.0]);
         // A case with a deep pocket in its top: concave.
         Reply::answer(format!(
             "```python\nimport cadquery as cq\nresult = cq.Workplane('XY').box({x}, {y}, {z}).faces('>Z').workplane().rect({}, {}).cutBlind(-{})\n```",

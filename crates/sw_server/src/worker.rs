@@ -27,11 +27,14 @@ pub struct RunnerConfig {
     pub poll_ms: u64,
     /// Scratch space for packages being made (default: the system's temp directory).
     pub work_dir: Option<PathBuf>,
+    /// Model endpoints: an edit the offline grammar cannot read goes to the edit stage's
+    /// model, as with `scenewright edit` (none: the grammar only).
+    pub llm: Option<sw_llm::LlmConfig>,
 }
 
 impl Default for RunnerConfig {
     fn default() -> Self {
-        Self { lease_ms: 30_000, job_timeout_ms: 600_000, max_attempts: 3, poll_ms: 250, work_dir: None }
+        Self { lease_ms: 30_000, job_timeout_ms: 600_000, max_attempts: 3, poll_ms: 250, work_dir: None, llm: None }
     }
 }
 
@@ -218,6 +221,7 @@ async fn run_pipeline(
         None => Vec::new(),
     };
     let cancel = stop.clone();
+    let llm = state.runner.llm.clone();
     let handle = tokio::task::spawn_blocking(move || {
         let mut on_event = |e: &Event| {
             let _ = tx.send(serde_json::to_value(e).unwrap_or_else(|_| json!({"event": "note"})));
@@ -231,7 +235,11 @@ async fn run_pipeline(
             JobKind::Edit => {
                 let parent = job.parent_scene_id.clone().ok_or("an edit job without a scene")?;
                 download(&*blobs, &parent, &parent_files, &out)?;
-                let o = sw_pipeline::edit_package(&out, &job.prompt, EditReader::Grammar, None, &mut on_event)
+                // The offline grammar first; a command it cannot read goes to the edit stage's
+                // model when one is configured (as `scenewright edit`).
+                let client = llm.filter(|c| c.endpoint(sw_llm::LlmStage::Edit).is_some()).map(sw_llm::Client::new);
+                let reader = if client.is_some() { EditReader::GrammarThenLlm } else { EditReader::Grammar };
+                let o = sw_pipeline::edit_package(&out, &job.prompt, reader, client.as_ref(), &mut on_event)
                     .map_err(describe)?;
                 let record = serde_json::to_value(&o.record).unwrap_or(Value::Null);
                 Ok(Made { report: o.report, timings: o.timings, dir: o.dir, edit: Some(record) })

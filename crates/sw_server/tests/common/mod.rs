@@ -26,9 +26,13 @@ pub fn runner() -> RunnerConfig {
 }
 
 pub async fn app(limits: QueueLimits) -> App {
+    app_with(limits, runner()).await
+}
+
+/// A service whose runners have this configuration (their scratch space in the app's directory).
+pub async fn app_with(limits: QueueLimits, mut r: RunnerConfig) -> App {
     let dir = tempfile::tempdir().unwrap();
     let (store, blobs) = sw_server::open_data(dir.path(), None).await.unwrap();
-    let mut r = runner();
     r.work_dir = Some(dir.path().join("work"));
     let state = AppState::new(store, blobs, limits, r, 3600).await.unwrap();
     let router = sw_server::router(state.clone());
