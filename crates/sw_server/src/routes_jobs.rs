@@ -103,7 +103,6 @@ pub async fn create(
         max_attempts: s.runner.max_attempts,
     };
     let job = s.store.enqueue(&new, s.limits).await?;
-    s.store.append_event(&job.id, &json!({"event": "queued", "job_id": job.id})).await?;
     s.wake.notify_one();
     tracing::info!(job = %job.id, user = %caller.user.id, "job queued");
     Ok((StatusCode::ACCEPTED, Json(json!({ "job_id": job.id, "state": job.state }))))

@@ -128,7 +128,6 @@ pub async fn edit(
         max_attempts: s.runner.max_attempts,
     };
     let job = s.store.enqueue(&new, s.limits).await?;
-    s.store.append_event(&job.id, &json!({"event": "queued", "job_id": job.id})).await?;
     s.wake.notify_one();
     Ok((StatusCode::ACCEPTED, Json(json!({ "job_id": job.id, "state": job.state, "scene_id": sc.id }))))
 }

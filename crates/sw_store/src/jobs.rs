@@ -187,7 +187,9 @@ macro_rules! job_columns {
 }
 
 impl Store {
-    /// Adds a job to the queue unless the queue is full (checked and inserted atomically).
+    /// Adds a job to the queue unless the queue is full (checked and inserted atomically),
+    /// with its `queued` event in the same transaction: no runner can claim the job, and
+    /// append `started`, before the stream begins with `queued`.
     pub async fn enqueue(&self, new: &NewJob, limits: QueueLimits) -> Result<Job> {
         let id = new_id();
         let now = now_ms();
@@ -224,6 +226,7 @@ impl Store {
             tx.rollback().await?;
             return Err(StoreError::QueueFull { cap: limits.queue_cap });
         }
+        push_event(&mut *tx, &id, &serde_json::json!({"event": "queued", "job_id": id})).await?;
         tx.commit().await?;
         self.job(&id).await?.ok_or_else(|| StoreError::Corrupt(format!("job {id} vanished after insert")))
     }

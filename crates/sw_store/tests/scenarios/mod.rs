@@ -162,12 +162,15 @@ pub async fn events_are_ordered_per_job(s: &Store) {
     let u = s.create_user("ann", "h", None).await.unwrap();
     let a = s.enqueue(&job(&u.id, "a"), QueueLimits::default()).await.unwrap();
     let b = s.enqueue(&job(&u.id, "b"), QueueLimits::default()).await.unwrap();
+    // Every stream begins with `queued`, written with the job.
+    let first = s.events_after(&a.id, 0).await.unwrap();
+    assert_eq!((first.len(), first[0].0, &first[0].1["event"]), (1, 1, &serde_json::json!("queued")));
     for i in 0..5 {
-        assert_eq!(s.append_event(&a.id, &serde_json::json!({"i": i})).await.unwrap(), i + 1);
+        assert_eq!(s.append_event(&a.id, &serde_json::json!({"i": i})).await.unwrap(), i + 2);
     }
     s.append_event(&b.id, &serde_json::json!({"other": true})).await.unwrap();
-    let ev = s.events_after(&a.id, 2).await.unwrap();
-    assert_eq!(ev.iter().map(|e| e.0).collect::<Vec<_>>(), vec![3, 4, 5]);
+    let ev = s.events_after(&a.id, 3).await.unwrap();
+    assert_eq!(ev.iter().map(|e| e.0).collect::<Vec<_>>(), vec![4, 5, 6]);
     assert_eq!(ev[0].1["i"], 2);
 }
 
