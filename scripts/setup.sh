@@ -38,6 +38,20 @@ done
 
 say() { echo "setup: $*" >&2; }
 
+# A venv at DIR holding PACKAGE at exactly VERSION (installed from SPEC); made again when it
+# is missing, its version differs, or its executable BIN (when given) is absent.
+pinned_venv() {
+  local dir="$1" package="$2" version="$3" spec="$4" bin="$5" what="$6"
+  if [ ! -x "$dir/bin/python" ] || { [ -n "$bin" ] && [ ! -x "$dir/bin/$bin" ]; } \
+    || ! "$dir/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('$package') != '$version')" 2>/dev/null; then
+    say "creating $dir with $spec ($what) ..."
+    rm -rf "$dir"
+    python3 -m venv "$dir"
+    "$dir/bin/python" -m pip install --quiet --disable-pip-version-check "$spec"
+    say "$package $version ready in $dir"
+  fi
+}
+
 # --- MuJoCo shared library, taken from the PyPI wheel (the crate links it dynamically) ---
 lib_dir="$cache/mujoco/lib"
 if [ ! -f "$lib_dir/libmujoco.so.$mujoco_version" ] || [ ! -L "$lib_dir/libmujoco.so" ]; then
@@ -66,27 +80,12 @@ fi
 
 # --- Tests only: official Python bindings of another MuJoCo version, an independent check ---
 if [ "$want_tests" = 1 ]; then
-  venv="$cache/venv"
-  if [ ! -x "$venv/bin/python" ] || ! "$venv/bin/python" -c "import mujoco, sys; sys.exit(mujoco.__version__ != '$check_version')" 2>/dev/null; then
-    say "creating $venv with mujoco==$check_version ..."
-    rm -rf "$venv"
-    python3 -m venv "$venv"
-    "$venv/bin/python" -m pip install --quiet --disable-pip-version-check "mujoco==$check_version"
-    say "python mujoco $check_version ready"
-  fi
+  pinned_venv "$cache/venv" mujoco "$check_version" "mujoco==$check_version" "" "the bindings for the independent check"
 fi
 
 # --- Tests only: an S3-protocol server (moto's server mode, from PyPI) for the blob store ---
 if [ "$want_tests" = 1 ]; then
-  s3_venv="$cache/s3-venv"
-  moto_version="5.1.18"
-  if [ ! -x "$s3_venv/bin/moto_server" ] || ! "$s3_venv/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('moto') != '$moto_version')" 2>/dev/null; then
-    say "creating $s3_venv with moto[server]==$moto_version (S3 server for the tests) ..."
-    rm -rf "$s3_venv"
-    python3 -m venv "$s3_venv"
-    "$s3_venv/bin/python" -m pip install --quiet --disable-pip-version-check "moto[server]==$moto_version"
-    say "moto $moto_version ready in $s3_venv"
-  fi
+  pinned_venv "$cache/s3-venv" moto 5.1.18 "moto[server]==5.1.18" moto_server "the S3 server for the tests"
 fi
 
 # --- Tests only: PostgreSQL from Debian (the tests start throwaway clusters on loopback) ---
@@ -161,14 +160,7 @@ fi
 # --- The asset forge's CAD side: CadQuery, OpenSCAD, the MiniLM embedder's weights ---
 if [ "$want_cad" = 1 ]; then
   cad_venv="$cache/cad-venv"
-  cadquery_version="2.8.0"
-  if [ ! -x "$cad_venv/bin/python" ] || ! "$cad_venv/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('cadquery') != '$cadquery_version')" 2>/dev/null; then
-    say "creating $cad_venv with cadquery==$cadquery_version (1.8 GB, about a minute) ..."
-    rm -rf "$cad_venv"
-    python3 -m venv "$cad_venv"
-    "$cad_venv/bin/python" -m pip install --quiet --disable-pip-version-check "cadquery==$cadquery_version"
-    say "CadQuery $cadquery_version ready in $cad_venv"
-  fi
+  pinned_venv "$cad_venv" cadquery 2.8.0 "cadquery==2.8.0" "" "CadQuery (1.8 GB, about a minute)"
 
   # OpenSCAD, the second CAD language, from Debian.
   if ! command -v openscad >/dev/null 2>&1; then
