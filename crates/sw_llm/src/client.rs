@@ -437,6 +437,12 @@ fn usage_of(v: &Value) -> Option<(u64, u64)> {
     Some((get(&["prompt_tokens", "input_tokens"])?, get(&["completion_tokens", "output_tokens"]).unwrap_or(0)))
 }
 
+/// The arguments of a message's (or a streamed delta's) first tool call: how some servers
+/// answer structured output.
+fn tool_arguments(message: Option<&Value>) -> Option<String> {
+    message?.get("tool_calls")?.get(0)?.get("function")?.get("arguments")?.as_str().map(str::to_string)
+}
+
 /// The text of a message's `content`: a string, or an array of parts.
 fn content_text(c: &Value) -> Option<String> {
     match c {
@@ -472,16 +478,8 @@ fn parse_completion(text: &str) -> Result<Answer, AttemptError> {
         .and_then(|m| m.get("content"))
         .and_then(content_text)
         .filter(|s| !s.trim().is_empty())
-        .or_else(|| {
-            // Some servers answer structured output as a tool call.
-            message
-                .and_then(|m| m.get("tool_calls"))
-                .and_then(|t| t.get(0))
-                .and_then(|t| t.get("function"))
-                .and_then(|f| f.get("arguments"))
-                .and_then(Value::as_str)
-                .map(str::to_string)
-        })
+        // Some servers answer structured output as a tool call.
+        .or_else(|| tool_arguments(message))
         .or_else(|| choice.get("text").and_then(Value::as_str).map(str::to_string))
         .unwrap_or_default();
     if content.len() > MAX_ANSWER_BYTES {
@@ -544,14 +542,10 @@ fn read_stream(
             let piece = choice
                 .get("delta")
                 .and_then(|d| {
-                    d.get("content").and_then(content_text).filter(|s| !s.is_empty()).or_else(|| {
-                        d.get("tool_calls")
-                            .and_then(|t| t.get(0))
-                            .and_then(|t| t.get("function"))
-                            .and_then(|f| f.get("arguments"))
-                            .and_then(Value::as_str)
-                            .map(str::to_string)
-                    })
+                    d.get("content")
+                        .and_then(content_text)
+                        .filter(|s| !s.is_empty())
+                        .or_else(|| tool_arguments(Some(d)))
                 })
                 .or_else(|| choice.get("text").and_then(Value::as_str).map(str::to_string))
                 .unwrap_or_default();
