@@ -179,6 +179,10 @@ pub struct Recovered {
     pub failed: Vec<String>,
 }
 
+/// The PostgreSQL advisory lock key that serialises enqueues (any fixed 64-bit number;
+/// this one is "swqueue\0" in ASCII).
+const ENQUEUE_LOCK: i64 = 0x7377_7175_6575_6500;
+
 /// The columns [`Job::from_row`] reads (a macro so that statements stay `&'static str`).
 macro_rules! job_columns {
     () => {
@@ -190,11 +194,20 @@ impl Store {
     /// Adds a job to the queue unless the queue is full (checked and inserted atomically),
     /// with its `queued` event in the same transaction: no runner can claim the job, and
     /// append `started`, before the stream begins with `queued`.
+    ///
+    /// Enqueues are serialised, so the cap is exact: SQLite's writer lock does it (the
+    /// first statement writes), and on PostgreSQL a transaction-scoped advisory lock does —
+    /// under READ COMMITTED two transactions would otherwise both count the same free
+    /// place and both insert.
     pub async fn enqueue(&self, new: &NewJob, limits: QueueLimits) -> Result<Job> {
         let id = new_id();
         let now = now_ms();
         let options = new.options.to_string();
         let mut tx = self.pool.begin().await?;
+        if self.backend == crate::Backend::Postgres {
+            // Held until commit or rollback; the count below is a new snapshot taken after it.
+            sqlx::query("SELECT pg_advisory_xact_lock($1)").bind(ENQUEUE_LOCK).execute(&mut *tx).await?;
+        }
         let prompt_id = new_id();
         sqlx::query("INSERT INTO prompts (id, user_id, text, created_at) VALUES ($1, $2, $3, $4)")
             .bind(&prompt_id)

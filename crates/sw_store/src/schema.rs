@@ -46,7 +46,7 @@ const STATEMENTS: &[&str] = &[
         error TEXT,
         scene_id TEXT,
         completions INTEGER NOT NULL DEFAULT 0,
-        -- Arrival order (FIFO; ties, possible under concurrent PostgreSQL inserts, go by id).
+        -- Arrival order (FIFO; enqueues are serialised, so no ties; any would go by id).
         qseq INTEGER NOT NULL DEFAULT 0)",
     "CREATE INDEX IF NOT EXISTS jobs_state ON jobs(state, qseq)",
     "CREATE INDEX IF NOT EXISTS jobs_user ON jobs(user_id, state)",

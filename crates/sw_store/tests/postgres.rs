@@ -115,6 +115,7 @@ async fn the_store_on_postgresql() {
     on_postgres!(
         cluster,
         a_full_queue_refuses_and_stores_nothing,
+        concurrent_enqueues_never_overshoot_the_cap,
         concurrent_claimers_never_share_a_job,
         the_per_user_limit_lets_others_go_first,
         a_lost_runner_is_recovered_and_never_completes_twice,

@@ -24,6 +24,7 @@ macro_rules! on_sqlite {
 
 on_sqlite!(
     a_full_queue_refuses_and_stores_nothing,
+    concurrent_enqueues_never_overshoot_the_cap,
     concurrent_claimers_never_share_a_job,
     the_per_user_limit_lets_others_go_first,
     a_lost_runner_is_recovered_and_never_completes_twice,

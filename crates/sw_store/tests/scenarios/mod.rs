@@ -42,6 +42,37 @@ pub async fn a_full_queue_refuses_and_stores_nothing(s: &Store) {
     s.enqueue(&job(&u.id, "now there is room"), limits).await.unwrap();
 }
 
+/// Many enqueues at once against a small cap, in rounds (the queue emptied by cancelling
+/// between them): exactly `cap` are queued each time and every other one is refused as
+/// full — no overshoot from two transactions counting the same free places.
+pub async fn concurrent_enqueues_never_overshoot_the_cap(s: &Store) {
+    let u = s.create_user("ann", "h", None).await.unwrap();
+    let limits = QueueLimits { queue_cap: 5, per_user_running: 5 };
+    for round in 0..8 {
+        let mut tasks = Vec::new();
+        for i in 0..48 {
+            let (s, user) = (s.clone(), u.id.clone());
+            tasks.push(tokio::spawn(async move { s.enqueue(&job(&user, &format!("r{round} j{i}")), limits).await }));
+        }
+        let (mut queued, mut full) = (Vec::new(), 0);
+        for t in tasks {
+            match t.await.unwrap() {
+                Ok(j) => queued.push(j.id),
+                Err(StoreError::QueueFull { cap: 5 }) => full += 1,
+                Err(e) => panic!("round {round}: {e}"),
+            }
+        }
+        let waiting = s.all_jobs().await.unwrap().into_iter().filter(|j| j.state == JobState::Queued).count();
+        assert_eq!((queued.len(), full, waiting), (5, 43, 5), "round {round}");
+        for id in &queued {
+            assert_eq!(s.cancel(id, &u.id).await.unwrap(), Some(JobState::Cancelled));
+        }
+    }
+    // A refused job stored nothing: one prompt per queued job.
+    assert_eq!(s.count_rows(CountedTable::Jobs).await.unwrap(), 40);
+    assert_eq!(s.count_rows(CountedTable::Prompts).await.unwrap(), 40);
+}
+
 pub async fn concurrent_claimers_never_share_a_job(s: &Store) {
     let limits = QueueLimits { queue_cap: 1000, per_user_running: 1000 };
     let mut users = Vec::new();
