@@ -24,9 +24,10 @@ pub(crate) enum AssetsCommand {
         name: String,
         #[arg(long, default_value_t = 0)]
         seed: u64,
-        /// The asset store for ids (default: SCENEWRIGHT_ASSET_STORE or .cache/assets).
+        /// The asset store for ids: a directory or s3://bucket/prefix (default:
+        /// SCENEWRIGHT_ASSET_STORE or .cache/assets).
         #[arg(long)]
-        store: Option<PathBuf>,
+        store: Option<String>,
         #[arg(long)]
         json: bool,
     },
@@ -50,10 +51,10 @@ pub(crate) enum AssetsCommand {
         /// Skip the preview picture.
         #[arg(long)]
         no_preview: bool,
-        /// The asset store to put the part in (default: SCENEWRIGHT_ASSET_STORE or
-        /// .cache/assets in the checkout).
+        /// The asset store to put the part in: a directory or s3://bucket/prefix (default:
+        /// SCENEWRIGHT_ASSET_STORE or .cache/assets in the checkout).
         #[arg(long)]
-        store: Option<PathBuf>,
+        store: Option<String>,
         /// Do not store and index the part.
         #[arg(long)]
         no_store: bool,
@@ -65,8 +66,10 @@ pub(crate) enum AssetsCommand {
         query: String,
         #[arg(long, default_value_t = 5)]
         top: usize,
+        /// The asset store: a directory or s3://bucket/prefix (default:
+        /// SCENEWRIGHT_ASSET_STORE or .cache/assets).
         #[arg(long)]
-        store: Option<PathBuf>,
+        store: Option<String>,
         #[arg(long)]
         json: bool,
     },

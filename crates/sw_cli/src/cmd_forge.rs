@@ -30,7 +30,7 @@ pub(crate) fn generate(
     prompt: &str,
     out: PathBuf,
     no_preview: bool,
-    store: Option<PathBuf>,
+    store: Option<String>,
     no_store: bool,
     json: bool,
 ) -> Result<u8, Failure> {
@@ -95,16 +95,31 @@ pub(crate) fn generate(
     Ok(0)
 }
 
+/// A store location from the command line: an `s3://` URL or a directory.
+fn check_location(store: Option<String>) -> Result<String, Failure> {
+    let location = store.unwrap_or_else(sw_forge::library::default_store_location);
+    if location.contains("://") && !location.starts_with("s3://") {
+        return Err(Failure::input(format!("asset store {location}: give a directory or s3://bucket/prefix")));
+    }
+    if location.starts_with("s3://") && sw_forge::store_s3::S3Config::from_env().is_none() {
+        return Err(Failure::input(format!(
+            "asset store {location}: set SCENEWRIGHT_S3_ENDPOINT (and AWS_ACCESS_KEY_ID, AWS_SECRET_ACCESS_KEY) for an s3:// store"
+        )));
+    }
+    Ok(location)
+}
+
 /// The library at `store` (or the default one), with the embedder loaded.
-fn open_library(store: Option<PathBuf>) -> Result<sw_forge::library::AssetLibrary, Failure> {
-    let dir = store.unwrap_or_else(sw_forge::library::default_store_dir);
+fn open_library(store: Option<String>) -> Result<sw_forge::library::AssetLibrary, Failure> {
+    let location = check_location(store)?;
     let model = sw_forge::embed::MiniLm::load_default().map_err(|e| Failure::internal(e.to_string()))?;
-    sw_forge::library::AssetLibrary::open(&dir, model).map_err(|e| Failure::internal(format!("{}: {e}", dir.display())))
+    sw_forge::library::AssetLibrary::open_location(&location, model)
+        .map_err(|e| Failure::internal(format!("asset store {location}: {e}")))
 }
 
 /// Puts a generated part into the library (store and index).
 pub(crate) fn store_part(
-    store: Option<PathBuf>,
+    store: Option<String>,
     part: &sw_forge::part::GeneratedPart,
 ) -> Result<sw_forge::store::AssetRecord, Failure> {
     let lib = open_library(store)?;
@@ -121,7 +136,7 @@ struct SearchHit {
     source: Option<String>,
 }
 
-pub(crate) fn search(query: &str, k: usize, store: Option<PathBuf>, json: bool) -> Result<u8, Failure> {
+pub(crate) fn search(query: &str, k: usize, store: Option<String>, json: bool) -> Result<u8, Failure> {
     if query.trim().is_empty() {
         return Err(Failure::input("the query is empty"));
     }
@@ -132,7 +147,6 @@ pub(crate) fn search(query: &str, k: usize, store: Option<PathBuf>, json: bool) 
     let t = std::time::Instant::now();
     let hits = lib.search(query, k).map_err(|e| Failure::internal(e.to_string()))?;
     let ms = t.elapsed().as_secs_f64() * 1e3;
-    use sw_forge::store::AssetStore as _;
     let rows: Vec<SearchHit> = hits
         .iter()
         .map(|h| {
@@ -170,10 +184,10 @@ pub(crate) fn search(query: &str, k: usize, store: Option<PathBuf>, json: bool) 
 }
 
 /// `assets show ID` of a stored asset (an id or a unique prefix of at least 8 digits).
-pub(crate) fn show_stored(id: &str, store: Option<PathBuf>, json: bool) -> Result<u8, Failure> {
-    use sw_forge::store::{AssetStore as _, LocalStore, StoreError};
-    let dir = store.unwrap_or_else(sw_forge::library::default_store_dir);
-    let s = LocalStore::open(&dir).map_err(|e| Failure::internal(e.to_string()))?;
+pub(crate) fn show_stored(id: &str, store: Option<String>, json: bool) -> Result<u8, Failure> {
+    use sw_forge::store::StoreError;
+    let location = check_location(store)?;
+    let s = sw_forge::store::open_store(&location).map_err(|e| Failure::internal(e.to_string()))?;
     let id = s.resolve(id).map_err(|e| match e {
         StoreError::Io { .. } | StoreError::Corrupt { .. } => Failure::internal(e.to_string()),
         other => Failure::input(other.to_string()),

@@ -107,11 +107,10 @@ pub(crate) fn progress(json: bool) -> impl FnMut(&Event) {
 fn forge_source(client: &Client) -> Result<ForgeSource, String> {
     let runner = CadRunner::start(RunnerConfig::default()).map_err(|e| e.to_string())?;
     let source = ForgeSource::new(runner, Arc::new(LlmWriter::new(client.clone())), LoopConfig::default());
-    let dir = sw_forge::library::default_store_dir();
-    match sw_forge::embed::MiniLm::load_default()
-        .map_err(|e| e.to_string())
-        .and_then(|m| sw_forge::library::AssetLibrary::open(&dir, m).map_err(|e| format!("{}: {e}", dir.display())))
-    {
+    let location = sw_forge::library::default_store_location();
+    match sw_forge::embed::MiniLm::load_default().map_err(|e| e.to_string()).and_then(|m| {
+        sw_forge::library::AssetLibrary::open_location(&location, m).map_err(|e| format!("{location}: {e}"))
+    }) {
         Ok(library) => Ok(source.with_library(Arc::new(library))),
         Err(why) => {
             eprintln!("warning: generated parts are not stored for reuse: {why}");

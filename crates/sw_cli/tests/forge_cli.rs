@@ -62,6 +62,60 @@ fn assets_generate_writes_the_washer_of_the_issue() {
 }
 
 #[test]
+fn assets_go_to_an_s3_bucket_when_the_store_is_an_s3_url() {
+    let server = sw_s3::moto::MotoServer::start().unwrap();
+    let index = tempfile::tempdir().unwrap();
+    let out = tempfile::tempdir().unwrap();
+    let run_s3 = |args: &[&str]| {
+        let o = Command::new(BIN)
+            .args(args)
+            .env("SCENEWRIGHT_S3_ENDPOINT", format!("http://{}", server.addr()))
+            .env("AWS_ACCESS_KEY_ID", "testing")
+            .env("AWS_SECRET_ACCESS_KEY", "testing")
+            .env("SCENEWRIGHT_ASSET_INDEX", index.path())
+            .output()
+            .unwrap();
+        (
+            o.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&o.stdout).into_owned(),
+            String::from_utf8_lossy(&o.stderr).into_owned(),
+        )
+    };
+    let store = "s3://cli-assets/team/parts";
+    let prompt = "A rectangular block 40mm x 20mm x 10mm";
+    let (code, stdout, stderr) = run_s3(&[
+        "assets",
+        "generate",
+        prompt,
+        "--out",
+        out.path().to_str().unwrap(),
+        "--no-preview",
+        "--store",
+        store,
+        "--json",
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    let id = serde_json::from_str::<serde_json::Value>(&stdout).unwrap()["stored"].as_str().unwrap().to_string();
+    // In the bucket, under the prefix, by content address.
+    let raw = sw_s3::S3Client::new(server.config("cli-assets"));
+    assert!(raw.exists(&format!("team/parts/objects/{}/{id}.stl", &id[..2])).unwrap());
+    // Found by meaning with a fresh index (rebuilt from the bucket), shown by its prefix.
+    std::fs::remove_dir_all(index.path()).unwrap();
+    let (code, stdout, stderr) = run_s3(&["assets", "search", "a rectangular brick", "--store", store, "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(serde_json::from_str::<serde_json::Value>(&stdout).unwrap()["hits"][0]["id"], id.as_str());
+    let (code, stdout, stderr) = run_s3(&["assets", "show", &id[..12], "--store", store]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("template:box"), "{stdout}");
+    // Without an endpoint, an s3:// store is a one-line input error, not a crash.
+    let (code, _, stderr) = run(&["assets", "search", "brick", "--store", store]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("SCENEWRIGHT_S3_ENDPOINT") && stderr.trim().lines().count() == 1, "{stderr}");
+    let (code, _, stderr) = run(&["assets", "search", "brick", "--store", "ftp://x/y"]);
+    assert_eq!(code, 2, "{stderr}");
+}
+
+#[test]
 fn assets_generate_refuses_bad_prompts_with_one_line_and_exit_2() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("x");

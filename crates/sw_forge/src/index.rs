@@ -93,6 +93,22 @@ impl SemanticIndex {
         Ok(())
     }
 
+    /// Keeps the assets `keep` says yes to; returns how many were dropped.
+    pub fn retain(&mut self, mut keep: impl FnMut(&AssetId) -> bool) -> usize {
+        let before = self.entries.len();
+        let mut entries = Vec::with_capacity(before);
+        let mut vectors = Vec::with_capacity(self.vectors.len());
+        for (e, row) in self.entries.drain(..).zip(self.vectors.chunks_exact(self.dim)) {
+            if keep(&e.id) {
+                entries.push(e);
+                vectors.extend_from_slice(row);
+            }
+        }
+        self.entries = entries;
+        self.vectors = vectors;
+        before - self.entries.len()
+    }
+
     /// The `k` most similar assets to a unit query vector, best first.
     pub fn search(&self, query: &[f32], k: usize) -> Result<Vec<Hit>, IndexError> {
         if query.len() != self.dim {
@@ -210,6 +226,9 @@ mod tests {
         assert_eq!(hits[1].label, "xy");
         idx.upsert(AssetId::of(b"y"), "y again".into(), &[0.0, 0.0, 1.0]).unwrap();
         assert_eq!(idx.len(), 3);
+        let mut fewer = idx.clone();
+        assert_eq!(fewer.retain(|id| *id != AssetId::of(b"x")), 1);
+        assert_eq!(fewer.search(&[1.0, 0.0, 0.0], 1).unwrap()[0].label, "xy");
         let dir = tempfile::tempdir().unwrap();
         idx.save(dir.path()).unwrap();
         let back = SemanticIndex::load(dir.path(), 3).unwrap();

@@ -10,9 +10,11 @@
 //! - [`collision`]: convex collision pieces of generated parts (V-HACD), and parts as assets;
 //! - [`generate`]: the generation loop — a writer (LLM or template) writes, the runner
 //!   runs, the validator checks, failures go back to the writer, K attempts then fallback;
-//! - [`store`]: meshes and metadata by content address (a local directory; the trait for
-//!   an S3-compatible bucket); [`index`]: the semantic index over their labels;
-//!   `embed` (feature `embed`, on by default): all-MiniLM-L6-v2 on candle.
+//! - [`store`]: meshes and metadata by content address, in a local directory or
+//!   ([`store_s3`]) an S3-compatible bucket; [`index`]: the semantic index over their
+//!   labels; `embed` (feature `embed`, on by default): all-MiniLM-L6-v2 on candle;
+//!   `library`: the store, its index and the embedder together, with the size check
+//!   that decides whether a stored asset serves a request.
 
 pub mod collision;
 #[cfg(feature = "embed")]
@@ -25,7 +27,9 @@ pub mod library;
 pub mod mesh_io;
 pub mod metrics;
 pub mod part;
+pub mod reuse;
 pub mod runner;
 pub mod store;
+pub mod store_s3;
 pub mod synth;
 pub mod validate;

@@ -1,8 +1,9 @@
 //! The asset store: meshes and their metadata, addressed by the SHA-256 of the mesh
-//! bytes. [`AssetStore`] is the interface (an S3-compatible bucket can implement it with
-//! the same keys); [`LocalStore`] keeps objects in a directory:
+//! bytes. [`AssetStore`] is the interface; [`LocalStore`] keeps objects in a directory:
 //! `objects/<first two hex>/<hash>.stl` and `<hash>.json`, each written to a temporary
-//! file and renamed into place, so a reader never sees half an object.
+//! file and renamed into place, so a reader never sees half an object;
+//! [`S3Store`](crate::store_s3::S3Store) keeps the same keys in an S3-compatible bucket.
+//! [`open_store`] picks one from a location (a path, or `s3://bucket/prefix`).
 
 use std::path::{Path, PathBuf};
 
@@ -79,6 +80,8 @@ pub enum StoreError {
     Io { path: String, message: String },
     #[error("{path}: the stored mesh does not match its id (corrupt object)")]
     Corrupt { path: String },
+    #[error("'{0}' is not an asset store location (a directory, or s3://bucket/prefix)")]
+    BadLocation(String),
 }
 
 fn io(path: &Path, e: impl std::fmt::Display) -> StoreError {
@@ -94,6 +97,9 @@ pub trait AssetStore: Send + Sync {
     /// The mesh bytes, checked against the id.
     fn mesh(&self, id: &AssetId) -> Result<Vec<u8>, StoreError>;
     fn list(&self) -> Result<Vec<AssetId>, StoreError>;
+    /// Where the store is (a directory, `s3://bucket/prefix/`), for messages and for
+    /// naming a local cache of its index.
+    fn location(&self) -> String;
     /// The one id that starts with `prefix` (at least 4 hex digits).
     fn resolve(&self, prefix: &str) -> Result<AssetId, StoreError> {
         let p = prefix.trim().to_ascii_lowercase();
@@ -196,6 +202,22 @@ impl AssetStore for LocalStore {
         }
         ids.sort();
         Ok(ids)
+    }
+
+    fn location(&self) -> String {
+        self.root.display().to_string()
+    }
+}
+
+/// The store at `location`: `s3://bucket/prefix` (endpoint and credentials from the
+/// environment, see [`sw_s3::S3Config::from_env`]) or a local directory (created).
+pub fn open_store(location: &str) -> Result<std::sync::Arc<dyn AssetStore>, StoreError> {
+    if location.starts_with("s3://") {
+        Ok(std::sync::Arc::new(crate::store_s3::S3Store::open_url(location)?))
+    } else if location.contains("://") || location.trim().is_empty() {
+        Err(StoreError::BadLocation(location.to_string()))
+    } else {
+        Ok(std::sync::Arc::new(LocalStore::open(location)?))
     }
 }
 

@@ -7,8 +7,8 @@ use std::sync::OnceLock;
 
 use sw_forge::embed::{DIM, MiniLm};
 use sw_forge::index::{DEFAULT_THRESHOLD, evaluate};
-use sw_forge::library::AssetLibrary;
-use sw_forge::store::{AssetId, AssetRecord, AssetStore};
+use sw_forge::library::{AssetLibrary, Sync};
+use sw_forge::store::{AssetId, AssetRecord, AssetStore, LocalStore};
 
 fn model() -> &'static MiniLm {
     static M: OnceLock<MiniLm> = OnceLock::new();
@@ -79,14 +79,76 @@ fn a_library_stores_indexes_persists_and_reuses() {
     let rack = lib.add(b"rack mesh", record("shelving unit")).unwrap();
     lib.add(b"mug mesh", record("coffee mug")).unwrap();
     lib.add(b"cone mesh", record("traffic cone")).unwrap();
-    let hit = lib.lookup("storage rack").unwrap().expect("a shelving unit serves a storage rack");
-    assert_eq!(hit.id, rack.id);
-    assert!(lib.lookup("self-driving car").unwrap().is_none());
+    let hit = lib.lookup("storage rack", None).unwrap().expect("a shelving unit serves a storage rack");
+    assert_eq!(hit.hit.id, rack.id);
+    assert!(lib.lookup("self-driving car", None).unwrap().is_none());
     drop(lib);
     // Reopened from disk: the same index.
     let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
     assert_eq!(lib.len(), 3);
+    assert_eq!(lib.opened_with(), Sync::default());
     assert_eq!(lib.search("mug", 1).unwrap()[0].label, "coffee mug");
     assert_eq!(lib.store().mesh(&rack.id).unwrap(), b"rack mesh");
     assert!(lib.search("   ", 1).is_err());
+}
+
+fn record(label: &str, size_m: [f64; 3]) -> AssetRecord {
+    AssetRecord {
+        id: AssetId::of(b""),
+        label: label.into(),
+        description: label.into(),
+        source: "test".into(),
+        size_m,
+        triangles: 12,
+        code: None,
+        extra: serde_json::Value::Null,
+    }
+}
+
+#[test]
+fn reuse_needs_a_size_that_fits_as_well_as_a_label() {
+    let dir = tempfile::tempdir().unwrap();
+    let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
+    let tall = lib.add(b"tall rack", record("shelving unit", [1.0, 0.5, 2.0])).unwrap();
+    let low = lib.add(b"low rack", record("metal storage rack", [1.2, 0.4, 0.6])).unwrap();
+    // A storage rack of the tall one's proportions, slightly smaller: the tall one, scaled.
+    let r = lib.lookup("storage rack", Some([0.9, 0.45, 1.8])).unwrap().expect("fits");
+    assert_eq!(r.record.id, tall.id);
+    let fit = r.fit.unwrap();
+    assert!((fit.overall - 0.9).abs() < 1e-9 && !fit.quarter_turn, "{fit:?}");
+    // Asked for low and wide: only the low one fits.
+    let r = lib.lookup("storage rack", Some([1.1, 0.4, 0.55])).unwrap().expect("the low one fits");
+    assert_eq!(r.record.id, low.id);
+    // Turned a quarter: still the tall one.
+    let r = lib.lookup("storage rack", Some([0.5, 1.0, 2.0])).unwrap().expect("fits turned");
+    assert_eq!(r.record.id, tall.id);
+    assert!(r.fit.unwrap().quarter_turn);
+    // Nothing stored has a car's proportions, whatever the label says.
+    assert!(lib.lookup("storage rack", Some([4.5, 1.8, 1.5])).unwrap().is_none());
+    assert!(lib.lookup("storage rack", Some([10.0, 5.0, 20.0])).unwrap().is_none(), "ten times larger");
+}
+
+#[test]
+fn opening_brings_the_index_up_to_date_with_the_store() {
+    let dir = tempfile::tempdir().unwrap();
+    let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
+    let mug = lib.add(b"mug", record("coffee mug", [0.1, 0.1, 0.1])).unwrap();
+    drop(lib);
+    // Another process puts assets straight into the store and removes one.
+    let store = LocalStore::open(dir.path()).unwrap();
+    let cone = store.put(b"cone", record("traffic cone", [0.3, 0.3, 0.5])).unwrap();
+    store.put(b"crate", record("wooden crate", [0.5, 0.4, 0.3])).unwrap();
+    let shard = dir.path().join("objects").join(&mug.id.as_str()[..2]);
+    std::fs::remove_file(shard.join(format!("{}.json", mug.id))).unwrap();
+    let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
+    assert_eq!(lib.opened_with(), Sync { added: 2, dropped: 1, rebuilt: false });
+    assert_eq!(lib.len(), 2);
+    assert_eq!(lib.lookup("road cone", None).unwrap().unwrap().record.id, cone.id);
+    assert!(lib.search("coffee mug", 2).unwrap().iter().all(|h| h.id != mug.id));
+    drop(lib);
+    // A damaged index is rebuilt from the store, not fatal.
+    std::fs::write(dir.path().join("index.bin"), b"garbage").unwrap();
+    let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
+    assert_eq!(lib.opened_with(), Sync { added: 2, dropped: 0, rebuilt: true });
+    assert_eq!(lib.lookup("road cone", None).unwrap().unwrap().record.id, cone.id);
 }

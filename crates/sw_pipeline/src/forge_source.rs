@@ -11,7 +11,7 @@ use std::sync::{Arc, Mutex};
 use sw_forge::generate::{CodeWriter, ForgeOutcome, LoopConfig, PartRequest, forge};
 use sw_forge::library::AssetLibrary;
 use sw_forge::runner::CadRunner;
-use sw_forge::store::{AssetId, AssetRecord, AssetStore as _};
+use sw_forge::store::{AssetId, AssetRecord};
 use sw_geom::{Asset, PlacementKind};
 use sw_plan::ObjectPlan;
 
@@ -43,18 +43,24 @@ impl ForgeSource {
         self
     }
 
-    /// A stored asset that serves this label, as an asset.
-    fn reuse(&self, label: &str, movable: bool) -> Option<(Asset, String)> {
+    /// A stored asset that serves this label at this size (metres), fitted to the size.
+    fn reuse(&self, label: &str, size_m: [f64; 3], movable: bool) -> Option<(Asset, String)> {
         let lib = self.library.as_ref()?;
-        let hit = lib.lookup(label).ok()??;
-        let bytes = lib.store().mesh(&hit.id).ok()?;
-        let mesh = sw_geom::read_stl(bytes.as_slice()).ok()?;
-        let rec = lib.store().record(&hit.id).ok()?;
-        let mass = rec.extra.get("mass_kg").and_then(serde_json::Value::as_f64).filter(|_| movable);
+        let found = lib.lookup(label, Some(size_m)).ok()??;
+        let bytes = lib.store().mesh(&found.hit.id).ok()?;
+        let mut mesh = sw_geom::read_stl(bytes.as_slice()).ok()?;
+        let mut mass = found.record.extra.get("mass_kg").and_then(serde_json::Value::as_f64).filter(|_| movable);
+        let mut how = String::new();
+        if let Some(fit) = &found.fit {
+            mesh = sw_forge::reuse::apply_fit(&mesh, fit);
+            // Mass goes with volume.
+            mass = mass.map(|m| m * fit.scale.iter().product::<f64>());
+            how = format!(", scaled ×{:.2}{}", fit.overall, if fit.quarter_turn { ", turned 90°" } else { "" });
+        }
         let placement = if movable { PlacementKind::OnSurface } else { PlacementKind::Floor };
         let a =
             sw_forge::collision::part_asset(&format!("generated_{}", label.replace(' ', "_")), &mesh, mass, placement);
-        Some((a, format!("{} ({:.2})", hit.label, hit.score)))
+        Some((a, format!("{}\" ({:.2}{how})", found.hit.label, found.hit.score)))
     }
 
     fn cached(&self, key: &str) -> Option<Asset> {
@@ -83,25 +89,22 @@ impl AssetSource for ForgeSource {
         let mut out = CatalogSource.make(group, seed);
         let Some(proxy) = &group.proxy else { return out };
         let key = asset_key(group);
-        let asset = match self.cached(&key) {
-            Some(a) => a,
-            None if self.reuse(&proxy.label, proxy.movable).is_some() => {
-                let Some((a, what)) = self.reuse(&proxy.label, proxy.movable) else { return out };
+        let size_m = [proxy.size.width, proxy.size.depth, proxy.size.height];
+        let cached = self.cached(&key);
+        let reused = if cached.is_none() { self.reuse(&proxy.label, size_m, proxy.movable) } else { None };
+        let asset = match (cached, reused) {
+            (Some(a), _) => a,
+            (None, Some((a, what))) => {
                 if let Ok(mut m) = self.made.lock() {
                     m.insert(key, a.clone());
                 }
-                out.warnings.push(forge_warning(
-                    "asset_reused",
-                    format!("{}: reused the stored asset \"{what}\"", group.phrase),
-                ));
+                out.warnings
+                    .push(forge_warning("asset_reused", format!("{}: reused the stored asset \"{what}", group.phrase)));
                 a
             }
-            None => {
+            (None, None) => {
                 out.cached = false;
-                let request = PartRequest {
-                    description: proxy.label.clone(),
-                    size_m: Some([proxy.size.width, proxy.size.depth, proxy.size.height]),
-                };
+                let request = PartRequest { description: proxy.label.clone(), size_m: Some(size_m) };
                 let outcome = forge(&self.runner, self.writer.as_ref(), &request, self.config);
                 out.llm_calls.extend(self.writer.take_calls());
                 match outcome {

@@ -1,289 +1,53 @@
-//! Blobs in an S3-compatible object store (AWS S3, MinIO, moto, …): path-style requests
-//! signed with AWS Signature Version 4, over `ureq`. Written here (SigV4 is a page of
-//! code) so that the store needs no AWS SDK.
-
-use std::io::Read;
-use std::time::{Duration, SystemTime, UNIX_EPOCH};
-
-use sha2::{Digest, Sha256};
+//! Package blobs in an S3-compatible bucket, through `sw_s3`'s signed client. Keys are
+//! checked like the local store's before any request.
 
 use crate::blob::{BlobError, BlobStore, check_key};
-
-/// Where the bucket is and who may use it.
-#[derive(Clone)]
-pub struct S3Config {
-    /// `http://127.0.0.1:9000` or `https://s3.eu-west-1.amazonaws.com` (no trailing slash).
-    pub endpoint: String,
-    pub bucket: String,
-    pub region: String,
-    pub access_key: String,
-    pub secret_key: String,
-}
-
-impl std::fmt::Debug for S3Config {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("S3Config")
-            .field("endpoint", &self.endpoint)
-            .field("bucket", &self.bucket)
-            .field("region", &self.region)
-            .finish_non_exhaustive()
-    }
-}
-
-impl S3Config {
-    /// From `SCENEWRIGHT_S3_ENDPOINT`, `SCENEWRIGHT_S3_BUCKET`, `SCENEWRIGHT_S3_REGION`
-    /// (default us-east-1), `AWS_ACCESS_KEY_ID` and `AWS_SECRET_ACCESS_KEY`; `None` when no
-    /// endpoint is set.
-    pub fn from_env() -> Option<Self> {
-        let var = |k: &str| std::env::var(k).ok().filter(|v| !v.is_empty());
-        let endpoint = var("SCENEWRIGHT_S3_ENDPOINT")?;
-        Some(Self {
-            endpoint: endpoint.trim_end_matches('/').to_string(),
-            bucket: var("SCENEWRIGHT_S3_BUCKET").unwrap_or_else(|| "scenewright".into()),
-            region: var("SCENEWRIGHT_S3_REGION").unwrap_or_else(|| "us-east-1".into()),
-            access_key: var("AWS_ACCESS_KEY_ID").unwrap_or_default(),
-            secret_key: var("AWS_SECRET_ACCESS_KEY").unwrap_or_default(),
-        })
-    }
-}
+use sw_s3::{S3Client, S3Config, S3Error};
 
 /// A bucket as a blob store.
 #[derive(Debug, Clone)]
 pub struct S3Blobs {
-    config: S3Config,
-    agent: ureq::Agent,
+    client: S3Client,
 }
 
-fn io(msg: impl Into<String>) -> BlobError {
-    BlobError::Io(std::io::Error::other(msg.into()))
+fn io(e: S3Error) -> BlobError {
+    BlobError::Io(std::io::Error::other(e.to_string()))
 }
 
 impl S3Blobs {
     pub fn new(config: S3Config) -> Self {
-        let agent: ureq::Agent = ureq::Agent::config_builder()
-            .http_status_as_error(false)
-            .timeout_global(Some(Duration::from_secs(60)))
-            .build()
-            .into();
-        Self { config, agent }
+        Self { client: S3Client::new(config) }
     }
 
     /// Creates the bucket if it does not exist.
     pub fn ensure_bucket(&self) -> Result<(), BlobError> {
-        let (status, body) = self.request("PUT", "", &[], &[])?;
-        // 409 BucketAlreadyOwnedByYou / BucketAlreadyExists: fine.
-        if (200..300).contains(&status) || status == 409 {
-            Ok(())
-        } else {
-            Err(io(format!(
-                "creating bucket {}: HTTP {status}: {}",
-                self.config.bucket,
-                String::from_utf8_lossy(&body)
-            )))
-        }
+        self.client.ensure_bucket().map_err(io)
     }
 
-    /// One signed request; `key` is empty for the bucket itself.
-    fn request(
-        &self,
-        method: &str,
-        key: &str,
-        query: &[(&str, String)],
-        body: &[u8],
-    ) -> Result<(u16, Vec<u8>), BlobError> {
-        let c = &self.config;
-        let path = if key.is_empty() {
-            format!("/{}", uri_encode(&c.bucket, false))
-        } else {
-            format!("/{}/{}", uri_encode(&c.bucket, false), uri_encode(key, false))
-        };
-        let mut q: Vec<(String, String)> =
-            query.iter().map(|(k, v)| (uri_encode(k, true), uri_encode(v, true))).collect();
-        q.sort();
-        let query_string = q.iter().map(|(k, v)| format!("{k}={v}")).collect::<Vec<_>>().join("&");
-        let host = c.endpoint.split("://").nth(1).unwrap_or(&c.endpoint).split('/').next().unwrap_or("").to_string();
-        let (amz_date, date) = amz_dates(SystemTime::now());
-        let payload_hash = hex(&Sha256::digest(body));
-        let canonical = format!(
-            "{method}\n{path}\n{query_string}\nhost:{host}\nx-amz-content-sha256:{payload_hash}\nx-amz-date:{amz_date}\n\nhost;x-amz-content-sha256;x-amz-date\n{payload_hash}"
-        );
-        let scope = format!("{date}/{}/s3/aws4_request", c.region);
-        let to_sign = format!("AWS4-HMAC-SHA256\n{amz_date}\n{scope}\n{}", hex(&Sha256::digest(canonical.as_bytes())));
-        let k_date = hmac(format!("AWS4{}", c.secret_key).as_bytes(), date.as_bytes());
-        let k_region = hmac(&k_date, c.region.as_bytes());
-        let k_service = hmac(&k_region, b"s3");
-        let k_signing = hmac(&k_service, b"aws4_request");
-        let signature = hex(&hmac(&k_signing, to_sign.as_bytes()));
-        let auth = format!(
-            "AWS4-HMAC-SHA256 Credential={}/{scope}, SignedHeaders=host;x-amz-content-sha256;x-amz-date, Signature={signature}",
-            c.access_key
-        );
-        let url = if query_string.is_empty() {
-            format!("{}{path}", c.endpoint)
-        } else {
-            format!("{}{path}?{query_string}", c.endpoint)
-        };
-        let req = ureq::http::Request::builder()
-            .method(method)
-            .uri(&url)
-            .header("x-amz-date", &amz_date)
-            .header("x-amz-content-sha256", &payload_hash)
-            .header("authorization", auth)
-            .body(body.to_vec())
-            .map_err(|e| io(format!("{method} {url}: {e}")))?;
-        let mut resp = self.agent.run(req).map_err(|e| io(format!("{method} {url}: {e}")))?;
-        let status = resp.status().as_u16();
-        let mut out = Vec::new();
-        resp.body_mut()
-            .as_reader()
-            .read_to_end(&mut out)
-            .map_err(|e| io(format!("{method} {url}: reading the answer: {e}")))?;
-        Ok((status, out))
-    }
-
-    fn fail(what: &str, key: &str, status: u16, body: &[u8]) -> BlobError {
-        io(format!(
-            "S3 {what} {key}: HTTP {status}: {}",
-            String::from_utf8_lossy(body).chars().take(300).collect::<String>()
-        ))
-    }
-
-    /// Keys under a prefix (every page of ListObjectsV2).
+    /// Keys under a prefix.
     pub fn list(&self, prefix: &str) -> Result<Vec<String>, BlobError> {
-        let mut keys = Vec::new();
-        let mut token: Option<String> = None;
-        loop {
-            let mut q = vec![("list-type", "2".to_string()), ("prefix", prefix.to_string())];
-            if let Some(t) = &token {
-                q.push(("continuation-token", t.clone()));
-            }
-            let (status, body) = self.request("GET", "", &q, &[])?;
-            if status != 200 {
-                return Err(Self::fail("list", prefix, status, &body));
-            }
-            let text = String::from_utf8_lossy(&body).into_owned();
-            let doc = roxmltree::Document::parse(&text).map_err(|e| io(format!("S3 list {prefix}: {e}")))?;
-            for n in doc.descendants().filter(|n| n.has_tag_name("Key")) {
-                if let Some(k) = n.text() {
-                    keys.push(k.to_string());
-                }
-            }
-            let truncated = doc.descendants().any(|n| n.has_tag_name("IsTruncated") && n.text() == Some("true"));
-            token = doc
-                .descendants()
-                .find(|n| n.has_tag_name("NextContinuationToken"))
-                .and_then(|n| n.text())
-                .map(str::to_string);
-            if !truncated || token.is_none() {
-                return Ok(keys);
-            }
-        }
+        self.client.list(prefix).map_err(io)
     }
 }
 
 impl BlobStore for S3Blobs {
     fn put(&self, key: &str, data: &[u8]) -> Result<(), BlobError> {
         check_key(key)?;
-        // A PUT replaces the object atomically: readers see the old or the new bytes.
-        let (status, body) = self.request("PUT", key, &[], data)?;
-        if (200..300).contains(&status) { Ok(()) } else { Err(Self::fail("put", key, status, &body)) }
+        self.client.put(key, data).map_err(io)
     }
 
     fn get(&self, key: &str) -> Result<Option<Vec<u8>>, BlobError> {
         check_key(key)?;
-        let (status, body) = self.request("GET", key, &[], &[])?;
-        match status {
-            200 => Ok(Some(body)),
-            // NoSuchKey is "no such blob"; NoSuchBucket is a misconfiguration.
-            404 if !String::from_utf8_lossy(&body).contains("NoSuchBucket") => Ok(None),
-            s => Err(Self::fail("get", key, s, &body)),
-        }
+        self.client.get(key).map_err(io)
     }
 
     fn delete_prefix(&self, prefix: &str) -> Result<(), BlobError> {
         check_key(prefix)?;
+        // `scenes/abc/` must not take `scenes/abcd/` with it.
         let prefix = format!("{}/", prefix.trim_end_matches('/'));
-        for key in self.list(&prefix)? {
-            let (status, body) = self.request("DELETE", &key, &[], &[])?;
-            if !(200..300).contains(&status) && status != 404 {
-                return Err(Self::fail("delete", &key, status, &body));
-            }
+        for key in self.client.list(&prefix).map_err(io)? {
+            self.client.delete(&key).map_err(io)?;
         }
         Ok(())
-    }
-}
-
-/// RFC 3986 encoding as SigV4 wants it (`/` kept in paths, encoded in query values).
-fn uri_encode(s: &str, encode_slash: bool) -> String {
-    let mut out = String::with_capacity(s.len());
-    for b in s.bytes() {
-        match b {
-            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'_' | b'.' | b'~' => out.push(b as char),
-            b'/' if !encode_slash => out.push('/'),
-            _ => out.push_str(&format!("%{b:02X}")),
-        }
-    }
-    out
-}
-
-fn hex(b: &[u8]) -> String {
-    b.iter().map(|x| format!("{x:02x}")).collect()
-}
-
-fn hmac(key: &[u8], msg: &[u8]) -> Vec<u8> {
-    const BLOCK: usize = 64;
-    let mut k = if key.len() > BLOCK { Sha256::digest(key).to_vec() } else { key.to_vec() };
-    k.resize(BLOCK, 0);
-    let ipad: Vec<u8> = k.iter().map(|b| b ^ 0x36).collect();
-    let opad: Vec<u8> = k.iter().map(|b| b ^ 0x5c).collect();
-    let inner = Sha256::new().chain_update(&ipad).chain_update(msg).finalize();
-    Sha256::new().chain_update(&opad).chain_update(inner).finalize().to_vec()
-}
-
-/// `20260102T030405Z` and `20260102` for a time.
-fn amz_dates(t: SystemTime) -> (String, String) {
-    let secs = t.duration_since(UNIX_EPOCH).map(|d| d.as_secs()).unwrap_or(0) as i64;
-    let days = secs.div_euclid(86_400);
-    let rem = secs.rem_euclid(86_400);
-    // Civil date from days since 1970-01-01 (Howard Hinnant's algorithm).
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z.rem_euclid(146_097);
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = doy - (153 * mp + 2) / 5 + 1;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 };
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    let date = format!("{y:04}{m:02}{d:02}");
-    (format!("{date}T{:02}{:02}{:02}Z", rem / 3600, rem % 3600 / 60, rem % 60), date)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn hmac_sha256_matches_rfc_4231() {
-        // RFC 4231 test case 2.
-        let mac = hmac(b"Jefe", b"what do ya want for nothing?");
-        assert_eq!(hex(&mac), "5bdcc146bf60754e6a042426089575c75a003f089d2739839dec58b964ec3843");
-    }
-
-    #[test]
-    fn dates_are_utc_calendar_dates() {
-        let t = UNIX_EPOCH + Duration::from_secs(1_700_000_000);
-        assert_eq!(amz_dates(t), ("20231114T221320Z".to_string(), "20231114".to_string()));
-        assert_eq!(amz_dates(UNIX_EPOCH + Duration::from_secs(951_782_400)).1, "20000229");
-    }
-
-    #[test]
-    fn the_signing_key_matches_aws_documentation() {
-        // docs.aws.amazon.com "Examples of how to derive a signing key for Signature Version 4".
-        let k_date = hmac(b"AWS4wJalrXUtnFEMI/K7MDENG+bPxRfiCYEXAMPLEKEY", b"20120215");
-        let k_region = hmac(&k_date, b"us-east-1");
-        let k_service = hmac(&k_region, b"iam");
-        let k_signing = hmac(&k_service, b"aws4_request");
-        assert_eq!(hex(&k_signing), "f4780e2d9f65fa895f9c67b32ce1baf0b0d8a43505a000a1a9e090d414db404d");
     }
 }

@@ -31,10 +31,11 @@ use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode};
 use sqlx::{ConnectOptions, Connection};
 
 pub use blob::{BlobError, BlobStore, LocalBlobs, check_key};
-pub use blob_s3::{S3Blobs, S3Config};
+pub use blob_s3::S3Blobs;
 pub use ids::{is_id, new_id, new_secret, now_ms};
 pub use jobs::{Claim, Job, JobKind, JobState, NewJob, QueueLimits, Recovered};
 pub use scenes::{Asset, EditRecord, NewScene, Scene, StageStat, Telemetry};
+pub use sw_s3::S3Config;
 pub use users::{CountedTable, Role, User};
 
 /// What can go wrong in the store.

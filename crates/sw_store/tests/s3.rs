@@ -1,53 +1,13 @@
 //! The S3 blob store against a real S3-protocol server: moto's server mode, installed from
-//! PyPI by `scripts/setup.sh --tests` into `.cache/s3-venv` and started here on loopback.
-//! (moto checks the protocol, not the signatures; the signer is checked against AWS's
-//! published values in the unit tests.)
+//! PyPI by `scripts/setup.sh --tests` and started on loopback (`sw_s3::moto`).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use std::net::{SocketAddr, TcpListener, TcpStream};
-use std::path::PathBuf;
-use std::process::{Child, Command, Stdio};
-use std::time::Duration;
+use sw_s3::moto::MotoServer;
+use sw_store::{BlobStore, S3Blobs};
 
-use sw_store::{BlobStore, S3Blobs, S3Config};
-
-struct Moto(Child);
-
-impl Drop for Moto {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
-
-fn moto() -> (Moto, SocketAddr) {
-    let bin = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../.cache/s3-venv/bin/moto_server");
-    assert!(bin.exists(), "{} is missing: run scripts/setup.sh --tests", bin.display());
-    let port = TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
-    let mut child = Command::new(&bin)
-        .args(["-H", "127.0.0.1", "-p", &port.to_string()])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let addr: SocketAddr = format!("127.0.0.1:{port}").parse().unwrap();
-    // Until it listens (or dies).
-    while TcpStream::connect(addr).is_err() {
-        assert!(child.try_wait().unwrap().is_none(), "moto_server exited");
-        std::thread::sleep(Duration::from_millis(50));
-    }
-    (Moto(child), addr)
-}
-
-fn blobs(addr: SocketAddr, bucket: &str) -> S3Blobs {
-    let b = S3Blobs::new(S3Config {
-        endpoint: format!("http://{addr}"),
-        bucket: bucket.into(),
-        region: "us-east-1".into(),
-        access_key: "testing".into(),
-        secret_key: "testing".into(),
-    });
+fn blobs(server: &MotoServer, bucket: &str) -> S3Blobs {
+    let b = S3Blobs::new(server.config(bucket));
     b.ensure_bucket().unwrap();
     b.ensure_bucket().unwrap();
     b
@@ -55,8 +15,8 @@ fn blobs(addr: SocketAddr, bucket: &str) -> S3Blobs {
 
 #[test]
 fn packages_round_trip_through_an_s3_server() {
-    let (_server, addr) = moto();
-    let b = blobs(addr, "scenes-test");
+    let server = MotoServer::start().unwrap();
+    let b = blobs(&server, "scenes-test");
     let xml = b"<mujoco model=\"scene\"/>".to_vec();
     let stl: Vec<u8> = (0..200_000u32).map(|i| (i * 7 % 251) as u8).collect();
     b.put("scenes/abc/scene.xml", &xml).unwrap();
@@ -89,14 +49,8 @@ fn packages_round_trip_through_an_s3_server() {
 
 #[test]
 fn a_missing_bucket_is_an_error_not_an_empty_answer() {
-    let (_server, addr) = moto();
-    let b = S3Blobs::new(S3Config {
-        endpoint: format!("http://{addr}"),
-        bucket: "never-created".into(),
-        region: "us-east-1".into(),
-        access_key: "testing".into(),
-        secret_key: "testing".into(),
-    });
+    let server = MotoServer::start().unwrap();
+    let b = S3Blobs::new(server.config("never-created"));
     assert!(b.get("scenes/x/scene.xml").is_err());
     assert!(b.put("scenes/x/scene.xml", b"x").is_err());
 }
