@@ -280,6 +280,8 @@ fn build_package(
     warnings.extend(work.warnings.iter().cloned());
     let mut rep = report::assemble(&work.plan, layout, pkg.layout.seed, warnings, Some(v));
     rep.llm_calls = pkg.report.llm_calls.clone();
+    // How the scene's assets came about is the generation's story.
+    rep.asset_cache = pkg.report.asset_cache;
     timings.total_ms = started.elapsed().as_secs_f64() * 1000.0;
     staging.write_report(&rep, timings)?;
     staging.commit()?;

@@ -395,6 +395,7 @@ pub(crate) fn run_from_plan(
     timings.total_ms = started.elapsed().as_secs_f64() * 1000.0;
     let mut report = report::assemble(&plan, &layout, opts.seed, warnings, verification);
     report.llm_calls = prepared.telemetry.map(|t| t.calls()).unwrap_or_default();
+    report.asset_cache = forged.cache;
     staging.write_report(&report, &timings)?;
     let out_dir = staging.commit()?;
     Ok(Outcome { plan, layout, report, timings, out_dir })

@@ -297,8 +297,17 @@ impl Workers {
             None => crate::forge::make(group, k, seed).map_err(|e| e.to_string()),
         });
         for g in &plan.objects {
-            if let Some(made) = results.get(&key(g)) {
-                forged.warnings.extend(made.warnings.iter().cloned());
+            match results.get(&key(g)) {
+                Some(made) => {
+                    forged.warnings.extend(made.warnings.iter().cloned());
+                    if made.cached {
+                        forged.cache.hits += 1;
+                    } else {
+                        forged.cache.misses += 1;
+                    }
+                }
+                // Made here from the catalog.
+                None => forged.cache.hits += 1,
             }
         }
         forged

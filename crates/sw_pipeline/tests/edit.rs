@@ -9,7 +9,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use sw_pipeline::{EditReader, Options, edit_package, generate};
-use sw_plan::{EditLog, LaidOutScene, PlacedObject, Status, Support};
+use sw_plan::{AssetCache, EditLog, LaidOutScene, PlacedObject, Status, Support};
 
 const PROMPT: &str = "a 10 by 8 m warehouse with a conveyor, a table with four boxes on it, three chairs next to the conveyor, a red cabinet and a shelf against the north wall";
 
@@ -17,6 +17,8 @@ fn scene(dir: &Path, name: &str) -> std::path::PathBuf {
     let out = dir.join(name);
     let o = generate(PROMPT, &out, &Options::default(), &mut |_| {}).unwrap();
     assert_eq!(o.report.status, Status::Verified);
+    // Offline, every group's assets come from the catalog: all hits.
+    assert_eq!(o.report.asset_cache, AssetCache { hits: o.plan.objects.len() as u32, misses: 0 });
     out
 }
 

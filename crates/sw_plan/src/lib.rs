@@ -28,7 +28,7 @@ pub use plan::{
     RelationKind, RobotPlan, RoomKind, RoomPlan, ScenePlan, SizeHint, SizeWord, Understanding,
 };
 pub use report::{
-    ContactCheck, DeepContact, ModelStats, MovedBody, Report, RobotCheck, SceneSummary, SettleCheck, StageTiming,
+    AssetCache, ContactCheck, DeepContact, ModelStats, MovedBody, Report, RobotCheck, SceneSummary, SettleCheck, StageTiming,
     Status, Timings, Verification,
 };
 pub use schema::{SchemaFile, schemas};

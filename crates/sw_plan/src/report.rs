@@ -29,6 +29,19 @@ pub struct Report {
     /// Every call to a language model the run made (absent for offline runs).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub llm_calls: Vec<LlmCall>,
+    /// How L2 came by the object groups' assets (read as zeros from older reports).
+    #[serde(default)]
+    pub asset_cache: AssetCache,
+}
+
+/// How L2 came by each object group's assets, counted in groups: a hit was at hand (the
+/// catalog, the asset library by meaning and size, or made earlier in the run); a miss
+/// had to be generated (or generation was tried and the group kept its proxy).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AssetCache {
+    pub hits: u32,
+    pub misses: u32,
 }
 
 impl Report {
@@ -47,6 +60,7 @@ impl Report {
             violations: Vec::new(),
             warnings: Vec::new(),
             llm_calls: Vec::new(),
+            asset_cache: AssetCache::default(),
         }
     }
 }

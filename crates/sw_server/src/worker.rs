@@ -332,18 +332,27 @@ async fn finish(state: &AppState, claim: &Claim, made: Made) -> Result<(), Strin
     .await
     .map_err(|e| e.to_string())??;
     let status = serde_json::to_value(made.report.status).ok().and_then(|v| v.as_str().map(str::to_string));
+    // An edited scene's report keeps its generation's calls and asset story; the job's own
+    // telemetry is the edit's calls, and only generation counts asset cache lookups.
+    let (calls, cache): (Vec<sw_plan::LlmCall>, _) = match &made.edit {
+        Some(edit) => {
+            (edit.get("llm_calls").and_then(|v| serde_json::from_value(v.clone()).ok()).unwrap_or_default(), None)
+        }
+        None => {
+            let c = made.report.asset_cache;
+            (made.report.llm_calls.clone(), Some((i64::from(c.hits), i64::from(c.misses))))
+        }
+    };
     let telemetry = Telemetry {
         stages: made.timings.stages.iter().map(|s| (stage_name(s.stage), s.ms)).collect(),
-        llm_calls: made
-            .report
-            .llm_calls
+        llm_calls: calls
             .iter()
             .map(|c| {
                 let stage = serde_json::to_value(c.stage).ok().and_then(|v| v.as_str().map(str::to_string));
                 (stage.unwrap_or_default(), c.latency_ms, c.tokens_in as i64, c.tokens_out as i64)
             })
             .collect(),
-        cache: None,
+        cache,
     };
     let new = NewScene {
         id: scene_id.clone(),
