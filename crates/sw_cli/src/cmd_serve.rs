@@ -9,6 +9,30 @@ use sw_store::QueueLimits;
 
 use crate::Failure;
 
+/// How the service writes its logs on stderr.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, clap::ValueEnum)]
+pub(crate) enum LogFormat {
+    /// Human-readable lines.
+    #[default]
+    Text,
+    /// One JSON object per line, with the fields of the spans it was logged in (a job's
+    /// lines carry `job`).
+    Json,
+}
+
+/// Starts the logger: the service's in its format at `info`, every other command's as text
+/// at `warn` (`SCENEWRIGHT_LOG` overrides the level, e.g. `debug` or `sw_server=trace`).
+pub(crate) fn init_logs(service: Option<LogFormat>) {
+    let default = if service.is_some() { "info,sqlx=warn" } else { "warn" };
+    let filter = tracing_subscriber::EnvFilter::try_from_env("SCENEWRIGHT_LOG")
+        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new(default));
+    let text = tracing_subscriber::fmt().with_env_filter(filter).with_writer(std::io::stderr).with_target(false);
+    match service.unwrap_or_default() {
+        LogFormat::Text => text.init(),
+        LogFormat::Json => text.json().flatten_event(true).with_current_span(true).with_span_list(true).init(),
+    }
+}
+
 /// Settings shared by `serve` and `worker`.
 #[derive(Debug, clap::Args)]
 pub(crate) struct QueueArgs {
@@ -38,9 +62,25 @@ pub(crate) struct QueueArgs {
     /// Claims of one job before it fails because its runners kept getting lost.
     #[arg(long, default_value_t = 3)]
     max_attempts: i64,
+    /// Logs on stderr as `text` or `json` (one object per line; also
+    /// SCENEWRIGHT_LOG_FORMAT; default text).
+    #[arg(long, value_name = "FORMAT")]
+    log_format: Option<LogFormat>,
 }
 
 impl QueueArgs {
+    /// `--log-format`, else SCENEWRIGHT_LOG_FORMAT, else text.
+    pub(crate) fn log_format(&self) -> Result<LogFormat, Failure> {
+        if let Some(f) = self.log_format {
+            return Ok(f);
+        }
+        match std::env::var("SCENEWRIGHT_LOG_FORMAT") {
+            Ok(v) if !v.is_empty() => <LogFormat as clap::ValueEnum>::from_str(&v, true)
+                .map_err(|_| Failure::input(format!("SCENEWRIGHT_LOG_FORMAT is '{v}'; it may be 'text' or 'json'"))),
+            _ => Ok(LogFormat::Text),
+        }
+    }
+
     fn database(&self) -> Option<String> {
         self.database.clone().or_else(|| std::env::var("SCENEWRIGHT_DATABASE_URL").ok().filter(|u| !u.is_empty()))
     }
@@ -55,16 +95,10 @@ impl QueueArgs {
             job_timeout_ms: (self.job_timeout.max(1) * 1000) as i64,
             max_attempts: self.max_attempts.max(1),
             work_dir: Some(self.data.join("work")),
-            // The SCENEWRIGHT_LLM_* environment: edits the grammar cannot read go to its model.
-            llm: match sw_llm::LlmConfig::from_env() {
-                Ok(c) => Some(c),
-                Err(e) => {
-                    eprintln!("warning: the LLM settings are unusable, edits use the offline grammar only: {e}");
-                    None
-                }
-            },
             ..RunnerConfig::default()
         }
+        // The SCENEWRIGHT_LLM_* environment: edits the grammar cannot read go to its model.
+        .with_llm_from_env()
     }
 }
 
@@ -80,10 +114,22 @@ pub(crate) struct ServeArgs {
     web: PathBuf,
 }
 
+impl ServeArgs {
+    pub(crate) fn log_format(&self) -> Result<LogFormat, Failure> {
+        self.queue.log_format()
+    }
+}
+
 #[derive(Debug, clap::Args)]
 pub(crate) struct WorkerArgs {
     #[command(flatten)]
     queue: QueueArgs,
+}
+
+impl WorkerArgs {
+    pub(crate) fn log_format(&self) -> Result<LogFormat, Failure> {
+        self.queue.log_format()
+    }
 }
 
 fn runtime() -> Result<tokio::runtime::Runtime, Failure> {
@@ -94,17 +140,21 @@ fn runtime() -> Result<tokio::runtime::Runtime, Failure> {
 }
 
 pub(crate) fn serve(a: ServeArgs) -> Result<u8, Failure> {
+    let format = a.log_format()?;
     let mut config = ServerConfig::new(a.addr, a.queue.data.clone());
     config.database_url = a.queue.database();
     config.workers = a.queue.workers;
     config.limits = a.queue.limits();
     config.runner = a.queue.runner();
     config.web_dir = Some(a.web);
+    // With JSON logs every stderr line is JSON: the address is the `serving` event's `addr`.
+    config.listen_line = format == LogFormat::Text;
     runtime()?.block_on(sw_server::serve(config)).map_err(|e| Failure::input(e.to_string()))?;
     Ok(0)
 }
 
 pub(crate) fn worker(a: WorkerArgs) -> Result<u8, Failure> {
+    a.log_format()?;
     let q = a.queue;
     runtime()?.block_on(async move {
         let (store, blobs) =
@@ -112,7 +162,6 @@ pub(crate) fn worker(a: WorkerArgs) -> Result<u8, Failure> {
         let state = AppState::new(store, blobs, q.limits(), q.runner(), 3600)
             .await
             .map_err(|e| Failure::internal(e.to_string()))?;
-        eprintln!("worker: {} runner(s) on {}", q.workers, q.data.display());
         sw_server::run_workers(state, q.workers, sw_server::shutdown_signal()).await;
         Ok::<_, Failure>(())
     })?;

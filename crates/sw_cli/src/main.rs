@@ -110,10 +110,6 @@ impl From<anyhow::Error> for Failure {
 }
 
 fn main() -> ExitCode {
-    let filter = tracing_subscriber::EnvFilter::try_from_env("SCENEWRIGHT_LOG")
-        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("warn"));
-    tracing_subscriber::fmt().with_env_filter(filter).with_writer(std::io::stderr).with_target(false).init();
-
     let args: Vec<OsString> = std::env::args_os().collect();
     let cli = match Cli::try_parse_from(&args) {
         Ok(c) => c,
@@ -128,6 +124,13 @@ fn main() -> ExitCode {
             return ExitCode::SUCCESS;
         }
     };
+    // The service logs in its --log-format (a bad SCENEWRIGHT_LOG_FORMAT is reported by
+    // the command); every other command logs warnings as text.
+    cmd_serve::init_logs(match &cli.command {
+        Command::Serve(a) => Some(a.log_format().unwrap_or_default()),
+        Command::Worker(a) => Some(a.log_format().unwrap_or_default()),
+        _ => None,
+    });
     // Ctrl-C or SIGTERM in the middle of a run: remove the half-written package. (The
     // service handles its own signals and shuts down gracefully.)
     let service = matches!(cli.command, Command::Serve(_) | Command::Worker(_));

@@ -1,5 +1,6 @@
-//! kill -9 of the server, and of a worker process, in the middle of jobs: no job is lost
-//! and none completes twice. Spawns the real `scenewright` binary.
+//! The service as processes (the real `scenewright` binary): kill -9 of the server, and of
+//! a worker process, in the middle of jobs loses no job and completes none twice; JSON logs
+//! carry the job id on every line about a job.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -7,7 +8,8 @@ use std::io::{BufRead, BufReader, Read, Write};
 use std::net::{SocketAddr, TcpStream};
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
-use std::time::Duration;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
 
 use serde_json::{Value, json};
 
@@ -308,4 +310,123 @@ fn held_by(data: &Path, database: Option<&str>, pid: u32) -> Vec<String> {
             .map(|j| j.id)
             .collect()
     })
+}
+
+/// A `scenewright serve --log-format json` whose stderr lines are collected.
+fn serve_json(data: &Path) -> (Child, SocketAddr, Arc<Mutex<Vec<String>>>) {
+    let mut child = Command::new(BIN)
+        .args(["serve", "--addr", "127.0.0.1:0", "--workers", "1", "--log-format", "json", "--data"])
+        .arg(data)
+        .env_remove("SCENEWRIGHT_LOG")
+        .env_remove("SCENEWRIGHT_LOG_FORMAT")
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let lines = Arc::new(Mutex::new(Vec::new()));
+    let (tx, rx) = std::sync::mpsc::channel();
+    let stderr = child.stderr.take().unwrap();
+    let sink = lines.clone();
+    std::thread::spawn(move || {
+        for line in BufReader::new(stderr).lines() {
+            let line = line.unwrap();
+            // The address is the `serving` event's field (no plain line in JSON mode).
+            if let Ok(v) = serde_json::from_str::<Value>(&line)
+                && v["message"] == "serving"
+            {
+                let _ = tx.send(v["addr"].as_str().unwrap().parse::<SocketAddr>().unwrap());
+            }
+            sink.lock().unwrap().push(line);
+        }
+    });
+    let addr = rx.recv_timeout(Duration::from_secs(60)).expect("serve logged no `serving` event with its address");
+    (child, addr, lines)
+}
+
+/// The span fields of a JSON log line's spans, outermost first.
+fn spans(line: &Value) -> Vec<Value> {
+    line["spans"].as_array().cloned().unwrap_or_default()
+}
+
+#[test]
+fn json_logs_are_one_object_per_line_and_carry_the_job_id() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("data");
+    let (mut server, addr, lines) = serve_json(&data);
+    let token = login(addr);
+    let ids = submit(addr, &token, 1);
+    let id = ids[0].as_str();
+    assert_eq!(wait_all_terminal(addr, &token)[0]["state"], "succeeded");
+    // The success line is written after the state changes; wait for it to reach the pipe.
+    let deadline = Instant::now() + Duration::from_secs(30);
+    while !lines.lock().unwrap().iter().any(|l| l.contains("job succeeded")) {
+        assert!(Instant::now() < deadline, "no `job succeeded` line: {:?}", lines.lock().unwrap());
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    kill9(&mut server);
+    let lines = lines.lock().unwrap().clone();
+    let records: Vec<Value> = lines
+        .iter()
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("not a JSON line ({e}): {l}")))
+        .collect();
+    for r in &records {
+        assert!(r.is_object() && r["level"].is_string() && r["message"].is_string(), "{r}");
+    }
+    // Lines logged in the job's span carry its id there; the queueing line names it itself.
+    let in_job = |r: &Value| spans(r).iter().any(|s| s["name"] == "job" && s["job"] == id);
+    let of_job: Vec<&Value> = records.iter().filter(|r| in_job(r) || r["job"] == id).collect();
+    let messages: Vec<&str> = of_job.iter().map(|r| r["message"].as_str().unwrap()).collect();
+    for m in ["job queued", "job started", "job succeeded"] {
+        assert!(messages.contains(&m), "no {m:?} line for the job in {messages:?}");
+    }
+    // The stages are logged on the pipeline's own thread: the job's span is entered there too.
+    for stage in ["plan", "forge", "layout", "bridge", "verify"] {
+        let line = records.iter().find(|r| r["message"] == "stage finished" && r["stage"] == stage);
+        let line = line.unwrap_or_else(|| panic!("no `stage finished` line for {stage}"));
+        assert!(in_job(line), "the {stage} line does not carry the job id: {line}");
+        assert!(line["ms"].as_f64().is_some(), "{line}");
+    }
+    // Every line in a job span is this job's (one job ran) and names its runner's attempt.
+    for r in records.iter().filter(|r| spans(r).iter().any(|s| s["name"] == "job")) {
+        assert!(in_job(r), "a job line without this job's id: {r}");
+        assert_eq!(spans(r)[0]["attempt"], 1, "{r}");
+    }
+}
+
+#[test]
+fn the_log_format_also_comes_from_the_environment_and_a_bad_one_is_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("data");
+    let out = Command::new(BIN)
+        .args(["worker", "--workers", "1", "--data"])
+        .arg(&data)
+        .env("SCENEWRIGHT_LOG_FORMAT", "yaml")
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("SCENEWRIGHT_LOG_FORMAT is 'yaml'; it may be 'text' or 'json'"), "{err}");
+    let out = Command::new(BIN).args(["serve", "--log-format", "yaml"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1);
+
+    // A worker started with SCENEWRIGHT_LOG_FORMAT=json logs JSON from its first line.
+    let mut w = Command::new(BIN)
+        .args(["worker", "--workers", "1", "--data"])
+        .arg(&data)
+        .env("SCENEWRIGHT_LOG_FORMAT", "json")
+        .env_remove("SCENEWRIGHT_LOG")
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = BufReader::new(w.stderr.take().unwrap()).lines();
+    let first = lines.next().expect("the worker logged nothing").unwrap();
+    kill9(&mut w);
+    let v: Value = serde_json::from_str(&first).unwrap_or_else(|e| panic!("not JSON ({e}): {first}"));
+    assert_eq!(v["message"], "job runners started", "{v}");
+    assert_eq!(v["runners"], 1, "{v}");
 }

@@ -55,6 +55,9 @@ pub struct ServerConfig {
     pub token_ttl_s: i64,
     /// The browser app's files, served at `/` when the directory exists.
     pub web_dir: Option<PathBuf>,
+    /// Print `listening on http://ADDR` on stderr, for scripts (off when every stderr line
+    /// must be a JSON log record; the `serving` event carries `addr` too).
+    pub listen_line: bool,
 }
 
 impl ServerConfig {
@@ -68,6 +71,7 @@ impl ServerConfig {
             runner: RunnerConfig::default(),
             token_ttl_s: 3600,
             web_dir: Some(PathBuf::from("web")),
+            listen_line: true,
         }
     }
 }
@@ -197,8 +201,10 @@ pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
         .map_err(|e| StartError::Io { path: config.addr.to_string(), source: e })?;
     let local = listener.local_addr().map_err(|e| StartError::Io { path: config.addr.to_string(), source: e })?;
     tracing::info!(addr = %local, workers = config.workers, "serving");
-    // Scripts (and the tests) read the address from this line.
-    eprintln!("listening on http://{local}");
+    if config.listen_line {
+        // Scripts (and the tests) read the address from this line.
+        eprintln!("listening on http://{local}");
+    }
     let runners = tokio::spawn(run_workers(state.clone(), config.workers, shutdown_signal()));
     axum::serve(listener, app)
         .with_graceful_shutdown(shutdown_signal())

@@ -38,6 +38,21 @@ impl Default for RunnerConfig {
     }
 }
 
+impl RunnerConfig {
+    /// The edit stage's model from the SCENEWRIGHT_LLM_* environment (as `scenewright
+    /// edit`); unusable settings are logged and leave the offline grammar only.
+    pub fn with_llm_from_env(self) -> Self {
+        let llm = match sw_llm::LlmConfig::from_env() {
+            Ok(c) => Some(c),
+            Err(e) => {
+                tracing::warn!(error = %e, "the LLM settings are unusable; edits use the offline grammar only");
+                None
+            }
+        };
+        Self { llm, ..self }
+    }
+}
+
 /// Runs `n` job runners and the recovery loop until `shutdown` resolves; each runner
 /// finishes the job it holds first (unless the process dies, when its lease expires and
 /// the job is run again elsewhere).
@@ -46,6 +61,7 @@ pub async fn run_workers(state: AppState, n: usize, shutdown: impl Future<Output
     let wake = state.wake.clone();
     let mut tasks = Vec::new();
     let process = format!("{}-{}", std::process::id(), &new_id()[..8]);
+    tracing::info!(runners = n, process = %process, "job runners started");
     for i in 0..n {
         let (state, stop) = (state.clone(), stop.clone());
         let name = format!("{process}-{i}");
@@ -127,35 +143,41 @@ async fn run_job(state: &AppState, claim: Claim) {
     let heartbeat = {
         let (store, claim, lost) = (state.store.clone(), claim.clone(), lost.clone());
         let lease = state.runner.lease_ms;
-        tokio::spawn(async move {
-            loop {
-                tokio::time::sleep(Duration::from_millis((lease / 3).max(10) as u64)).await;
-                match store.heartbeat(&claim, lease).await {
-                    Ok(true) => {}
-                    Ok(false) => {
-                        lost.store(true, Ordering::Relaxed);
-                        break;
+        tokio::spawn(
+            async move {
+                loop {
+                    tokio::time::sleep(Duration::from_millis((lease / 3).max(10) as u64)).await;
+                    match store.heartbeat(&claim, lease).await {
+                        Ok(true) => {}
+                        Ok(false) => {
+                            lost.store(true, Ordering::Relaxed);
+                            break;
+                        }
+                        Err(e) => tracing::warn!(error = %e, "heartbeat failed"),
                     }
-                    Err(e) => tracing::warn!(error = %e, "heartbeat failed"),
                 }
             }
-        })
+            .in_current_span(),
+        )
     };
 
     // Forward the pipeline's events as they come.
     let (tx, mut rx) = tokio::sync::mpsc::unbounded_channel::<Value>();
     let forwarder = {
         let (state, claim) = (state.clone(), claim.clone());
-        tokio::spawn(async move {
-            while let Some(ev) = rx.recv().await {
-                if ev["event"] == "stage_started"
-                    && let Some(stage) = ev["stage"].as_str()
-                {
-                    let _ = state.store.set_stage(&claim, stage).await;
+        tokio::spawn(
+            async move {
+                while let Some(ev) = rx.recv().await {
+                    if ev["event"] == "stage_started"
+                        && let Some(stage) = ev["stage"].as_str()
+                    {
+                        let _ = state.store.set_stage(&claim, stage).await;
+                    }
+                    emit(&state, &claim.job.id, ev).await;
                 }
-                emit(&state, &claim.job.id, ev).await;
             }
-        })
+            .in_current_span(),
+        )
     };
 
     let result = run_pipeline(state, &claim, tx, lost.clone()).await;
@@ -222,8 +244,12 @@ async fn run_pipeline(
     };
     let cancel = stop.clone();
     let llm = state.runner.llm.clone();
+    // The pipeline's thread logs in the job's span too (its stage spans nest in it).
+    let span = tracing::Span::current();
     let handle = tokio::task::spawn_blocking(move || {
+        let _job = span.enter();
         let mut on_event = |e: &Event| {
+            log_event(e);
             let _ = tx.send(serde_json::to_value(e).unwrap_or_else(|_| json!({"event": "note"})));
         };
         match job.kind {
@@ -255,6 +281,20 @@ async fn run_pipeline(
         Err(_) => {
             stop.store(true, Ordering::Relaxed);
             Err(format!("timed out after {} s", job.timeout_ms / 1000))
+        }
+    }
+}
+
+/// Logs a pipeline event (on the pipeline's thread, inside the job's span).
+fn log_event(e: &Event) {
+    match e {
+        Event::StageStarted { stage } => tracing::debug!(stage = %stage_name(*stage), "stage started"),
+        Event::StageFinished { stage, ms, summary } => {
+            tracing::info!(stage = %stage_name(*stage), ms = *ms, summary = %summary, "stage finished");
+        }
+        Event::Note { stage, message } => tracing::debug!(stage = %stage_name(*stage), message = %message, "note"),
+        Event::Object { stage, object, step } => {
+            tracing::debug!(stage = %stage_name(*stage), object = %object, step = %step, "object");
         }
     }
 }
@@ -366,7 +406,7 @@ async fn finish(state: &AppState, claim: &Claim, made: Made) -> Result<(), Strin
             .await;
     }
     if state.store.complete(claim, &new, &telemetry).await.map_err(|e| e.to_string())? {
-        tracing::info!(scene = %scene_id, status = ?status, "job succeeded");
+        tracing::info!(scene = %scene_id, status = status.as_deref().unwrap_or("unknown"), "job succeeded");
         let _ = state.events.send(claim.job.id.clone());
     } else {
         // Cancelled, timed out or taken over while we worked: our result is not the job's.
