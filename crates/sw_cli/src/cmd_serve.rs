@@ -162,8 +162,9 @@ pub(crate) fn worker(a: WorkerArgs) -> Result<u8, Failure> {
         let state = AppState::new(store, blobs, q.limits(), q.runner(), 3600)
             .await
             .map_err(|e| Failure::internal(e.to_string()))?;
-        sw_server::run_workers(state, q.workers, sw_server::shutdown_signal()).await;
-        Ok::<_, Failure>(())
+        sw_server::run_workers(state, q.workers, sw_server::shutdown_signal())
+            .await
+            .map_err(|e| Failure::input(e.to_string()))
     })?;
     Ok(0)
 }

@@ -1,6 +1,6 @@
 //! The service as processes (the real `scenewright` binary): kill -9 of the server, and of
-//! a worker process, in the middle of jobs loses no job and completes none twice; JSON logs
-//! carry the job id on every line about a job.
+//! a worker process, in the middle of jobs loses no job, completes none twice and leaves no
+//! scratch behind; JSON logs carry the job id on every line about a job.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -182,12 +182,16 @@ fn killing_the_server_mid_job_loses_nothing() {
     // Kill it while jobs run, until a kill caught at least one job running.
     while rerun.is_empty() {
         wait_until_one_runs(addr, &token);
+        let pid = server.id();
         kill9(&mut server);
+        assert!(scratch_owners(&data).contains(&pid), "the killed server left no scratch to clean");
         rerun = running_in_db(&data);
         (server, addr) = serve(&data, 2);
     }
     let done = wait_all_terminal(addr, &token);
     assert_eq!(done.len(), ids.len());
+    // Only the live server's scratch is left, and its jobs' scratch went with them.
+    assert_only_scratch_of(&data, &[server.id()]);
     kill9(&mut server);
     check_db(&data, &ids, &rerun);
 }
@@ -204,12 +208,16 @@ fn killing_a_worker_process_mid_job_loses_nothing() {
     let mut rerun = Vec::new();
     while rerun.is_empty() {
         wait_until_one_runs(addr, &token);
+        let pid = w.id();
         kill9(&mut w);
+        assert!(scratch_owners(&data).contains(&pid), "the killed worker left no scratch to clean");
         rerun = running_in_db(&data);
         w = worker(&data, 2);
     }
     let done = wait_all_terminal(addr, &token);
     assert_eq!(done.len(), ids.len());
+    // The HTTP-only server has no scratch; the killed workers' is gone.
+    assert_only_scratch_of(&data, &[w.id()]);
     kill9(&mut w);
     kill9(&mut server);
     check_db(&data, &ids, &rerun);
@@ -292,6 +300,7 @@ fn killing_a_worker_on_postgresql_loses_nothing() {
     }
     let done = wait_all_terminal(addr, &token);
     assert_eq!(done.len(), ids.len());
+    assert_only_scratch_of(&data, &[steady.id(), w.id()]);
     kill9(&mut w);
     kill9(&mut steady);
     kill9(&mut server);
@@ -429,4 +438,111 @@ fn the_log_format_also_comes_from_the_environment_and_a_bad_one_is_one_line() {
     let v: Value = serde_json::from_str(&first).unwrap_or_else(|e| panic!("not JSON ({e}): {first}"));
     assert_eq!(v["message"], "job runners started", "{v}");
     assert_eq!(v["runners"], 1, "{v}");
+}
+
+/// The process ids that own scratch under `DATA/work` (directories named `PID-…`).
+fn scratch_owners(data: &Path) -> Vec<u32> {
+    let Ok(entries) = std::fs::read_dir(data.join("work")) else { return Vec::new() };
+    let mut pids: Vec<u32> = entries
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_type().unwrap().is_dir())
+        .filter_map(|e| e.file_name().to_string_lossy().split('-').next().and_then(|p| p.parse().ok()))
+        .collect();
+    pids.sort();
+    pids
+}
+
+/// `DATA/work` holds exactly the scratch of `live` (a directory and its lock file each),
+/// with no job's scratch left inside once their jobs are done.
+fn assert_only_scratch_of(data: &Path, live: &[u32]) {
+    let mut want = live.to_vec();
+    want.sort();
+    assert_eq!(scratch_owners(data), want, "scratch of processes that are gone was left behind");
+    let work = data.join("work");
+    let deadline = Instant::now() + Duration::from_secs(10);
+    loop {
+        let mut names: Vec<String> =
+            std::fs::read_dir(&work).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        names.sort();
+        let dirs: Vec<&String> = names.iter().filter(|n| work.join(n).is_dir()).collect();
+        assert_eq!(names.len(), 2 * dirs.len(), "a directory and a lock each: {names:?}");
+        for d in &dirs {
+            assert!(names.contains(&format!("{d}.lock")), "{d} has no lock file: {names:?}");
+        }
+        // The last job's scratch is removed just after its completion is recorded.
+        let left: Vec<_> = dirs.iter().flat_map(|d| std::fs::read_dir(work.join(d)).unwrap()).collect();
+        if left.is_empty() {
+            return;
+        }
+        assert!(Instant::now() < deadline, "finished jobs left scratch: {left:?}");
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+/// The scratch directory a process claimed, once it has.
+fn scratch_of(data: &Path, pid: u32) -> std::path::PathBuf {
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        if let Ok(entries) = std::fs::read_dir(data.join("work")) {
+            for e in entries.filter_map(|e| e.ok()) {
+                let name = e.file_name().to_string_lossy().into_owned();
+                if e.path().is_dir() && name.split('-').next() == Some(pid.to_string().as_str()) {
+                    return e.path();
+                }
+            }
+        }
+        assert!(Instant::now() < deadline, "process {pid} claimed no scratch");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+#[test]
+fn starting_a_process_removes_dead_scratch_but_never_a_live_ones() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("data");
+    // A live worker in the middle of a job (its scratch holds a half-made package).
+    let mut live = worker(&data, 1);
+    let live_dir = scratch_of(&data, live.id());
+    let partial = live_dir.join("job-0123-abcd/package/scene.xml");
+    std::fs::create_dir_all(partial.parent().unwrap()).unwrap();
+    std::fs::write(&partial, "<mujoco/>").unwrap();
+    // A worker killed in the middle of a job, and scratch of an older version (no lock file).
+    let mut dead = worker(&data, 1);
+    let dead_dir = scratch_of(&data, dead.id());
+    std::fs::create_dir_all(dead_dir.join("job-4567-efgh/package")).unwrap();
+    kill9(&mut dead);
+    let old = data.join("work/job-89ab-old");
+    std::fs::create_dir_all(&old).unwrap();
+    std::fs::write(old.join("plan.json"), "{}").unwrap();
+
+    // Another worker starts on the same data directory: it cleans before it claims.
+    let mut other = worker(&data, 1);
+    let other_dir = scratch_of(&data, other.id());
+    assert!(!dead_dir.exists(), "the dead worker's scratch is still there");
+    assert!(!data.join("work").join(format!("{}.lock", dead_dir.file_name().unwrap().to_string_lossy())).exists());
+    assert!(!old.exists(), "scratch without an owner is still there");
+    assert!(partial.exists(), "the live worker's job lost its scratch");
+    assert_eq!(std::fs::read_to_string(&partial).unwrap(), "<mujoco/>");
+    assert!(other_dir.is_dir());
+
+    // So does a server (HTTP only: it cleans, and claims nothing).
+    let mut dead = worker(&data, 1);
+    let dead_dir = scratch_of(&data, dead.id());
+    kill9(&mut dead);
+    let (mut server, _) = serve(&data, 0);
+    assert!(!dead_dir.exists(), "the server left a dead worker's scratch");
+    assert!(partial.exists() && other_dir.is_dir(), "the server removed a live worker's scratch");
+    assert_eq!(scratch_owners(&data), {
+        let mut v = vec![live.id(), other.id()];
+        v.sort();
+        v
+    });
+
+    // A worker stopped gracefully removes its own scratch.
+    let status = Command::new("kill").args(["-TERM", &other.id().to_string()]).status().unwrap();
+    assert!(status.success());
+    other.wait().unwrap();
+    assert!(!other_dir.exists(), "a worker stopped with SIGTERM left its scratch");
+    kill9(&mut server);
+    kill9(&mut live);
 }

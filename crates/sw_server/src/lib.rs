@@ -15,6 +15,7 @@ mod routes_auth;
 mod routes_jobs;
 mod routes_misc;
 mod routes_scenes;
+mod scratch;
 mod worker;
 mod ws;
 mod zip;
@@ -103,6 +104,8 @@ pub enum StartError {
     Blob(#[from] sw_store::BlobError),
     #[error("{path}: {source}")]
     Io { path: String, source: std::io::Error },
+    #[error("scratch space {0}")]
+    Scratch(#[from] scratch::ScratchError),
 }
 
 /// Opens the database under `data_dir` and the blob store: an S3-compatible bucket when
@@ -195,6 +198,8 @@ pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
     if !recovered.requeued.is_empty() || !recovered.failed.is_empty() {
         tracing::warn!(requeued = ?recovered.requeued, failed = ?recovered.failed, "recovered jobs of lost runners");
     }
+    // The scratch of dead processes is gone before the address is announced.
+    let runners = worker::start_workers(state.clone(), config.workers, shutdown_signal())?;
     let app = router(state.clone());
     let listener = tokio::net::TcpListener::bind(config.addr)
         .await
@@ -205,7 +210,6 @@ pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
         // Scripts (and the tests) read the address from this line.
         eprintln!("listening on http://{local}");
     }
-    let runners = tokio::spawn(run_workers(state.clone(), config.workers, shutdown_signal()));
     axum::serve(listener, app)
         .with_graceful_shutdown(shutdown_signal())
         .await

@@ -12,7 +12,8 @@ use sw_pipeline::{EditReader, Event, Options, PipelineError};
 use sw_store::{BlobStore, Claim, JobKind, NewScene, Telemetry, new_id};
 use tracing::Instrument;
 
-use crate::AppState;
+use crate::scratch::{self, ProcessScratch};
+use crate::{AppState, StartError};
 
 /// How runners behave.
 #[derive(Debug, Clone)]
@@ -25,7 +26,9 @@ pub struct RunnerConfig {
     pub max_attempts: i64,
     /// How often an idle runner looks for work from other processes, ms.
     pub poll_ms: u64,
-    /// Scratch space for packages being made (default: the system's temp directory).
+    /// Scratch space for packages being made (default: `scenewright-work` in the system's
+    /// temp directory). Processes sharing it each work in their own subdirectory; see
+    /// [`crate::scratch`].
     pub work_dir: Option<PathBuf>,
     /// Model endpoints: an edit the offline grammar cannot read goes to the edit stage's
     /// model, as with `scenewright edit` (none: the grammar only).
@@ -39,6 +42,11 @@ impl Default for RunnerConfig {
 }
 
 impl RunnerConfig {
+    /// The directory holding every process's scratch.
+    pub fn work_root(&self) -> PathBuf {
+        self.work_dir.clone().unwrap_or_else(|| std::env::temp_dir().join("scenewright-work"))
+    }
+
     /// The edit stage's model from the SCENEWRIGHT_LLM_* environment (as `scenewright
     /// edit`); unusable settings are logged and leave the offline grammar only.
     pub fn with_llm_from_env(self) -> Self {
@@ -55,17 +63,57 @@ impl RunnerConfig {
 
 /// Runs `n` job runners and the recovery loop until `shutdown` resolves; each runner
 /// finishes the job it holds first (unless the process dies, when its lease expires and
-/// the job is run again elsewhere).
-pub async fn run_workers(state: AppState, n: usize, shutdown: impl Future<Output = ()> + Send + 'static) {
+/// the job is run again elsewhere). Before they start, the scratch left in the work root
+/// by processes that died is removed.
+pub async fn run_workers(
+    state: AppState,
+    n: usize,
+    shutdown: impl Future<Output = ()> + Send + 'static,
+) -> Result<(), StartError> {
+    let run = start_workers(state, n, shutdown)?;
+    let _ = run.await;
+    Ok(())
+}
+
+/// [`run_workers`] with its start (the scratch cleaned and claimed) done now and the rest
+/// in a task.
+pub(crate) fn start_workers(
+    state: AppState,
+    n: usize,
+    shutdown: impl Future<Output = ()> + Send + 'static,
+) -> Result<tokio::task::JoinHandle<()>, StartError> {
+    let process = format!("{}-{}", std::process::id(), &new_id()[..8]);
+    let root = state.runner.work_root();
+    let removed = scratch::sweep(&root)?;
+    if !removed.is_empty() {
+        let dirs: Vec<String> = removed.iter().map(|d| d.display().to_string()).collect();
+        tracing::info!(removed = ?dirs, "removed the scratch of processes that are gone");
+    }
+    // Only a process that runs jobs needs scratch of its own.
+    let scratch = if n > 0 { Some(ProcessScratch::claim_unique(&root, &process)?) } else { None };
+    tracing::info!(runners = n, process = %process, "job runners started");
+    Ok(tokio::spawn(async move {
+        let work = scratch.as_ref().map(|s| s.dir().to_path_buf()).unwrap_or_else(|| root.clone());
+        run_loops(state, n, &process, work, shutdown).await;
+        // Every runner is done: this process's scratch goes (dropped after the loops).
+        drop(scratch);
+    }))
+}
+
+async fn run_loops(
+    state: AppState,
+    n: usize,
+    process: &str,
+    work: PathBuf,
+    shutdown: impl Future<Output = ()> + Send + 'static,
+) {
     let stop = Arc::new(AtomicBool::new(false));
     let wake = state.wake.clone();
     let mut tasks = Vec::new();
-    let process = format!("{}-{}", std::process::id(), &new_id()[..8]);
-    tracing::info!(runners = n, process = %process, "job runners started");
     for i in 0..n {
-        let (state, stop) = (state.clone(), stop.clone());
+        let (state, stop, work) = (state.clone(), stop.clone(), work.clone());
         let name = format!("{process}-{i}");
-        tasks.push(tokio::spawn(runner(state, name, stop)));
+        tasks.push(tokio::spawn(runner(state, name, work, stop)));
     }
     let recovery = {
         let (state, stop) = (state.clone(), stop.clone());
@@ -99,12 +147,12 @@ pub async fn run_workers(state: AppState, n: usize, shutdown: impl Future<Output
     let _ = recovery.await;
 }
 
-async fn runner(state: AppState, name: String, stop: Arc<AtomicBool>) {
+async fn runner(state: AppState, name: String, work: PathBuf, stop: Arc<AtomicBool>) {
     while !stop.load(Ordering::Relaxed) {
         match state.store.claim(&name, state.runner.lease_ms, state.limits).await {
             Ok(Some(claim)) => {
                 let span = tracing::info_span!("job", job = %claim.job.id, attempt = claim.attempt, worker = %name);
-                run_job(&state, claim).instrument(span).await;
+                run_job(&state, claim, &work).instrument(span).await;
             }
             Ok(None) => {
                 let _ = tokio::time::timeout(Duration::from_millis(state.runner.poll_ms), state.wake.notified()).await;
@@ -133,7 +181,7 @@ struct Made {
     edit: Option<Value>,
 }
 
-async fn run_job(state: &AppState, claim: Claim) {
+async fn run_job(state: &AppState, claim: Claim, work: &Path) {
     let job = claim.job.clone();
     tracing::info!(kind = job.kind.as_str(), "job started");
     emit(state, &job.id, json!({"event": "started", "attempt": claim.attempt})).await;
@@ -180,7 +228,7 @@ async fn run_job(state: &AppState, claim: Claim) {
         )
     };
 
-    let result = run_pipeline(state, &claim, tx, lost.clone()).await;
+    let result = run_pipeline(state, &claim, work, tx, lost.clone()).await;
     let _ = forwarder.await;
     heartbeat.abort();
 
@@ -222,15 +270,14 @@ async fn claim_still_ours(state: &AppState, claim: &Claim, lost: &AtomicBool) ->
 async fn run_pipeline(
     state: &AppState,
     claim: &Claim,
+    work: &Path,
     tx: tokio::sync::mpsc::UnboundedSender<Value>,
     stop: Arc<AtomicBool>,
 ) -> Result<(Made, tempfile::TempDir), String> {
     let job = claim.job.clone();
-    let work = state.runner.work_dir.clone().unwrap_or_else(std::env::temp_dir);
-    fs_err::create_dir_all(&work).map_err(|e| format!("scratch space: {e}"))?;
     let tmp = tempfile::Builder::new()
         .prefix(&format!("job-{}-", job.id))
-        .tempdir_in(&work)
+        .tempdir_in(work)
         .map_err(|e| format!("scratch space {}: {e}", work.display()))?;
     let out = tmp.path().join("package");
     let blobs = state.blobs.clone();
