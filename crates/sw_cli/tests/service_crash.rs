@@ -223,64 +223,15 @@ fn killing_a_worker_process_mid_job_loses_nothing() {
     check_db(&data, &ids, &rerun);
 }
 
-/// A throwaway PostgreSQL cluster on loopback (initdb + pg_ctl, as `postgres` when root).
-struct Postgres {
-    dir: tempfile::TempDir,
-    bin: std::path::PathBuf,
-    as_postgres: bool,
-    url: String,
-}
-
-impl Postgres {
-    fn run(bin: &Path, as_postgres: bool, tool: &str, args: &[&str]) -> std::process::Output {
-        let mut cmd = if as_postgres {
-            let mut c = Command::new("runuser");
-            c.args(["-u", "postgres", "--"]).arg(bin.join(tool));
-            c
-        } else {
-            Command::new(bin.join(tool))
-        };
-        cmd.args(args).output().unwrap()
-    }
-
-    fn start() -> Self {
-        let mut versions: Vec<std::path::PathBuf> = std::fs::read_dir("/usr/lib/postgresql")
-            .expect("PostgreSQL is not installed: run scripts/setup.sh --tests")
-            .filter_map(|e| e.ok().map(|e| e.path().join("bin")))
-            .filter(|p| p.join("initdb").exists())
-            .collect();
-        versions.sort();
-        let bin = versions.pop().expect("no initdb: run scripts/setup.sh --tests");
-        let as_postgres = Command::new("id").arg("-u").output().is_ok_and(|o| o.stdout.starts_with(b"0\n"));
-        let dir = tempfile::Builder::new().prefix("sw-pg-").tempdir().unwrap();
-        if as_postgres {
-            assert!(
-                Command::new("chown").args(["-R", "postgres:postgres"]).arg(dir.path()).status().unwrap().success()
-            );
-        }
-        let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
-        let data = dir.path().join("data").display().to_string();
-        let out = Self::run(&bin, as_postgres, "initdb", &["-D", &data, "-A", "trust", "-U", "sw", "--no-sync"]);
-        assert!(out.status.success(), "initdb: {}", String::from_utf8_lossy(&out.stderr));
-        let opts = format!("-h 127.0.0.1 -p {port} -k {} -c max_connections=200", dir.path().display());
-        let log = dir.path().join("log").display().to_string();
-        let out = Self::run(&bin, as_postgres, "pg_ctl", &["-D", &data, "-l", &log, "-w", "-o", &opts, "start"]);
-        assert!(out.status.success(), "pg_ctl: {}", String::from_utf8_lossy(&out.stderr));
-        Postgres { dir, bin, as_postgres, url: format!("postgres://sw@127.0.0.1:{port}/postgres") }
-    }
-}
-
-impl Drop for Postgres {
-    fn drop(&mut self) {
-        let data = self.dir.path().join("data").display().to_string();
-        let _ = Self::run(&self.bin, self.as_postgres, "pg_ctl", &["-D", &data, "-m", "immediate", "stop"]);
-    }
-}
+/// A throwaway PostgreSQL cluster on loopback (the store's tests' one copy of how).
+#[path = "../../sw_store/tests/cluster/mod.rs"]
+mod cluster;
 
 #[test]
 fn killing_a_worker_on_postgresql_loses_nothing() {
-    let pg = Postgres::start();
-    let db = Some(pg.url.as_str());
+    let pg = cluster::Cluster::start();
+    let url = pg.url("postgres");
+    let db = Some(url.as_str());
     let dir = tempfile::tempdir().unwrap();
     let data = dir.path().join("data");
     // HTTP only; two worker processes share the PostgreSQL queue; one is killed mid-job.

@@ -1,11 +1,13 @@
-//! Auth, bad input, the queue cap, the OpenAPI document, roles — through the Router.
+//! Auth, bad input, the queue cap, the OpenAPI document, roles — through the Router, on
+//! SQLite (a test each) and on a throwaway PostgreSQL cluster (one test for them all).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 mod common;
 
 use axum::http::{Method, StatusCode};
-use common::{App, Payload, app};
+use common::cluster::Cluster;
+use common::{App, Db, Payload, app, app_on};
 use serde_json::json;
 use sw_store::{CountedTable, QueueLimits};
 
@@ -13,9 +15,41 @@ fn err(v: &serde_json::Value) -> &str {
     v["error"].as_str().unwrap_or_else(|| panic!("no error message in {v}"))
 }
 
-#[tokio::test]
-async fn register_login_and_identity() {
-    let a = app(QueueLimits::default()).await;
+/// Each scenario as a SQLite test of its own name, and all of them, in order, on PostgreSQL
+/// (each in a fresh database of one cluster).
+macro_rules! on_sqlite_and_postgresql {
+    ($($name:ident),* $(,)?) => {
+        mod sqlite {
+            $(
+                #[tokio::test]
+                async fn $name() {
+                    super::$name(super::Db::Sqlite).await;
+                }
+            )*
+        }
+
+        #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+        async fn the_api_on_postgresql() {
+            let cluster = Cluster::start();
+            $( $name(Db::Url(cluster.database(stringify!($name)))).await; )*
+        }
+    };
+}
+
+on_sqlite_and_postgresql!(
+    register_login_and_identity,
+    missing_invalid_and_expired_credentials_are_refused,
+    api_keys_work_like_tokens,
+    bad_job_requests_get_a_clear_4xx_and_store_nothing,
+    sql_in_a_prompt_is_only_text,
+    a_full_queue_answers_429,
+    a_queued_job_can_be_cancelled,
+    roles_guard_the_admin_overview,
+    assets_and_robots,
+);
+
+async fn register_login_and_identity(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let t = a.user("ann").await;
     let (s, me) = a.get("/api/me", &t).await;
     assert_eq!(s, StatusCode::OK);
@@ -41,9 +75,8 @@ async fn register_login_and_identity() {
     assert_eq!(a.state.store.count_rows(CountedTable::Users).await.unwrap(), 2);
 }
 
-#[tokio::test]
-async fn missing_invalid_and_expired_credentials_are_refused() {
-    let a = app(QueueLimits::default()).await;
+async fn missing_invalid_and_expired_credentials_are_refused(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let t = a.user("ann").await;
     let (s, v) = a.call(Method::GET, "/api/me", None, Payload::None).await;
     assert_eq!(s, StatusCode::UNAUTHORIZED);
@@ -71,9 +104,8 @@ async fn missing_invalid_and_expired_credentials_are_refused() {
     assert_eq!(resp.status(), StatusCode::UNAUTHORIZED);
 }
 
-#[tokio::test]
-async fn api_keys_work_like_tokens() {
-    let a = app(QueueLimits::default()).await;
+async fn api_keys_work_like_tokens(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let t = a.user("ann").await;
     let (s, v) = a.post("/api/auth/keys", &t, json!({"name": "ci"})).await;
     assert_eq!(s, StatusCode::CREATED, "{v}");
@@ -87,9 +119,8 @@ async fn api_keys_work_like_tokens() {
     assert_eq!(a.get("/api/me", "swk_0000").await.0, StatusCode::UNAUTHORIZED);
 }
 
-#[tokio::test]
-async fn bad_job_requests_get_a_clear_4xx_and_store_nothing() {
-    let a = app(QueueLimits::default()).await;
+async fn bad_job_requests_get_a_clear_4xx_and_store_nothing(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let t = a.user("ann").await;
     let raw = |body: &'static str| Payload::Raw(body, Some("application/json"));
     let cases: Vec<(Payload, StatusCode, &str)> = vec![
@@ -138,9 +169,8 @@ async fn bad_job_requests_get_a_clear_4xx_and_store_nothing() {
     assert_eq!(a.state.store.count_rows(CountedTable::Prompts).await.unwrap(), 0);
 }
 
-#[tokio::test]
-async fn sql_in_a_prompt_is_only_text() {
-    let a = app(QueueLimits::default()).await;
+async fn sql_in_a_prompt_is_only_text(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let t = a.user("ann").await;
     let prompt = "a lab'); DROP TABLE jobs; DELETE FROM users WHERE ('1'='1";
     let (s, v) = a.post("/api/jobs", &t, json!({"prompt": prompt, "seed": 3})).await;
@@ -153,9 +183,8 @@ async fn sql_in_a_prompt_is_only_text() {
     assert_eq!(a.state.store.count_rows(CountedTable::Users).await.unwrap(), 1);
 }
 
-#[tokio::test]
-async fn a_full_queue_answers_429() {
-    let a = app(QueueLimits { queue_cap: 2, per_user_running: 5 }).await;
+async fn a_full_queue_answers_429(db: Db) {
+    let a = app_on(&db, QueueLimits { queue_cap: 2, per_user_running: 5 }).await;
     let t = a.user("ann").await;
     for i in 0..2 {
         let (s, v) = a.post("/api/jobs", &t, json!({"prompt": format!("a lab with {i} tables")})).await;
@@ -167,9 +196,8 @@ async fn a_full_queue_answers_429() {
     assert_eq!(a.jobs_stored().await, 2);
 }
 
-#[tokio::test]
-async fn a_queued_job_can_be_cancelled() {
-    let a = app(QueueLimits::default()).await;
+async fn a_queued_job_can_be_cancelled(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let t = a.user("ann").await;
     let (_, v) = a.post("/api/jobs", &t, json!({"prompt": "a lab with a table"})).await;
     let id = v["job_id"].as_str().unwrap();
@@ -185,9 +213,8 @@ async fn a_queued_job_can_be_cancelled() {
     assert_eq!(kinds, ["queued", "cancelled"]);
 }
 
-#[tokio::test]
-async fn roles_guard_the_admin_overview() {
-    let a = app(QueueLimits::default()).await;
+async fn roles_guard_the_admin_overview(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let admin = a.user("root").await;
     let user = a.user("ann").await;
     a.post("/api/jobs", &user, json!({"prompt": "a lab"})).await;
@@ -219,9 +246,8 @@ async fn the_openapi_document_lists_every_route() {
     assert_eq!((s, v["status"].as_str()), (StatusCode::OK, Some("ok")));
 }
 
-#[tokio::test]
-async fn assets_and_robots() {
-    let a = app(QueueLimits::default()).await;
+async fn assets_and_robots(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let t = a.user("ann").await;
     let (s, v) = a.get("/api/robots", &t).await;
     assert_eq!(s, StatusCode::OK);

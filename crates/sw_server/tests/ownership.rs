@@ -1,19 +1,31 @@
 //! A real job through the in-process runners (MuJoCo-verified), then every endpoint that
 //! names a job, scene or asset: the owner gets it, anyone else gets exactly the 404 of
-//! an id that does not exist. Also files, traversal, the zip, edits and metrics.
+//! an id that does not exist. Also files, traversal, the zip, edits and metrics. On SQLite
+//! and on a throwaway PostgreSQL cluster.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 mod common;
 
 use axum::http::{Method, StatusCode};
-use common::{PROMPT, Payload, app, start_workers};
+use common::cluster::Cluster;
+use common::{Db, PROMPT, Payload, app_on, start_workers};
 use serde_json::json;
 use sw_store::QueueLimits;
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn owners_see_their_things_and_others_see_nothing() {
-    let a = app(QueueLimits::default()).await;
+    owners_and_others(Db::Sqlite).await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn owners_see_their_things_and_others_see_nothing_on_postgresql() {
+    let cluster = Cluster::start();
+    owners_and_others(Db::Url(cluster.database("ownership"))).await;
+}
+
+async fn owners_and_others(db: Db) {
+    let a = app_on(&db, QueueLimits::default()).await;
     let ann = a.user("ann").await;
     let bob = a.user("bob").await;
     let _stop = start_workers(&a.state, 2);

@@ -1,4 +1,5 @@
-//! A service over a temporary data directory, driven through its `Router`.
+//! A service over a temporary data directory, driven through its `Router`, with its
+//! database in the directory (SQLite) or in a throwaway PostgreSQL cluster.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 #![allow(dead_code)]
@@ -12,6 +13,19 @@ use serde_json::{Value, json};
 use sw_server::{AppState, RunnerConfig};
 use sw_store::QueueLimits;
 use tower::ServiceExt;
+
+/// The throwaway PostgreSQL cluster of the store's tests (one copy of how to start one).
+#[path = "../../../sw_store/tests/cluster/mod.rs"]
+pub mod cluster;
+
+/// Where a test service keeps its database.
+#[derive(Debug, Clone)]
+pub enum Db {
+    /// `scenewright.db` in the service's data directory.
+    Sqlite,
+    /// A database URL (`postgres://…`).
+    Url(String),
+}
 
 pub const PROMPT: &str = "a 10 by 8 m warehouse with a conveyor, a table with four boxes on it, three chairs next to the conveyor, a red cabinet and a shelf against the north wall";
 
@@ -29,10 +43,26 @@ pub async fn app(limits: QueueLimits) -> App {
     app_with(limits, runner()).await
 }
 
+/// A service on the database `db`.
+pub async fn app_on(db: &Db, limits: QueueLimits) -> App {
+    app_with_on(db, limits, runner()).await
+}
+
 /// A service whose runners have this configuration (their scratch space in the app's directory).
-pub async fn app_with(limits: QueueLimits, mut r: RunnerConfig) -> App {
+pub async fn app_with(limits: QueueLimits, r: RunnerConfig) -> App {
+    app_with_on(&Db::Sqlite, limits, r).await
+}
+
+/// [`app_with`] on the database `db`.
+pub async fn app_with_on(db: &Db, limits: QueueLimits, mut r: RunnerConfig) -> App {
     let dir = tempfile::tempdir().unwrap();
-    let (store, blobs) = sw_server::open_data(dir.path(), None).await.unwrap();
+    let url = match db {
+        Db::Sqlite => None,
+        Db::Url(u) => Some(u.as_str()),
+    };
+    let (store, blobs) = sw_server::open_data(dir.path(), url).await.unwrap();
+    let backend = if url.is_some() { sw_store::Backend::Postgres } else { sw_store::Backend::Sqlite };
+    assert_eq!(store.backend(), backend);
     r.work_dir = Some(dir.path().join("work"));
     let state = AppState::new(store, blobs, limits, r, 3600).await.unwrap();
     let router = sw_server::router(state.clone());
