@@ -1,6 +1,8 @@
 //! `bench asset-index`: the semantic index's reuse threshold on the labelled pairs
-//! (precision and recall per threshold, the best F1), and retrieval time over N indexed
-//! assets whose labels are embedded with the real model.
+//! (precision and recall per threshold, the best F1), the same with the size check that
+//! reuse also needs (each label at the size a scene would ask for it: the catalog's
+//! default size, else the planner's prior for its head noun), and retrieval time over N
+//! indexed assets whose labels are embedded with the real model.
 
 use std::time::Instant;
 
@@ -104,14 +106,47 @@ struct Retrieval {
     end_to_end_p50_ms: f64,
 }
 
+/// Reuse by label and size at the default threshold.
+#[derive(Serialize)]
+struct WithSize {
+    at_default: ThresholdPoint,
+    /// Non-matching pairs above the threshold (label alone would reuse them).
+    hard_negatives_above_threshold: usize,
+    /// Of those, the ones the size check turns away.
+    turned_away_by_size: usize,
+    /// Matching pairs above the threshold that the size check turns away.
+    matches_lost_to_size: usize,
+}
+
+/// Reuse by label and size at the default threshold, for other limits of the size check.
+#[derive(Serialize)]
+struct SizeLimits {
+    max_distortion: f64,
+    max_scale: f64,
+    precision: f64,
+    recall: f64,
+}
+
 #[derive(Serialize)]
 struct IndexBench {
     pairs: usize,
     matches: usize,
     at_default: ThresholdPoint,
+    with_size: WithSize,
+    size_limits: Vec<SizeLimits>,
     best_f1: ThresholdPoint,
     sweep: Vec<ThresholdPoint>,
     retrieval: Retrieval,
+}
+
+/// The size (m) a scene would ask for an object so labelled: the catalog's default size
+/// for a category, else the planner's prior for the label's head noun.
+fn typical_size(label: &str) -> [f64; 3] {
+    if let Some(c) = sw_planner::vocab::category(label).and_then(sw_catalog::find) {
+        return c.default_size();
+    }
+    let p = sw_planner::vocab::proxy(label, false, &[], &sw_plan::ExplicitSize::default());
+    [p.size.width, p.size.depth, p.size.height]
 }
 
 fn pct(v: &mut [f64], q: f64) -> f64 {
@@ -142,6 +177,35 @@ pub(crate) fn run(assets: usize, json: bool) -> Result<u8, Failure> {
         .map(|(i, r)| (va[i].iter().zip(&vb[i]).map(|(x, y)| x * y).sum::<f32>(), r.2))
         .collect();
     let points = sweep(&scored);
+    let size_fits: Vec<Option<sw_forge::reuse::SizeFit>> =
+        rows.iter().map(|r| sw_forge::reuse::size_fit(typical_size(r.0), typical_size(r.1))).collect();
+    let fits: Vec<bool> = size_fits.iter().map(|f| f.is_some_and(|f| f.fits())).collect();
+    let mut size_limits = Vec::new();
+    for max_distortion in [1.2, 1.3, 1.5, 2.0, 3.0] {
+        for max_scale in [1.5, 2.0, 3.0] {
+            let gated: Vec<(f32, bool)> = scored
+                .iter()
+                .zip(&size_fits)
+                .map(|((s, m), f)| {
+                    let ok = f.is_some_and(|f| {
+                        f.distortion <= max_distortion && f.overall <= max_scale && f.overall >= 1.0 / max_scale
+                    });
+                    (if ok { *s } else { f32::NEG_INFINITY }, *m)
+                })
+                .collect();
+            let p = evaluate(&gated, DEFAULT_THRESHOLD);
+            size_limits.push(SizeLimits { max_distortion, max_scale, precision: p.precision, recall: p.recall });
+        }
+    }
+    let sized: Vec<(f32, bool)> =
+        scored.iter().zip(&fits).map(|((s, m), fit)| (if *fit { *s } else { f32::NEG_INFINITY }, *m)).collect();
+    let above = |m: bool| scored.iter().zip(&fits).filter(move |((s, is), _)| *is == m && *s >= DEFAULT_THRESHOLD);
+    let with_size = WithSize {
+        at_default: evaluate(&sized, DEFAULT_THRESHOLD),
+        hard_negatives_above_threshold: above(false).count(),
+        turned_away_by_size: above(false).filter(|(_, fit)| !**fit).count(),
+        matches_lost_to_size: above(true).filter(|(_, fit)| !**fit).count(),
+    };
     let best = points.iter().copied().max_by(|x, y| x.f1.total_cmp(&y.f1).then(y.threshold.total_cmp(&x.threshold)));
     let best = best.unwrap_or_else(|| evaluate(&scored, DEFAULT_THRESHOLD));
 
@@ -197,6 +261,8 @@ pub(crate) fn run(assets: usize, json: bool) -> Result<u8, Failure> {
         pairs: rows.len(),
         matches: rows.iter().filter(|r| r.2).count(),
         at_default: evaluate(&scored, DEFAULT_THRESHOLD),
+        with_size,
+        size_limits,
         best_f1: best,
         sweep: points,
         retrieval,
@@ -215,6 +281,23 @@ pub(crate) fn run(assets: usize, json: bool) -> Result<u8, Failure> {
         "default {:.2}: precision {:.3}, recall {:.3} ({} false positives, {} false negatives)\nbest F1 at {:.2}: precision {:.3}, recall {:.3}, F1 {:.3}\n",
         d.threshold, d.precision, d.recall, d.false_pos, d.false_neg, best.threshold, best.precision, best.recall, best.f1
     ));
+    let w = &bench.with_size;
+    s.push_str(&format!(
+        "with the size check: precision {:.3}, recall {:.3} — it turns away {} of the {} non-matching pairs above {:.2}, and {} matching ones\n",
+        w.at_default.precision,
+        w.at_default.recall,
+        w.turned_away_by_size,
+        w.hard_negatives_above_threshold,
+        DEFAULT_THRESHOLD,
+        w.matches_lost_to_size
+    ));
+    s.push_str("size limits (distortion × scale): precision / recall at the default threshold\n");
+    for l in &bench.size_limits {
+        s.push_str(&format!(
+            "  ≤ {:.1} × ≤ {:.1}: {:.3} / {:.3}\n",
+            l.max_distortion, l.max_scale, l.precision, l.recall
+        ));
+    }
     let r = &bench.retrieval;
     s.push_str(&format!(
         "retrieval over {} assets ({:.1} s to embed them): search p50 {:.2} ms, p95 {:.2} ms; query embedding p50 {:.1} ms; end to end p50 {:.1} ms ({} queries)\n",

@@ -8,8 +8,11 @@
 
 use sw_geom::Mesh;
 
-/// The most one axis may be stretched relative to another (1.3: proportions within 30 %).
-pub const MAX_DISTORTION: f64 = 1.3;
+/// The most one axis may be stretched relative to another (1.5: proportions within 50 %).
+/// Chosen on the labelled pairs at typical sizes (`bench asset-index`): 1.3 keeps
+/// precision 0.85 but recall falls to 0.65; 1.5 gives 0.83 / 0.71; 2.0 stretches a round
+/// table into an oval one.
+pub const MAX_DISTORTION: f64 = 1.5;
 /// The most the asset may be scaled overall (geometric mean of the axes), up or down.
 pub const MAX_SCALE: f64 = 2.0;
 

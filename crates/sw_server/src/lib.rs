@@ -9,6 +9,7 @@
 mod auth;
 mod body;
 mod error;
+pub mod forge;
 mod metrics;
 mod openapi;
 mod routes_auth;
@@ -93,6 +94,8 @@ pub struct AppState {
     pub wake: Arc<tokio::sync::Notify>,
     /// The browser app's directory, served for paths outside `/api/`.
     pub web_dir: Option<PathBuf>,
+    /// Makes and serves the assets `POST /api/assets` asks for.
+    pub forge: Arc<forge::AssetForge>,
 }
 
 /// A problem starting the service.
@@ -135,6 +138,13 @@ pub async fn open_data(
 }
 
 impl AppState {
+    /// Keeps generated assets in the store at `location` (a directory or
+    /// `s3://bucket/prefix`) instead of the default one.
+    pub fn with_asset_store(mut self, location: String) -> Self {
+        self.forge = Arc::new(forge::AssetForge::new(location, self.runner.llm.clone()));
+        self
+    }
+
     /// The state for a store and blob store (the JWT secret is kept in the database, so
     /// every process on it accepts the same tokens).
     pub async fn new(
@@ -146,6 +156,7 @@ impl AppState {
     ) -> Result<Self, StartError> {
         let secret = store.setting_or_init("jwt_secret", sw_store::new_secret).await?;
         let (events, _) = broadcast::channel(4096);
+        let forge = Arc::new(forge::AssetForge::new(sw_forge::library::default_store_location(), runner.llm.clone()));
         Ok(Self {
             store,
             blobs,
@@ -155,6 +166,7 @@ impl AppState {
             events,
             metrics: Arc::new(metrics::Counters::default()),
             web_dir: None,
+            forge,
             wake: Arc::new(tokio::sync::Notify::new()),
         })
     }
@@ -180,6 +192,7 @@ pub fn router(state: AppState) -> Router {
         .route("/api/scenes/{id}/edits", post(routes_scenes::edit))
         .route("/api/assets", get(routes_misc::assets).post(routes_misc::create_asset))
         .route("/api/assets/{id}", get(routes_misc::asset))
+        .route("/api/assets/{id}/mesh.stl", get(routes_misc::asset_mesh))
         .route("/api/robots", get(routes_misc::robots))
         .route("/api/admin/jobs", get(routes_jobs::admin_overview))
         .fallback(routes_misc::not_found)
@@ -192,7 +205,9 @@ pub fn router(state: AppState) -> Router {
 /// runners, and the recovery of jobs whose runners were lost (at start and every second).
 pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
     let (store, blobs) = open_data(&config.data_dir, config.database_url.as_deref()).await?;
-    let mut state = AppState::new(store, blobs, config.limits, config.runner.clone(), config.token_ttl_s).await?;
+    let mut state = AppState::new(store, blobs, config.limits, config.runner.clone(), config.token_ttl_s)
+        .await?
+        .with_asset_store(forge::store_location(&config.data_dir));
     state.web_dir = config.web_dir.clone().filter(|d| d.is_dir());
     let recovered = state.store.recover().await?;
     if !recovered.requeued.is_empty() || !recovered.failed.is_empty() {

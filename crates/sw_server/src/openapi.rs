@@ -72,10 +72,15 @@ pub fn spec() -> Value {
                     ("202", "{job_id, state, scene_id}"), &["400", "401", "404", "413", "422", "429"]) },
             "/api/assets": {
                 "get": op("Catalog categories and the caller's assets matching ?q=", true, None, ("200", "{catalog, mine}"), &["400", "401"]),
-                "post": op("Record an asset description (matched to a catalog category)", true,
-                    Some(json!({ "type": "object", "required": ["description"], "properties": { "description": { "type": "string" } } })), ("201", "the asset"), &["400", "401", "413", "422"]) },
+                "post": op("An asset for a description: a catalog category, or from the asset forge (reused from the library by meaning and size, else generated, validated and stored); 422 when it cannot be made", true,
+                    Some(json!({ "type": "object", "required": ["description"], "properties": {
+                        "description": { "type": "string", "maxLength": 4096 },
+                        "size_m": { "type": "array", "items": { "type": "number", "minimum": 0.0005, "maximum": 50 }, "minItems": 3, "maxItems": 3, "description": "bounding box, metres: width, depth, height" } } })),
+                    ("201", "the asset; meta.source is catalog, library or generated"), &["400", "401", "413", "422", "503"]) },
             "/api/assets/{id}": { "parameters": [id_param("id")],
                 "get": op("One of the caller's assets", true, None, ("200", "the asset"), &["401", "404"]) },
+            "/api/assets/{id}/mesh.stl": { "parameters": [id_param("id")],
+                "get": op("The mesh of a generated or reused asset (binary STL, metres)", true, None, ("200", "model/stl"), &["401", "404", "503"]) },
             "/api/robots": { "get": op("The robot registry", true, None, ("200", "{robots}"), &["401"]) },
             "/api/admin/jobs": { "get": op("Jobs by state (admins)", true, None, ("200", "{by_state}"), &["401", "403"]) },
         },
@@ -84,7 +89,7 @@ pub fn spec() -> Value {
                 "bearer": { "type": "http", "scheme": "bearer", "bearerFormat": "JWT or API key (swk_…)" },
                 "apiKey": { "type": "apiKey", "in": "header", "name": "X-API-Key" } },
             "schemas": { "Error": { "type": "object", "required": ["error"], "properties": { "error": { "type": "string" } } } },
-            "responses": Value::Object(["400", "401", "403", "404", "409", "413", "415", "422", "429", "500"].iter().map(|c| {
+            "responses": Value::Object(["400", "401", "403", "404", "409", "413", "415", "422", "429", "500", "503"].iter().map(|c| {
                 (format!("E{c}"), json!({ "description": c, "content": { "application/json": { "schema": { "$ref": "#/components/schemas/Error" } } } }))
             }).collect()),
         },

@@ -6,12 +6,15 @@ use axum::http::{StatusCode, Uri, header};
 use axum::response::{IntoResponse, Response};
 use serde::Deserialize;
 use serde_json::{Value, json};
+use std::sync::Arc;
+
 use sw_store::is_id;
 
 use crate::AppState;
 use crate::auth::Caller;
 use crate::body::Body;
 use crate::error::{ApiError, ApiResult};
+use crate::forge::ForgeError;
 
 /// `GET /healthz` → 200 when the database answers.
 pub async fn healthz(State(s): State<AppState>) -> ApiResult<Json<Value>> {
@@ -88,10 +91,16 @@ pub async fn assets(State(s): State<AppState>, caller: Caller, Query(q): Query<A
 #[serde(deny_unknown_fields)]
 pub struct AssetRequest {
     description: String,
+    /// Its bounding box, metres: width, depth, height.
+    #[serde(default)]
+    size_m: Option<[f64; 3]>,
 }
 
-/// `POST /api/assets {description}` → 201 the asset's metadata, matched to the catalog
-/// category the offline planner reads it as (or none).
+/// `POST /api/assets {description, size_m?}` → 201 the asset. A catalog category the
+/// offline planner reads the description as is recorded as such; anything else goes to
+/// the asset forge: reused from the asset library by meaning (and size), else generated
+/// (the CAD stage's model, or the offline template synthesizer for dimensioned parts),
+/// validated, stored and indexed. 422 when it cannot be made, with why.
 pub async fn create_asset(
     State(s): State<AppState>,
     caller: Caller,
@@ -101,11 +110,38 @@ pub async fn create_asset(
     if r.description.len() > 4096 {
         return Err(ApiError::new(StatusCode::PAYLOAD_TOO_LARGE, "an asset description is at most 4096 bytes"));
     }
+    if let Some(size) = r.size_m
+        && !size.iter().all(|v| v.is_finite() && (0.0005..=50.0).contains(v))
+    {
+        return Err(ApiError::bad_request("size_m: each side must be between 0.0005 and 50 metres"));
+    }
     let category = match_category(&r.description).map(|c| c.name);
     let meta = match category.and_then(sw_catalog::find) {
         Some(c) => json!({ "source": "catalog", "size": c.default_size(), "movable": c.movable, "tags": c.tags }),
         None => {
-            json!({ "source": "none", "note": "no catalog category matches; the forge makes it when a scene needs it" })
+            let forge = Arc::clone(&s.forge);
+            let (description, size) = (r.description.trim().to_string(), r.size_m);
+            let work = tokio::task::spawn_blocking(move || forge.make(&description, size));
+            let made = match tokio::time::timeout(crate::forge::ASSET_TIMEOUT, work).await {
+                Ok(Ok(made)) => made,
+                Ok(Err(e)) => return Err(ApiError::internal(format!("the asset forge stopped: {e}"))),
+                Err(_) => {
+                    return Err(ApiError::new(
+                        StatusCode::GATEWAY_TIMEOUT,
+                        format!("making the asset took over {} s", crate::forge::ASSET_TIMEOUT.as_secs()),
+                    ));
+                }
+            };
+            match made {
+                Ok(m) => m.meta,
+                Err(e @ ForgeError::NotMade(_)) => {
+                    return Err(ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, e.to_string()));
+                }
+                Err(e @ ForgeError::Unavailable(_)) => {
+                    tracing::error!("{e}");
+                    return Err(ApiError::new(StatusCode::SERVICE_UNAVAILABLE, e.to_string()));
+                }
+            }
         }
     };
     let a = s.store.create_asset(&caller.user.id, r.description.trim(), category, &meta).await?;
@@ -119,6 +155,25 @@ pub async fn asset(State(s): State<AppState>, caller: Caller, Path(id): Path<Str
     }
     let a = s.store.asset_of(&id, &caller.user.id).await?.ok_or_else(|| ApiError::not_found("asset"))?;
     Ok(Json(json!(a)))
+}
+
+/// `GET /api/assets/{id}/mesh.stl` → the mesh (binary STL, metres) of one of the caller's
+/// generated or reused assets.
+pub async fn asset_mesh(State(s): State<AppState>, caller: Caller, Path(id): Path<String>) -> ApiResult<Response> {
+    if !is_id(&id) {
+        return Err(ApiError::not_found("asset"));
+    }
+    let a = s.store.asset_of(&id, &caller.user.id).await?.ok_or_else(|| ApiError::not_found("asset"))?;
+    let Some(stored) = a.meta.get("asset_id").and_then(Value::as_str).map(str::to_string) else {
+        return Err(ApiError::new(StatusCode::NOT_FOUND, "this asset is a catalog category; it has no stored mesh"));
+    };
+    let forge = Arc::clone(&s.forge);
+    let mesh = tokio::task::spawn_blocking(move || forge.mesh(&stored))
+        .await
+        .map_err(|e| ApiError::internal(e.to_string()))?
+        .map_err(|e| ApiError::new(StatusCode::SERVICE_UNAVAILABLE, e.to_string()))?
+        .ok_or_else(|| ApiError::new(StatusCode::NOT_FOUND, "the asset's mesh is no longer in the asset store"))?;
+    Ok(([(header::CONTENT_TYPE, "model/stl")], mesh).into_response())
 }
 
 /// Anything else: the web app's files when there is one, else a JSON 404.

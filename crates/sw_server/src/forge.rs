@@ -1,0 +1,192 @@
+//! The asset forge behind `POST /api/assets`: a description the catalog does not cover is
+//! looked up in the asset library by meaning (and size, when given), else made by the
+//! generation loop — the CAD stage's model when one is configured, else the offline
+//! template synthesizer for dimensioned mechanical parts — run in the sandboxed runner,
+//! validated, stored and indexed. The runner (a cold `import cadquery` costs seconds) and
+//! the embedder start on first use and are shared by every request after.
+
+use std::sync::{Arc, OnceLock};
+use std::time::Duration;
+
+use serde_json::{Value, json};
+use sw_forge::generate::{CodeWriter, ForgeOutcome, LlmWriter, LoopConfig, PartRequest, TemplateWriter, forge};
+use sw_forge::library::AssetLibrary;
+use sw_forge::runner::{CadRunner, RunnerConfig};
+use sw_forge::store::{AssetId, AssetRecord, StoreError};
+use sw_llm::{Client, LlmConfig, LlmStage};
+
+/// How long one asset may take end to end (every attempt of the loop).
+pub const ASSET_TIMEOUT: Duration = Duration::from_secs(180);
+
+/// Where a service keeps generated assets: `SCENEWRIGHT_ASSET_STORE` when set; else
+/// `assets/` in the S3 bucket when packages go to S3 (every worker shares it); else
+/// `assets/` in the data directory.
+pub fn store_location(data_dir: &std::path::Path) -> String {
+    match std::env::var("SCENEWRIGHT_ASSET_STORE") {
+        Ok(p) if !p.trim().is_empty() => p,
+        _ => match sw_forge::store_s3::S3Config::from_env() {
+            Some(c) => format!("s3://{}/assets", c.bucket),
+            None => data_dir.join("assets").display().to_string(),
+        },
+    }
+}
+
+/// The shared runner and library, started on first use.
+pub struct AssetForge {
+    location: String,
+    llm: Option<LlmConfig>,
+    runner: OnceLock<Result<CadRunner, String>>,
+    library: OnceLock<Result<Arc<AssetLibrary>, String>>,
+}
+
+impl std::fmt::Debug for AssetForge {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("AssetForge").field("location", &self.location).finish_non_exhaustive()
+    }
+}
+
+/// Why an asset could not be made or served.
+#[derive(Debug, thiserror::Error)]
+pub enum ForgeError {
+    /// Every attempt failed; the request cannot be served as asked.
+    #[error("{0}")]
+    NotMade(String),
+    /// The runner, the embedder or the store is not available.
+    #[error("the asset forge is unavailable: {0}")]
+    Unavailable(String),
+}
+
+/// What the forge did for a description.
+#[derive(Debug, Clone)]
+pub struct Made {
+    pub record: AssetRecord,
+    /// `library` (reused by meaning) or `generated`.
+    pub source: &'static str,
+    /// Metadata for the asset's row.
+    pub meta: Value,
+}
+
+impl AssetForge {
+    /// A forge over the asset store at `location` (a directory or `s3://bucket/prefix`);
+    /// `llm` gives the CAD stage's model, when there is one.
+    pub fn new(location: String, llm: Option<LlmConfig>) -> Self {
+        Self { location, llm, runner: OnceLock::new(), library: OnceLock::new() }
+    }
+
+    pub fn location(&self) -> &str {
+        &self.location
+    }
+
+    fn runner(&self) -> Result<&CadRunner, ForgeError> {
+        self.runner
+            .get_or_init(|| CadRunner::start(RunnerConfig::from_env()).map_err(|e| e.to_string()))
+            .as_ref()
+            .map_err(|e| ForgeError::Unavailable(e.clone()))
+    }
+
+    /// The library (loading the embedder and syncing the index on first use).
+    pub fn library(&self) -> Result<&Arc<AssetLibrary>, ForgeError> {
+        self.library
+            .get_or_init(|| {
+                let model = sw_forge::embed::MiniLm::load_default().map_err(|e| e.to_string())?;
+                AssetLibrary::open_location(&self.location, model)
+                    .map(Arc::new)
+                    .map_err(|e| format!("asset store {}: {e}", self.location))
+            })
+            .as_ref()
+            .map_err(|e| ForgeError::Unavailable(e.clone()))
+    }
+
+    fn writer(&self) -> Arc<dyn CodeWriter> {
+        match self.llm.as_ref().filter(|c| c.endpoint(LlmStage::Cad).is_some()) {
+            Some(cfg) => Arc::new(LlmWriter::new(Client::new(cfg.clone()))),
+            None => Arc::new(TemplateWriter),
+        }
+    }
+
+    /// Reuses or makes the asset for `description` (blocking: seconds when generated).
+    pub fn make(&self, description: &str, size_m: Option<[f64; 3]>) -> Result<Made, ForgeError> {
+        let library = self.library()?;
+        // Another process may have stored it since this one synced.
+        if let Err(e) = library.sync() {
+            tracing::warn!("asset index sync failed: {e}");
+        }
+        match library.lookup(description, size_m) {
+            Ok(Some(found)) => {
+                let meta = json!({
+                    "source": "library",
+                    "asset_id": found.record.id,
+                    "label": found.record.label,
+                    "score": found.hit.score,
+                    "size_m": found.record.size_m,
+                    "made_by": found.record.source,
+                    "fit": found.fit.map(|f| json!({ "scale": f.scale, "quarter_turn": f.quarter_turn })),
+                });
+                return Ok(Made { record: found.record, source: "library", meta });
+            }
+            Ok(None) => {}
+            Err(e) => return Err(ForgeError::Unavailable(e.to_string())),
+        }
+        let runner = self.runner()?;
+        let writer = self.writer();
+        let request = PartRequest { description: description.to_string(), size_m };
+        let t = std::time::Instant::now();
+        match forge(runner, writer.as_ref(), &request, LoopConfig::default()) {
+            ForgeOutcome::Made(part) => {
+                let stl = {
+                    let m = sw_forge::mesh_io::scaled(&part.mesh_mm, 1e-3);
+                    let mut bytes = Vec::new();
+                    sw_geom::write_stl(&mut bytes, &m, "generated")
+                        .map_err(|e| ForgeError::Unavailable(format!("writing the mesh: {e}")))?;
+                    bytes
+                };
+                let b = part.report.size;
+                let record = AssetRecord {
+                    id: AssetId::of(&stl),
+                    label: description.trim().to_string(),
+                    description: description.to_string(),
+                    source: part.writer.clone(),
+                    size_m: [b[0] * 1e-3, b[1] * 1e-3, b[2] * 1e-3],
+                    triangles: part.report.triangles,
+                    code: Some(part.code.clone()),
+                    extra: json!({ "attempts": part.attempts.len(), "volume_mm3": part.report.volume }),
+                };
+                let record = library.add(&stl, record).map_err(|e| ForgeError::Unavailable(e.to_string()))?;
+                let meta = json!({
+                    "source": "generated",
+                    "asset_id": record.id,
+                    "label": record.label,
+                    "size_m": record.size_m,
+                    "triangles": record.triangles,
+                    "made_by": record.source,
+                    "attempts": part.attempts.len(),
+                    "ms": t.elapsed().as_secs_f64() * 1e3,
+                });
+                Ok(Made { record, source: "generated", meta })
+            }
+            ForgeOutcome::Failed { attempts, writer } => {
+                let why: Vec<String> = attempts
+                    .iter()
+                    .filter_map(|a| a.failure.as_ref())
+                    .map(|f| format!("{}: {}", f.kind.name(), f.message.lines().next().unwrap_or("")))
+                    .collect();
+                Err(ForgeError::NotMade(format!(
+                    "{writer} could not make \"{}\" in {} attempt(s) ({})",
+                    description.trim(),
+                    attempts.len(),
+                    why.join("; ")
+                )))
+            }
+        }
+    }
+
+    /// The mesh (binary STL, metres) of a stored asset.
+    pub fn mesh(&self, id: &str) -> Result<Option<Vec<u8>>, ForgeError> {
+        let Ok(id) = AssetId::parse(id) else { return Ok(None) };
+        match self.library()?.store().mesh(&id) {
+            Ok(bytes) => Ok(Some(bytes)),
+            Err(StoreError::NotFound(_)) => Ok(None),
+            Err(e) => Err(ForgeError::Unavailable(e.to_string())),
+        }
+    }
+}
