@@ -14,6 +14,7 @@ use sw_forge::library::AssetLibrary;
 use sw_forge::runner::{CadRunner, RunnerConfig};
 use sw_forge::store::{AssetId, AssetRecord, StoreError};
 use sw_llm::{Client, LlmConfig, LlmStage};
+use sw_pipeline::{AssetSource, ForgeSource};
 
 /// How long one asset may take end to end (every attempt of the loop).
 pub const ASSET_TIMEOUT: Duration = Duration::from_secs(180);
@@ -178,6 +179,26 @@ impl AssetForge {
                 )))
             }
         }
+    }
+
+    /// L2 for one generation job whose CAD stage has a model: the generation loop with the
+    /// model as writer, in the shared runner, reusing and keeping assets in the shared
+    /// library (a fresh source per job, so each job's report holds its own calls).
+    pub fn source_for_job(&self, client: &Client) -> Result<Arc<dyn AssetSource>, ForgeError> {
+        let runner = self.runner()?.clone();
+        let source = ForgeSource::new(runner, Arc::new(LlmWriter::new(client.clone())), LoopConfig::default());
+        Ok(match self.library() {
+            Ok(library) => {
+                if let Err(e) = library.sync() {
+                    tracing::warn!("asset index sync failed: {e}");
+                }
+                Arc::new(source.with_library(Arc::clone(library)))
+            }
+            Err(e) => {
+                tracing::warn!("generated parts are not kept for reuse: {e}");
+                Arc::new(source)
+            }
+        })
     }
 
     /// The mesh (binary STL, metres) of a stored asset.

@@ -8,6 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
 use serde_json::{Value, json};
+use sw_llm::LlmStage;
 use sw_pipeline::{EditReader, Event, Options, PipelineError};
 use sw_store::{BlobStore, Claim, JobKind, NewScene, Telemetry, new_id};
 use tracing::Instrument;
@@ -291,6 +292,7 @@ async fn run_pipeline(
     };
     let cancel = stop.clone();
     let llm = state.runner.llm.clone();
+    let forge = Arc::clone(&state.forge);
     // The pipeline's thread logs in the job's span too (its stage spans nest in it).
     let span = tracing::Span::current();
     let handle = tokio::task::spawn_blocking(move || {
@@ -302,7 +304,23 @@ async fn run_pipeline(
         match job.kind {
             JobKind::Generate => {
                 let opts = Options { cancel: Some(cancel), ..options(&job.options, job.seed) };
-                let o = sw_pipeline::generate(&job.prompt, &out, &opts, &mut on_event).map_err(describe)?;
+                // With a plan stage model, the LLM pipeline (as `scenewright llm generate`),
+                // its assets from the forge when the CAD stage has a model too.
+                let o = match llm.as_ref().filter(|c| c.endpoint(LlmStage::Plan).is_some()) {
+                    Some(cfg) => {
+                        let client = sw_llm::Client::new(cfg.clone());
+                        let mut run = sw_pipeline::LlmRun::new(client.clone());
+                        if cfg.endpoint(LlmStage::Cad).is_some() {
+                            match forge.source_for_job(&client) {
+                                Ok(source) => run.assets = source,
+                                Err(e) => tracing::warn!("{e}; novel objects keep labelled proxies"),
+                            }
+                        }
+                        sw_pipeline::generate_with_llm(&job.prompt, &out, &opts, &run, &mut on_event)
+                    }
+                    None => sw_pipeline::generate(&job.prompt, &out, &opts, &mut on_event),
+                }
+                .map_err(describe)?;
                 Ok(Made { report: o.report, timings: o.timings, dir: o.out_dir, edit: None })
             }
             JobKind::Edit => {
@@ -310,7 +328,7 @@ async fn run_pipeline(
                 download(&*blobs, &parent, &parent_files, &out)?;
                 // The offline grammar first; a command it cannot read goes to the edit stage's
                 // model when one is configured (as `scenewright edit`).
-                let client = llm.filter(|c| c.endpoint(sw_llm::LlmStage::Edit).is_some()).map(sw_llm::Client::new);
+                let client = llm.filter(|c| c.endpoint(LlmStage::Edit).is_some()).map(sw_llm::Client::new);
                 let reader = if client.is_some() { EditReader::GrammarThenLlm } else { EditReader::Grammar };
                 let o = sw_pipeline::edit_package(&out, &job.prompt, reader, client.as_ref(), &mut on_event)
                     .map_err(describe)?;
