@@ -1,7 +1,9 @@
 //! `bench cad --suite standard_100|abstract_45|FILE`: every prompt of a CAD suite through
-//! the offline template synthesizer and the sandboxed runner — execution rate, retries,
-//! failure kinds, extent and volume errors against the suite's references (and Chamfer
-//! distance where a reference mesh is given), and the runner's warm latency.
+//! a writer and the sandboxed runner — execution rate, retries, failure kinds, extent and
+//! volume errors against the suite's references (and Chamfer distance where a reference
+//! mesh is given), and the runner's warm latency. The writer is the offline template
+//! synthesizer, or (`--writer llm`) the CAD stage's model in the generation loop: up to
+//! three attempts, each failure fed back, as the paper measures its retries.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -11,6 +13,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 use sw_forge::failure::FailureKind;
+use sw_forge::generate::{CodeWriter, ForgeOutcome, LlmWriter, LoopConfig, PartRequest, forge};
 use sw_forge::metrics::{chamfer_distance, extent_error};
 use sw_forge::runner::{CadJob, CadRunner};
 use sw_forge::{mesh_io, synth, validate};
@@ -47,7 +50,8 @@ struct Outcome {
     template: Option<String>,
     /// The code ran and gave a closed solid.
     executed: bool,
-    /// Re-runs after a runner failure (a timeout or a worker that died).
+    /// Template: re-runs after a runner failure (a timeout or a worker that died). Model:
+    /// attempts after the first (each after a failure fed back).
     retries: u32,
     /// Why it failed, when it did (the taxonomy's kind).
     failure: Option<FailureKind>,
@@ -65,6 +69,8 @@ struct Outcome {
 struct TierSummary {
     prompts: usize,
     executed: usize,
+    /// Prompts that needed more than one attempt.
+    retried: usize,
     with_reference: usize,
     bbox_within_1pct: usize,
     volume_within_2pct: usize,
@@ -83,9 +89,21 @@ struct Latency {
     min_ms: f64,
 }
 
+/// The model's calls, when it wrote the code.
+#[derive(Debug, Serialize)]
+struct ModelCalls {
+    model: String,
+    calls: usize,
+    tokens_in: u64,
+    tokens_out: u64,
+    median_latency_ms: Option<f64>,
+}
+
 #[derive(Debug, Serialize)]
 struct CadBench {
     suite: String,
+    /// `template` or `llm:<model>`.
+    writer: String,
     workers: usize,
     wall_s: f64,
     parts_per_s: f64,
@@ -94,6 +112,8 @@ struct CadBench {
     target: TierSummary,
     /// Warm runner, one simple part per job (T1 parts that executed, repeated).
     warm_latency: Option<Latency>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    model_calls: Option<ModelCalls>,
     outcomes: Vec<Outcome>,
 }
 
@@ -155,8 +175,8 @@ fn is_target(p: &Prompt) -> bool {
     p.tier == "T1" || (p.tier == "T2" && (t.contains("washer") || (t.contains("plate") && t.contains("hole"))))
 }
 
-fn one(runner: &CadRunner, p: &Prompt, reference: Option<&Reference>) -> Outcome {
-    let mut o = Outcome {
+fn blank(p: &Prompt) -> Outcome {
+    Outcome {
         id: p.id.clone(),
         tier: p.tier.clone(),
         template: None,
@@ -169,7 +189,12 @@ fn one(runner: &CadRunner, p: &Prompt, reference: Option<&Reference>) -> Outcome
         chamfer_mm: None,
         pass: None,
         roundtrip_ms: None,
-    };
+    }
+}
+
+/// One prompt through the template synthesizer and the runner.
+fn one(runner: &CadRunner, p: &Prompt, reference: Option<&Reference>) -> Outcome {
+    let mut o = blank(p);
     let s = match synth::synthesize(&p.text) {
         Ok(s) => s,
         Err(e) => {
@@ -199,10 +224,8 @@ fn one(runner: &CadRunner, p: &Prompt, reference: Option<&Reference>) -> Outcome
     };
     o.roundtrip_ms = Some(run.timings.roundtrip_ms);
     mesh_io::drop_collapsed_triangles(&mut run.mesh);
-    let measured = validate::measure(&run.mesh);
     // Executed: the code made a closed solid with positive volume.
-    let closed = validate::validate(&run.mesh, &validate::Target::default());
-    if let Err(f) = closed {
+    if let Err(f) = validate::validate(&run.mesh, &validate::Target::default()) {
         o.failure = Some(f.kind);
         o.message = Some(f.message);
         return o;
@@ -213,28 +236,58 @@ fn one(runner: &CadRunner, p: &Prompt, reference: Option<&Reference>) -> Outcome
         o.failure = Some(f.kind);
         o.message = Some(f.message);
     }
-    if let Some(r) = reference {
-        let be = extent_error(measured.size, r.size);
-        o.bbox_error = Some(be);
-        let ve = r.volume.filter(|v| *v > 0.0).map(|v| (measured.volume - v).abs() / v);
-        o.volume_error = ve;
-        o.pass = Some(be <= SIZE_TOL && ve.is_none_or(|e| e <= VOLUME_TOL));
-        if let Some(path) = &r.mesh {
-            match mesh_io::read_untrusted_stl(path, 256 << 20) {
-                Ok(reference_mesh) => o.chamfer_mm = chamfer_distance(&run.mesh, &reference_mesh, 2000),
-                Err(e) => o.message = Some(format!("reference mesh: {e}")),
-            }
+    compare(&mut o, &run.mesh, reference);
+    o
+}
+
+/// One prompt through the generation loop with the model as writer: the prompt is the
+/// description (its dimensions are in its words), up to three attempts.
+fn one_by_model(runner: &CadRunner, writer: &dyn CodeWriter, p: &Prompt, reference: Option<&Reference>) -> Outcome {
+    let mut o = blank(p);
+    o.template = Some(writer.name());
+    let request = PartRequest { description: p.text.clone(), size_m: None };
+    let t = Instant::now();
+    match forge(runner, writer, &request, LoopConfig::default()) {
+        ForgeOutcome::Made(part) => {
+            o.retries = part.attempts.len().saturating_sub(1) as u32;
+            o.roundtrip_ms = Some(t.elapsed().as_secs_f64() * 1e3);
+            o.executed = true;
+            compare(&mut o, &part.mesh_mm, reference);
         }
-        if o.pass == Some(false) && o.failure.is_none() {
-            o.failure = Some(if be > SIZE_TOL { FailureKind::ScaleMismatch } else { FailureKind::SemanticMismatch });
-            o.message = Some(format!(
-                "against the reference: extents off by {:.2} %, volume by {}",
-                100.0 * be,
-                ve.map_or("-".into(), |v| format!("{:.2} %", 100.0 * v))
-            ));
+        ForgeOutcome::Failed { attempts, .. } => {
+            o.retries = attempts.len().saturating_sub(1) as u32;
+            if let Some(f) = attempts.last().and_then(|a| a.failure.as_ref()) {
+                o.failure = Some(f.kind);
+                o.message = Some(f.message.lines().next().unwrap_or("").to_string());
+            }
         }
     }
     o
+}
+
+/// Measures an executed part against the suite's reference, when there is one.
+fn compare(o: &mut Outcome, mesh: &sw_geom::Mesh, reference: Option<&Reference>) {
+    let Some(r) = reference else { return };
+    let measured = validate::measure(mesh);
+    let be = extent_error(measured.size, r.size);
+    o.bbox_error = Some(be);
+    let ve = r.volume.filter(|v| *v > 0.0).map(|v| (measured.volume - v).abs() / v);
+    o.volume_error = ve;
+    o.pass = Some(be <= SIZE_TOL && ve.is_none_or(|e| e <= VOLUME_TOL));
+    if let Some(path) = &r.mesh {
+        match mesh_io::read_untrusted_stl(path, 256 << 20) {
+            Ok(reference_mesh) => o.chamfer_mm = chamfer_distance(mesh, &reference_mesh, 2000),
+            Err(e) => o.message = Some(format!("reference mesh: {e}")),
+        }
+    }
+    if o.pass == Some(false) && o.failure.is_none() {
+        o.failure = Some(if be > SIZE_TOL { FailureKind::ScaleMismatch } else { FailureKind::SemanticMismatch });
+        o.message = Some(format!(
+            "against the reference: extents off by {:.2} %, volume by {}",
+            100.0 * be,
+            ve.map_or("-".into(), |v| format!("{:.2} %", 100.0 * v))
+        ));
+    }
 }
 
 fn median(mut v: Vec<f64>) -> Option<f64> {
@@ -252,6 +305,7 @@ fn summarize<'a>(outcomes: impl Iterator<Item = &'a Outcome>) -> TierSummary {
         s.prompts += 1;
         s.executed += usize::from(o.executed);
         s.retries += o.retries;
+        s.retried += usize::from(o.retries > 0);
         if let Some(k) = o.failure {
             *s.failures.entry(k.name().to_string()).or_default() += 1;
         }
@@ -273,8 +327,34 @@ fn summarize<'a>(outcomes: impl Iterator<Item = &'a Outcome>) -> TierSummary {
     s
 }
 
-pub(crate) fn run(suite: &str, workers: usize, latency_repeat: usize, json: bool) -> Result<u8, Failure> {
+/// Who writes the code.
+#[derive(Debug, Clone)]
+pub(crate) enum Writer {
+    Template,
+    /// The CAD stage's model of this configuration.
+    Model(sw_llm::LlmConfig),
+}
+
+pub(crate) fn run(
+    suite: &str,
+    writer: Writer,
+    workers: usize,
+    latency_repeat: usize,
+    json: bool,
+) -> Result<u8, Failure> {
     let (name, prompts, refs) = load(suite)?;
+    let model = match &writer {
+        Writer::Template => None,
+        Writer::Model(cfg) => {
+            if cfg.endpoint(sw_llm::LlmStage::Cad).is_none() {
+                return Err(Failure::input(
+                    "--writer llm needs a model for the CAD stage: set SCENEWRIGHT_LLM_BASE_URL and SCENEWRIGHT_LLM_MODEL \
+                     (or SCENEWRIGHT_LLM_CAD_MODEL), or pass --llm-config FILE",
+                ));
+            }
+            Some(LlmWriter::new(sw_llm::Client::new(cfg.clone())))
+        }
+    };
     let runner = crate::cmd_forge::start_runner(workers)?;
     // Every worker warm before the clock starts.
     runner.wait_idle(workers.max(1), std::time::Duration::from_secs(120));
@@ -287,7 +367,10 @@ pub(crate) fn run(suite: &str, workers: usize, latency_repeat: usize, json: bool
                 loop {
                     let i = next.fetch_add(1, Ordering::Relaxed);
                     let Some(p) = prompts.get(i) else { break };
-                    let o = one(&runner, p, refs.get(&p.id));
+                    let o = match &model {
+                        Some(w) => one_by_model(&runner, w, p, refs.get(&p.id)),
+                        None => one(&runner, p, refs.get(&p.id)),
+                    };
                     results.lock().unwrap_or_else(|e| e.into_inner()).push(o);
                 }
             });
@@ -333,14 +416,27 @@ pub(crate) fn run(suite: &str, workers: usize, latency_repeat: usize, json: bool
     }
     let target_ids: Vec<&str> = prompts.iter().filter(|p| is_target(p)).map(|p| p.id.as_str()).collect();
     let target = summarize(outcomes.iter().filter(|o| target_ids.contains(&o.id.as_str())));
+    let model_calls = model.as_ref().map(|w| {
+        let calls = w.take_calls();
+        let mut latency: Vec<f64> = calls.iter().map(|c| c.latency_ms).collect();
+        ModelCalls {
+            model: calls.first().map_or_else(String::new, |c| c.model.clone()),
+            calls: calls.len(),
+            tokens_in: calls.iter().map(|c| c.tokens_in).sum(),
+            tokens_out: calls.iter().map(|c| c.tokens_out).sum(),
+            median_latency_ms: median(std::mem::take(&mut latency)),
+        }
+    });
     let bench = CadBench {
         suite: name,
+        writer: model.as_ref().map_or_else(|| "template".to_string(), CodeWriter::name),
         workers: workers.max(1),
         wall_s,
         parts_per_s: outcomes.len() as f64 / wall_s.max(1e-9),
         tiers,
         target,
         warm_latency,
+        model_calls,
         outcomes,
     };
     if json {
@@ -357,15 +453,16 @@ fn pct(n: usize, d: usize) -> String {
 
 fn render(b: &CadBench) -> String {
     let mut s = format!(
-        "suite {} · {} prompts · {} worker(s) · {:.1} s wall ({:.1} parts/s)\n\n",
+        "suite {} · writer {} · {} prompts · {} worker(s) · {:.1} s wall ({:.1} parts/s)\n\n",
         b.suite,
+        b.writer,
         b.outcomes.len(),
         b.workers,
         b.wall_s,
         b.parts_per_s
     );
     s.push_str(
-        "tier      prompts executed  ref  bbox≤1%  vol≤2%  pass  retries  median bbox err  median vol err  failures\n",
+        "tier      prompts executed  ref  bbox≤1%  vol≤2%  pass  retried  median bbox err  median vol err  failures\n",
     );
     let mut line = |name: &str, t: &TierSummary| {
         let fails: Vec<String> = t.failures.iter().map(|(k, n)| format!("{k} {n}")).collect();
@@ -377,7 +474,7 @@ fn render(b: &CadBench) -> String {
             pct(t.bbox_within_1pct, t.with_reference),
             pct(t.volume_within_2pct, t.with_reference),
             pct(t.passed, t.with_reference),
-            t.retries,
+            pct(t.retried, t.prompts),
             t.median_bbox_error.map_or("-".into(), |e| format!("{:.3} %", 100.0 * e)),
             t.median_volume_error.map_or("-".into(), |e| format!("{:.3} %", 100.0 * e)),
             fails.join(", ")
@@ -391,6 +488,16 @@ fn render(b: &CadBench) -> String {
         s.push_str(&format!(
             "\nwarm runner, simple parts: median {:.0} ms · p95 {:.0} ms · min {:.0} ms over {} jobs\n",
             l.median_ms, l.p95_ms, l.min_ms, l.jobs
+        ));
+    }
+    if let Some(m) = &b.model_calls {
+        s.push_str(&format!(
+            "\nmodel {}: {} calls · {} tokens in / {} out · median latency {}\n",
+            m.model,
+            m.calls,
+            m.tokens_in,
+            m.tokens_out,
+            m.median_latency_ms.map_or("-".into(), |l| format!("{l:.0} ms"))
         ));
     }
     let failed: Vec<&Outcome> = b.outcomes.iter().filter(|o| o.failure.is_some()).collect();

@@ -65,6 +65,13 @@ pub(crate) enum BenchCommand {
         /// Times the executed T1 parts are run again, one at a time, for the latency.
         #[arg(long, default_value_t = 3)]
         latency_repeat: usize,
+        /// Who writes the code: `template` (the offline synthesizer) or `llm` (the CAD
+        /// stage's model, SCENEWRIGHT_LLM_* or --llm-config; up to three attempts).
+        #[arg(long, default_value = "template")]
+        writer: String,
+        /// Endpoints for `--writer llm` (the environment overrides the file).
+        #[arg(long)]
+        llm_config: Option<PathBuf>,
         #[arg(long)]
         json: bool,
     },
@@ -129,8 +136,13 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
         BenchCommand::Server(b) => crate::bench_server::run(b),
         BenchCommand::Scenes { suite, prompt, seeds, repeat, json } => scenes(suite, prompt, seeds, repeat, json),
         BenchCommand::Assets { seeds, only, json } => assets(seeds, &only, json),
-        BenchCommand::Cad { suite, workers, latency_repeat, json } => {
-            crate::bench_cad::run(&suite, workers, latency_repeat, json)
+        BenchCommand::Cad { suite, workers, latency_repeat, writer, llm_config, json } => {
+            let writer = match writer.as_str() {
+                "template" => crate::bench_cad::Writer::Template,
+                "llm" => crate::bench_cad::Writer::Model(crate::cmd_llm::config(llm_config.as_deref())?),
+                other => return Err(Failure::input(format!("--writer {other}: it may be 'template' or 'llm'"))),
+            };
+            crate::bench_cad::run(&suite, writer, workers, latency_repeat, json)
         }
         BenchCommand::AssetIndex { assets, json } => crate::bench_index::run(assets, json),
         BenchCommand::LlmLatency { runs, time_scale, seed, json } => {

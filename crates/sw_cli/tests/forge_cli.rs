@@ -158,6 +158,64 @@ fn bench_cad_measures_against_references_and_catches_a_wrong_one() {
 }
 
 #[test]
+fn bench_cad_with_the_model_writing_counts_attempts_and_measures_its_parts() {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let cube_asks = std::sync::Arc::new(AtomicUsize::new(0));
+    let asks = std::sync::Arc::clone(&cube_asks);
+    let model = sw_mockllm::MockServer::start(move |req| {
+        // The prompt is in the first user message; a retry's last one is the failure.
+        if req.messages().iter().any(|(_, c)| c.contains("cube")) {
+            // First a syntax error; the error fed back, then the right part.
+            if asks.fetch_add(1, Ordering::SeqCst) == 0 {
+                return sw_mockllm::Reply::answer("```python\nimport cadquery as cq\nresult = (\n```");
+            }
+            return sw_mockllm::Reply::answer(
+                "```python\nimport cadquery as cq\nresult = cq.Workplane('XY').box(20, 20, 20)\n```",
+            );
+        }
+        sw_mockllm::Reply::answer("```python\nimport cadquery as cq\nresult = cq.Workplane('XY').cylinder(8, 25)\n```")
+    })
+    .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let suite = dir.path().join("llm.tsv");
+    std::fs::write(&suite, "B1\tT1\tA cube with 20mm sides.\nB2\tT3\tA round hockey puck.\n").unwrap();
+    std::fs::write(dir.path().join("llm.refs.tsv"), "B1\t20\t20\t20\t8000\t-\n").unwrap();
+    let bench = |writer: &str, with_endpoint: bool| {
+        let mut c = Command::new(BIN);
+        c.args(["bench", "cad", "--suite", suite.to_str().unwrap(), "--workers", "1", "--latency-repeat", "0"])
+            .args(["--writer", writer, "--json"]);
+        if with_endpoint {
+            c.env("SCENEWRIGHT_LLM_BASE_URL", model.base_url()).env("SCENEWRIGHT_LLM_MODEL", "m-cad");
+        }
+        let o = c.output().unwrap();
+        (
+            o.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&o.stdout).into_owned(),
+            String::from_utf8_lossy(&o.stderr).into_owned(),
+        )
+    };
+    let (code, stdout, stderr) = bench("llm", true);
+    assert_eq!(code, 0, "{stderr}");
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(v["writer"], "llm:m-cad");
+    let outcomes = v["outcomes"].as_array().unwrap();
+    let by_id = |id: &str| outcomes.iter().find(|o| o["id"] == id).unwrap();
+    assert_eq!(by_id("B1")["executed"], true);
+    assert_eq!(by_id("B1")["retries"], 1, "one failed attempt, fed back");
+    assert_eq!(by_id("B1")["pass"], true, "{}", by_id("B1"));
+    assert_eq!(by_id("B2")["executed"], true);
+    assert_eq!(by_id("B2")["retries"], 0);
+    assert_eq!(v["tiers"]["T1"]["retried"], 1);
+    assert_eq!(v["model_calls"]["calls"], 3);
+    // Without a CAD model, or with an unknown writer: one line, exit 2.
+    let (code, _, stderr) = bench("llm", false);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("CAD stage"), "{stderr}");
+    let (code, _, stderr) = bench("oracle", true);
+    assert_eq!(code, 2, "{stderr}");
+}
+
+#[test]
 fn bench_cad_refuses_an_unknown_suite() {
     let (code, _, stderr) = run(&["bench", "cad", "--suite", "no_such_suite"]);
     assert_eq!(code, 2);
