@@ -41,26 +41,18 @@ pub(crate) fn tokens(s: &str) -> Vec<String> {
     spaced.split_whitespace().map(str::to_string).collect()
 }
 
+/// A number in an edit: digits, "a"/"an" (one), "half", or one of the planner's number
+/// words — except "no", which in a command is a refusal, not a count.
 pub(crate) fn number(w: &str) -> Option<f64> {
     if let Ok(v) = w.parse::<f64>() {
         return v.is_finite().then_some(v);
     }
-    Some(match w {
-        "a" | "an" | "one" => 1.0,
-        "two" => 2.0,
-        "three" => 3.0,
-        "four" => 4.0,
-        "five" => 5.0,
-        "six" => 6.0,
-        "seven" => 7.0,
-        "eight" => 8.0,
-        "nine" => 9.0,
-        "ten" => 10.0,
-        "twelve" | "dozen" => 12.0,
-        "twenty" => 20.0,
-        "half" => 0.5,
-        _ => return None,
-    })
+    match w {
+        "a" | "an" => Some(1.0),
+        "half" => Some(0.5),
+        "no" => None,
+        _ => vocab::number_word(w),
+    }
 }
 
 pub(crate) fn unit(w: &str) -> Option<f64> {
@@ -379,4 +371,22 @@ pub(crate) fn resize_of(t: &[String]) -> Result<Resize, String> {
         }
     }
     Ok(r)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_the_planners_words_plus_articles_and_half() {
+        assert_eq!(number("3"), Some(3.0));
+        assert_eq!(number("a"), Some(1.0));
+        assert_eq!(number("half"), Some(0.5));
+        assert_eq!(number("eleven"), Some(11.0), "beyond the old table");
+        assert_eq!(number("twenty-five"), Some(25.0));
+        assert_eq!(number("dozen"), Some(12.0));
+        assert_eq!(number("no"), None, "a refusal, not zero");
+        assert_eq!(number("inf"), None);
+        assert_eq!(number("chair"), None);
+    }
 }

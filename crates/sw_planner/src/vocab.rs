@@ -179,6 +179,12 @@ pub fn robot_model(name: &str) -> Option<(&'static str, Option<String>)> {
     Some((def.name, Some(format!("'{wants}' is not in the robot registry yet; used the built-in {}", def.display))))
 }
 
+/// The value of a number word ("seven", "dozen", "twenty-five", "pair"; "no" is 0), as
+/// the planner reads counts.
+pub fn number_word(w: &str) -> Option<f64> {
+    crate::text::number_word(w)
+}
+
 /// A labelled stand-in for `label`, sized by the prior its head noun suggests, scaled by
 /// size words and overridden by explicit dimensions; sides kept within 2 cm … 20 m.
 pub fn proxy(label: &str, resting_on_something: bool, sizes: &[SizeWord], explicit: &ExplicitSize) -> ProxyPlan {
