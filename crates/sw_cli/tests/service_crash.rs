@@ -15,21 +15,46 @@ use serde_json::{Value, json};
 
 const BIN: &str = env!("CARGO_BIN_EXE_scenewright");
 
+/// A child process that is killed when dropped, so a failing test leaves none behind.
+struct Proc(Child);
+
+impl std::ops::Deref for Proc {
+    type Target = Child;
+    fn deref(&self) -> &Child {
+        &self.0
+    }
+}
+
+impl std::ops::DerefMut for Proc {
+    fn deref_mut(&mut self) -> &mut Child {
+        &mut self.0
+    }
+}
+
+impl Drop for Proc {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
 /// A `scenewright serve`, and the address it printed.
-fn serve(data: &Path, workers: usize) -> (Child, SocketAddr) {
+fn serve(data: &Path, workers: usize) -> (Proc, SocketAddr) {
     serve_on(data, None, workers)
 }
 
-fn serve_on(data: &Path, database: Option<&str>, workers: usize) -> (Child, SocketAddr) {
-    let mut child = Command::new(BIN)
-        .args(["serve", "--addr", "127.0.0.1:0", "--lease-ms", "1500", "--workers", &workers.to_string(), "--data"])
-        .arg(data)
-        .args(database.map(|d| vec!["--database", d]).unwrap_or_default())
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+fn serve_on(data: &Path, database: Option<&str>, workers: usize) -> (Proc, SocketAddr) {
+    let mut child = Proc(
+        Command::new(BIN)
+            .args(["serve", "--addr", "127.0.0.1:0", "--lease-ms", "1500", "--workers", &workers.to_string(), "--data"])
+            .arg(data)
+            .args(database.map(|d| vec!["--database", d]).unwrap_or_default())
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap(),
+    );
     let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
     let addr = loop {
         let line = lines.next().expect("serve exited before listening").unwrap();
@@ -42,20 +67,22 @@ fn serve_on(data: &Path, database: Option<&str>, workers: usize) -> (Child, Sock
     (child, addr)
 }
 
-fn worker(data: &Path, workers: usize) -> Child {
+fn worker(data: &Path, workers: usize) -> Proc {
     worker_on(data, None, workers)
 }
 
-fn worker_on(data: &Path, database: Option<&str>, workers: usize) -> Child {
-    Command::new(BIN)
-        .args(["worker", "--lease-ms", "1500", "--workers", &workers.to_string(), "--data"])
-        .arg(data)
-        .args(database.map(|d| vec!["--database", d]).unwrap_or_default())
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap()
+fn worker_on(data: &Path, database: Option<&str>, workers: usize) -> Proc {
+    Proc(
+        Command::new(BIN)
+            .args(["worker", "--lease-ms", "1500", "--workers", &workers.to_string(), "--data"])
+            .arg(data)
+            .args(database.map(|d| vec!["--database", d]).unwrap_or_default())
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    )
 }
 
 fn http(addr: SocketAddr, method: &str, path: &str, token: Option<&str>, body: Option<Value>) -> (u16, Value) {
@@ -273,17 +300,19 @@ fn held_by(data: &Path, database: Option<&str>, pid: u32) -> Vec<String> {
 }
 
 /// A `scenewright serve --log-format json` whose stderr lines are collected.
-fn serve_json(data: &Path) -> (Child, SocketAddr, Arc<Mutex<Vec<String>>>) {
-    let mut child = Command::new(BIN)
-        .args(["serve", "--addr", "127.0.0.1:0", "--workers", "1", "--log-format", "json", "--data"])
-        .arg(data)
-        .env_remove("SCENEWRIGHT_LOG")
-        .env_remove("SCENEWRIGHT_LOG_FORMAT")
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+fn serve_json(data: &Path) -> (Proc, SocketAddr, Arc<Mutex<Vec<String>>>) {
+    let mut child = Proc(
+        Command::new(BIN)
+            .args(["serve", "--addr", "127.0.0.1:0", "--workers", "1", "--log-format", "json", "--data"])
+            .arg(data)
+            .env_remove("SCENEWRIGHT_LOG")
+            .env_remove("SCENEWRIGHT_LOG_FORMAT")
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap(),
+    );
     let lines = Arc::new(Mutex::new(Vec::new()));
     let (tx, rx) = std::sync::mpsc::channel();
     let stderr = child.stderr.take().unwrap();
@@ -373,16 +402,18 @@ fn the_log_format_also_comes_from_the_environment_and_a_bad_one_is_one_line() {
     assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1);
 
     // A worker started with SCENEWRIGHT_LOG_FORMAT=json logs JSON from its first line.
-    let mut w = Command::new(BIN)
-        .args(["worker", "--workers", "1", "--data"])
-        .arg(&data)
-        .env("SCENEWRIGHT_LOG_FORMAT", "json")
-        .env_remove("SCENEWRIGHT_LOG")
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut w = Proc(
+        Command::new(BIN)
+            .args(["worker", "--workers", "1", "--data"])
+            .arg(&data)
+            .env("SCENEWRIGHT_LOG_FORMAT", "json")
+            .env_remove("SCENEWRIGHT_LOG")
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap(),
+    );
     let mut lines = BufReader::new(w.stderr.take().unwrap()).lines();
     let first = lines.next().expect("the worker logged nothing").unwrap();
     kill9(&mut w);
