@@ -14,7 +14,11 @@ use crate::store::AssetId;
 /// `bench/forge/label_pairs.tsv` (see BENCHMARKS.md).
 pub const DEFAULT_THRESHOLD: f32 = 0.55;
 
-const MAGIC: &[u8; 8] = b"SWIDX001";
+/// The file's magic, with the version of the vectors it holds: bumped whenever the
+/// embedder's vectors change (002: the tokenizer fixed for non-ASCII input and 256-token
+/// inputs), so an index of older vectors fails to load and the library rebuilds it from
+/// the store.
+const MAGIC: &[u8; 8] = b"SWIDX002";
 
 /// One indexed asset.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -146,6 +146,13 @@ fn opening_brings_the_index_up_to_date_with_the_store() {
     assert_eq!(lib.lookup("road cone", None).unwrap().unwrap().record.id, cone.id);
     assert!(lib.search("coffee mug", 2).unwrap().iter().all(|h| h.id != mug.id));
     drop(lib);
+    // An index of an older embedder's vectors is rebuilt from the store.
+    let mut bin = std::fs::read(dir.path().join("index.bin")).unwrap();
+    bin[..8].copy_from_slice(b"SWIDX001");
+    std::fs::write(dir.path().join("index.bin"), &bin).unwrap();
+    let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
+    assert_eq!(lib.opened_with(), Sync { added: 2, dropped: 0, rebuilt: true });
+    drop(lib);
     // A damaged index is rebuilt from the store, not fatal.
     std::fs::write(dir.path().join("index.bin"), b"garbage").unwrap();
     let lib = AssetLibrary::open(dir.path(), MiniLm::load_default().unwrap()).unwrap();
