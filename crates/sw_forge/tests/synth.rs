@@ -48,6 +48,7 @@ const PROMPTS: &[(&str, &str)] = &[
         "plate_with_holes",
         "A mounting plate 80mm (X) by 60mm (Y) by 5mm thick (Z) with four M4 holes 8mm inset from each corner",
     ),
+    ("plate_with_holes", "A mounting plate 120mm x 80mm x 6mm with four 8mm holes"),
     (
         "plate_with_holes",
         "A plate with counterbored holes: 60mm (X) by 40mm (Y) by 8mm thick (Z). Four counterbored holes at the corners, each positioned 8mm inset from the nearest edges. Each hole is 5.5mm diameter through the full thickness, with a 10mm diameter counterbore 3mm deep on the top face (+Z).",

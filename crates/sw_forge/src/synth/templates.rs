@@ -692,6 +692,13 @@ fn plate_with_holes(r: &Reading) -> Outcome {
     let s = block_dims(r)?;
     let [x, y, t] = s;
     let hole = r.diameter(&["hole"], &["counterbore"]).or_else(|| r.diameter(&[], &["counterbore", "pitch", "bolt"]));
+    // "four 8mm holes": a bare size that qualifies the holes is their diameter.
+    let hole = hole.or_else(|| {
+        r.dims
+            .iter()
+            .find(|d| d.role == Role::Bare && d.has("hole") && d.list.is_none() && d.axis.is_none())
+            .map(|d| d.mm)
+    });
     let d = need(hole, "hole diameter")?;
     let count = r.count("hole").unwrap_or(4);
     let inset = r.mm(Role::Inset, &[], &[]);
