@@ -12,6 +12,7 @@ use tracing::{info_span, warn};
 
 use crate::failure::{Failure, FailureKind};
 use crate::runner::{CadJob, CadRunner};
+use crate::store::{AssetId, AssetRecord};
 use crate::validate::{self, MeshReport, Orientation, Target};
 use crate::{mesh_io, synth};
 
@@ -166,6 +167,28 @@ pub struct Forged {
 }
 
 impl Forged {
+    /// The part as the asset store keeps it: binary STL in metres, and its record
+    /// (`label` is what the index embeds; `extra` adds to the attempts and volume).
+    pub fn stored(&self, label: &str, description: &str, extra: serde_json::Value) -> (Vec<u8>, AssetRecord) {
+        let stl = mesh_io::stl_bytes_mm_as_m(&self.mesh_mm, "generated");
+        let b = self.report.size;
+        let mut all = serde_json::json!({ "attempts": self.attempts.len(), "volume_mm3": self.report.volume });
+        if let (Some(all), serde_json::Value::Object(more)) = (all.as_object_mut(), extra) {
+            all.extend(more);
+        }
+        let record = AssetRecord {
+            id: AssetId::of(&stl),
+            label: label.trim().to_string(),
+            description: description.to_string(),
+            source: self.writer.clone(),
+            size_m: [b[0] * 1e-3, b[1] * 1e-3, b[2] * 1e-3],
+            triangles: self.report.triangles,
+            code: Some(self.code.clone()),
+            extra: all,
+        };
+        (stl, record)
+    }
+
     /// The part as a scene asset in metres: its mesh as the visual, its convex
     /// decomposition as collision, standing on z = 0.
     pub fn asset(&self, category: &str, mass_kg: Option<f64>, placement: sw_geom::PlacementKind) -> sw_geom::Asset {

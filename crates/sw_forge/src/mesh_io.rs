@@ -121,6 +121,14 @@ pub fn scaled(mesh: &Mesh, factor: f64) -> Mesh {
     }
 }
 
+/// Binary STL bytes, in metres, of a mesh in millimetres.
+pub fn stl_bytes_mm_as_m(mesh_mm: &Mesh, name: &str) -> Vec<u8> {
+    let mut bytes = Vec::new();
+    // Writing into a Vec cannot fail.
+    let _ = sw_geom::write_stl(&mut bytes, &scaled(mesh_mm, 1e-3), name);
+    bytes
+}
+
 /// Removes triangles whose corners are not three distinct vertices (CAD kernels leave
 /// them at the poles of spheres and cones). Returns how many were removed.
 pub fn drop_collapsed_triangles(mesh: &mut Mesh) -> usize {

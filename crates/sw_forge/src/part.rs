@@ -137,11 +137,7 @@ pub struct PartFiles {
 
 /// Binary STL bytes of the part in metres.
 pub fn stl_bytes_m(part: &GeneratedPart) -> Vec<u8> {
-    let mesh_m = mesh_io::scaled(&part.mesh_mm, 1e-3);
-    let mut bytes = Vec::new();
-    // Writing into a Vec cannot fail.
-    let _ = sw_geom::write_stl(&mut bytes, &mesh_m, &part.synthesis.template);
-    bytes
+    mesh_io::stl_bytes_mm_as_m(&part.mesh_mm, &part.synthesis.template)
 }
 
 /// Writes `part.stl` (metres), `part.py`, `part.json` and `preview.png` into `dir`.

@@ -11,7 +11,6 @@ use std::sync::{Arc, Mutex};
 use sw_forge::generate::{CodeWriter, ForgeOutcome, LoopConfig, PartRequest, forge};
 use sw_forge::library::AssetLibrary;
 use sw_forge::runner::CadRunner;
-use sw_forge::store::{AssetId, AssetRecord};
 use sw_geom::{Asset, PlacementKind};
 use sw_plan::ObjectPlan;
 
@@ -68,14 +67,6 @@ impl ForgeSource {
     }
 }
 
-/// Binary STL of a mm mesh, in metres.
-fn stl_m(mesh_mm: &sw_geom::Mesh) -> Vec<u8> {
-    let m = sw_forge::mesh_io::scaled(mesh_mm, 1e-3);
-    let mut bytes = Vec::new();
-    let _ = sw_geom::write_stl(&mut bytes, &m, "generated");
-    bytes
-}
-
 impl AssetSource for ForgeSource {
     fn name(&self) -> &str {
         "forge"
@@ -115,18 +106,8 @@ impl AssetSource for ForgeSource {
                         let category = format!("generated_{}", proxy.label.replace(' ', "_"));
                         let a = part.asset(&category, mass, placement);
                         if let Some(lib) = &self.library {
-                            let stl = stl_m(&part.mesh_mm);
-                            let b = part.report.size;
-                            let record = AssetRecord {
-                                id: AssetId::of(&stl),
-                                label: proxy.label.clone(),
-                                description: group.phrase.clone(),
-                                source: part.writer.clone(),
-                                size_m: [b[0] * 1e-3, b[1] * 1e-3, b[2] * 1e-3],
-                                triangles: part.report.triangles,
-                                code: Some(part.code.clone()),
-                                extra: serde_json::json!({ "mass_kg": mass, "attempts": part.attempts.len() }),
-                            };
+                            let (stl, record) =
+                                part.stored(&proxy.label, &group.phrase, serde_json::json!({ "mass_kg": mass }));
                             if let Err(e) = lib.add(&stl, record) {
                                 out.warnings.push(forge_warning(
                                     "asset_not_stored",
