@@ -81,6 +81,8 @@ pub struct AssetLibrary {
     embedder: MiniLm,
     threshold: f32,
     last_sync: Sync,
+    /// When the index was last brought up to date with the store.
+    synced_at: Mutex<std::time::Instant>,
 }
 
 impl std::fmt::Debug for AssetLibrary {
@@ -128,6 +130,7 @@ impl AssetLibrary {
             embedder,
             threshold: DEFAULT_THRESHOLD,
             last_sync: Sync::default(),
+            synced_at: Mutex::new(std::time::Instant::now()),
         };
         let mut sync = lib.sync()?;
         sync.rebuilt = rebuilt;
@@ -138,6 +141,13 @@ impl AssetLibrary {
     /// What the last [`AssetLibrary::sync`] at opening did.
     pub fn opened_with(&self) -> Sync {
         self.last_sync
+    }
+
+    /// [`AssetLibrary::sync`] when the last one is older than `max_age` (listing a bucket
+    /// on every request would put a round trip on the hot path); `None` when it was fresh.
+    pub fn sync_if_older(&self, max_age: std::time::Duration) -> Result<Option<Sync>, LibraryError> {
+        let stale = self.synced_at.lock().map_or(true, |t| t.elapsed() >= max_age);
+        if stale { self.sync().map(Some) } else { Ok(None) }
     }
 
     /// Brings the index up to date with the store: embeds what it lacks, drops what the
@@ -159,6 +169,9 @@ impl AssetLibrary {
             index.upsert(r.id.clone(), r.label.clone(), v)?;
         }
         let sync = Sync { added: missing.len(), dropped, rebuilt: false };
+        if let Ok(mut t) = self.synced_at.lock() {
+            *t = std::time::Instant::now();
+        }
         if sync.added > 0 || sync.dropped > 0 || !self.index_dir.join("index.bin").exists() {
             index.save(&self.index_dir)?;
         }

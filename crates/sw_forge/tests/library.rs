@@ -145,6 +145,9 @@ fn opening_brings_the_index_up_to_date_with_the_store() {
     assert_eq!(lib.len(), 2);
     assert_eq!(lib.lookup("road cone", None).unwrap().unwrap().record.id, cone.id);
     assert!(lib.search("coffee mug", 2).unwrap().iter().all(|h| h.id != mug.id));
+    // A fresh index is not re-read on every request; a stale one is.
+    assert_eq!(lib.sync_if_older(std::time::Duration::from_secs(60)).unwrap(), None);
+    assert_eq!(lib.sync_if_older(std::time::Duration::ZERO).unwrap(), Some(Sync::default()));
     drop(lib);
     // An index of an older embedder's vectors is rebuilt from the store.
     let mut bin = std::fs::read(dir.path().join("index.bin")).unwrap();

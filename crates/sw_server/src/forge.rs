@@ -16,6 +16,10 @@ use sw_forge::store::{AssetId, AssetRecord, StoreError};
 use sw_llm::{Client, LlmConfig, LlmStage};
 use sw_pipeline::{AssetSource, ForgeSource};
 
+/// How stale the asset index may be before a request re-reads the store (other
+/// processes' new assets become reusable within this).
+const SYNC_AGE: Duration = Duration::from_secs(10);
+
 /// How long one asset may take end to end (every attempt of the loop).
 pub const ASSET_TIMEOUT: Duration = Duration::from_secs(180);
 
@@ -109,7 +113,7 @@ impl AssetForge {
     pub fn make(&self, description: &str, size_m: Option<[f64; 3]>) -> Result<Made, ForgeError> {
         let library = self.library()?;
         // Another process may have stored it since this one synced.
-        if let Err(e) = library.sync() {
+        if let Err(e) = library.sync_if_older(SYNC_AGE) {
             tracing::warn!("asset index sync failed: {e}");
         }
         match library.lookup(description, size_m) {
@@ -134,24 +138,7 @@ impl AssetForge {
         let t = std::time::Instant::now();
         match forge(runner, writer.as_ref(), &request, LoopConfig::default()) {
             ForgeOutcome::Made(part) => {
-                let stl = {
-                    let m = sw_forge::mesh_io::scaled(&part.mesh_mm, 1e-3);
-                    let mut bytes = Vec::new();
-                    sw_geom::write_stl(&mut bytes, &m, "generated")
-                        .map_err(|e| ForgeError::Unavailable(format!("writing the mesh: {e}")))?;
-                    bytes
-                };
-                let b = part.report.size;
-                let record = AssetRecord {
-                    id: AssetId::of(&stl),
-                    label: description.trim().to_string(),
-                    description: description.to_string(),
-                    source: part.writer.clone(),
-                    size_m: [b[0] * 1e-3, b[1] * 1e-3, b[2] * 1e-3],
-                    triangles: part.report.triangles,
-                    code: Some(part.code.clone()),
-                    extra: json!({ "attempts": part.attempts.len(), "volume_mm3": part.report.volume }),
-                };
+                let (stl, record) = part.stored(description, description, json!({}));
                 let record = library.add(&stl, record).map_err(|e| ForgeError::Unavailable(e.to_string()))?;
                 let meta = json!({
                     "source": "generated",
@@ -189,7 +176,7 @@ impl AssetForge {
         let source = ForgeSource::new(runner, Arc::new(LlmWriter::new(client.clone())), LoopConfig::default());
         Ok(match self.library() {
             Ok(library) => {
-                if let Err(e) = library.sync() {
+                if let Err(e) = library.sync_if_older(SYNC_AGE) {
                     tracing::warn!("asset index sync failed: {e}");
                 }
                 Arc::new(source.with_library(Arc::clone(library)))
