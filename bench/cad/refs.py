@@ -1,132 +1,138 @@
-"""Writes standard_100.refs.tsv: the reference extents and volumes of standard_100's T1 and
-T2 prompts, computed by hand from each prompt's text (independent of the synthesizer).
-Run: python3 bench/cad/refs.py (from the checkout root)."""
-from math import pi, sqrt, sin, radians
-import os
+"""Builds the reference parts of a CAD suite and writes its references table.
 
-R3 = sqrt(3)
+For SUITE (standard_100, features …) it runs every section of SUITE.ref.py — one CadQuery
+program per prompt, written by hand from the prompt's words — measures the exact solid
+(OCCT's volume and tight bounding box), checks it against the closed formulas of
+formulas_SUITE.py (written separately; the two routes must agree) and writes
+SUITE.refs.tsv, which `scenewright bench cad` compares the synthesizer's parts with.
+Nothing here reads or imports the synthesizer.
 
-
-def hexa(R):  # regular hexagon, circumradius R
-    return 3 * R3 / 2 * R * R
-
-
-def ngon(n, R):
-    return n / 2 * R * R * sin(2 * pi / n)
-
-
-def star(n, R, r):  # star polygon of n points between radii R and r
-    return n * R * r * sin(pi / n)
-
-
-def steiner(a, b, c, r):  # box with every edge filleted r
-    p, q, t = a - 2 * r, b - 2 * r, c - 2 * r
-    return p * q * t + 2 * (p * q + q * t + p * t) * r + pi * (p + q + t) * r * r + 4 / 3 * pi * r**3
-
-
-def cyl_chamfer(R, h, k):  # both circular edges chamfered k (Pappus)
-    return pi * R * R * h - 2 * 2 * pi * (R - k / 3) * (k * k / 2)
-
-
-def cyl_fillet(R, h, f):  # both circular edges filleted f (Pappus)
-    A = f * f * (1 - pi / 4)
-    xb = f * (5 / 6 - pi / 4) / (1 - pi / 4)
-    return pi * R * R * h - 2 * 2 * pi * (R - xb) * A
-
-
-def box_chamfer(a, b, c, k):  # every edge chamfered k
-    return a * b * c - 2 * k * k * (a + b + c) + 6 * k**3
-
-
-ROWS = [
-    ("T1_001", (50, 30, 20), 50 * 30 * 20),
-    ("T1_002", (25, 25, 40), pi * 12.5**2 * 40),
-    ("T1_003", (30, 30, 30), 4 / 3 * pi * 15**3),
-    ("T1_004", (30, 30, 45), pi * 15**2 * 45 / 3),
-    ("T1_005", (40, 40, 40), 40**3),
-    ("T1_006", (100, 60, 3), 100 * 60 * 3),
-    ("T1_007", (20, 10 * R3, 35), hexa(10) * 35),
-    ("T1_008", (50, 50, 25), 2 / 3 * pi * 25**3),
-    ("T1_009", (50, 50, 2), pi * 625 * 2),
-    ("T1_010", (8, 8, 150), pi * 16 * 150),
-    ("T1_011", (200, 10, 10), 20000),
-    ("T1_012", (15 * R3, 22.5, 50), 3 * R3 / 4 * 225 * 50),
-    ("T1_013", (60, 20, 8), ((60 - 20) * 20 + pi * 100) * 8),
-    ("T1_014", (40, 40, 15), ngon(8, 20) * 15),
-    ("T1_015", (40, 40, 30), pi * 30 / 3 * (400 + 200 + 100)),
-    ("T1_016", (40, 20, 25), pi * 20 * 10 * 25),
-    ("T1_017", (80, 80, 5), 80 * 80 * 5),
-    ("T1_018", (12.5 * (1 + 0.80901699), 25 * sin(radians(72)), 40), ngon(5, 12.5) * 40),
-    ("T1_019", (120, 45, 15), 120 * 45 * 15),
-    ("T1_020", (36, 36, 60), pi * 18**2 * 60),
-    ("T1_021", (60, 30, 25), 0.5 * 30 * 25 * 60),
-    ("T1_022", (10, 10, 10), 1000),
-    ("T1_023", (50, 25, 15), (50 * 25 - (4 - pi) * 9) * 15),
-    ("T1_024", (30, 30, 30), box_chamfer(30, 30, 30, 2)),
-    ("T1_025", (50, 50, 4), pi * (625 - 156.25) * 4),
-    ("T1_026", (30, 30, 80), pi * (225 - 144) * 80),
-    ("T1_027", (70, 40, 25), steiner(70, 40, 25, 5)),
-    ("T1_028", (40, 40, 23), pi * 400 * 3 + 2 / 3 * pi * 8000),
-    ("T1_029", (20, 30, 40), 0.5 * 20 * 30 * 40),
-    ("T1_030", (12, 12, 100), cyl_chamfer(6, 100, 1)),
-    ("T1_031", (50, 30, 40), 40 / 6 * (50 * 30 + 4 * 40 * 22.5 + 30 * 15)),
-    ("T1_032", (35, 35, 20), 3 * 17.5**2 * 20),
-    ("T1_033", (50, 50, 10), 3 * 25**2 * 10),
-    ("T1_034", (20, 20, 20), cyl_fillet(10, 20, 2)),
-    ("T1_035", (35, 35, 50), 35 * 35 * 50),
-    ("T1_036", (80, 80, 1), pi * 1600 * 1),
-    ("T1_037", (40, 40, 50), 1600 * 50 / 3),
-    ("T1_038", (15, 7.5 * R3, 120), hexa(7.5) * 120),
-    ("T1_039", (25, 15, 10), box_chamfer(25, 15, 10, 1)),
-    ("T1_040", (38, 38, 3), cyl_fillet(19, 3, 0.5)),
-    ("T1_041", (40, 40, 12), pi * (400 - 225) * 12),
-    ("T1_042", (90, 20, 8), (20 * 8 - (4 - pi) * 4) * 90),
-    ("T1_043", (30, 30, 80), pi * 225 * 50 + 4 / 3 * pi * 15**3),
-    ("T1_044", (60, 2, 80), 60 * 2 * 80),
-    ("T1_045", (50, 70, 25), pi * (625 - 484) / 2 * 70),
-    ("T1_046", (20, 20, 20), steiner(20, 20, 20, 3)),
-    ("T1_047", (60, 60, 35), pi * 35 / 3 * (900 + 600 + 400)),
-    ("T1_048", (150, 50, 30), 150 * 50 * 30),
-    ("T1_049", (40, 40, 10), pi * 400 * 10),
-    ("T1_050", (40, 20, 60), (40 * 20 - (4 - pi) * 16) * 60),
-    ("T2_001", (20, 20, 2), pi * (100 - 5.25**2) * 2),
-    ("T2_002", (19.6, 9.8 * R3, 8), (hexa(9.8) - pi * 25) * 8),
-    ("T2_003", (19.6, 9.8 * R3, 37), pi * 25 * 30 + hexa(9.8) * 7),
-    ("T2_004", (13, 13, 33), pi * 16 * 25 + pi * 6.5**2 * 8 - hexa(6.93 / 2) * 4),
-    ("T2_005", (100, 20, 40), (2 * 20 * 3 + 34 * 2) * 100),
-    ("T2_006", (40, 40, 50), 40 * 40 * 3 + 40 * 3 * 50 - 40 * 3 * 3),
-    ("T2_007", (80, 40, 30), (40 * 30 - 34 * 27) * 80),
-    ("T2_008", (80, 60, 5), 80 * 60 * 5 - 4 * pi * 2.1**2 * 5),
-    ("T2_009", (30, 30, 33), pi * (225 * 3 + 100 * 30 - 25 * 33)),
-    ("T2_010", (25, 25, 12), None),
-    ("T2_011", (8, 8, 40), cyl_chamfer(4, 40, 1)),
-    ("T2_012", (60, 40, 8), 60 * 40 * 8 - 4 * (pi * 2.75**2 * 5 + pi * 25 * 3)),
-    ("T2_013", (60, 60, 8), pi * (900 - 100) * 8 - 6 * pi * 2.75**2 * 8),
-    ("T2_014", (80, 30, 40), (30 * 40 - 26 * 36) * 80),
-    ("T2_015", (10 + sqrt(91), 20, 60), None),
-    ("T2_016", (14, 14, 35), pi * (9 * 10 + 25 * 20 + 49 * 5)),
-    ("T2_017", (80, 30, 40), (3 * 37 + 30 * 3) * 80),
-    ("T2_018", (40, 40, 8), (star(16, 20, 16) - pi * 25) * 8),
-    ("T2_019", (30, 20, 25), 30 * 20 * 25 - 10 * 20 * 15 - pi * 9 * 10),
-    ("T2_020", (60, 40, 30), None),
-    ("T2_021", (60, 40, 18), 60 * 40 * 3 + 5 * 2 * 40 * 15),
-    ("T2_022", (24, 24, 3), 24 * 24 * 3 - pi * 5.25**2 * 3),
-    ("T2_023", (60, 25, 26), 2250 + 2250 + 3 * 25 * 26 - 2 * 1.5 * 25 * 3),
-    ("T2_024", (45, 45, 20), star(16, 22.5, 16.875) * 8 + pi * 64 * 12 - pi * 16 * 20),
-    ("T2_025", (40, 40, 55), pi * 400 * 5 + pi * 100 * 50 - 4 * pi * 9 * 5),
-]
-
-HEADER = """# Reference extents and volumes for standard_100 T1 and T2, computed by hand from each
-# prompt's text by bench/cad/refs.py (independent of the synthesizer's reading).
-# Columns: id<TAB>size_x_mm<TAB>size_y_mm<TAB>size_z_mm<TAB>volume_mm3 (- unknown)<TAB>reference mesh (- none).
-# Extents are compared sorted (any orientation). Readings of ambiguous prompts: T1_043 caps are added
-# to the 50 mm cylinder (80 mm overall); T2_006 wall and base share the corner (40 x 40 x 50).
+Run from the checkout root with the CadQuery venv:
+    .cache/cad-venv/bin/python bench/cad/refs.py standard_100 features
+Exit status 1 when a program fails or the two routes disagree.
 """
 
+from __future__ import annotations
+
+import importlib
+import os
+import sys
+from typing import Any
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+# Extents: relative plus absolute slack; volumes relative.
+EXTENT_TOL = 1e-3
+EXTENT_SLACK = 0.01
+VOLUME_TOL = 1e-3
+
+
+def sections(path: str) -> dict[str, str]:
+    """The programs of a .ref.py file by id ("_prelude" included)."""
+    out: dict[str, str] = {}
+    current: str | None = None
+    lines: list[str] = []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("# ref: "):
+                if current is not None:
+                    out[current] = "".join(lines)
+                current = line[len("# ref: ") :].strip()
+                lines = []
+            elif current is not None:
+                lines.append(line)
+    if current is not None:
+        out[current] = "".join(lines)
+    return out
+
+
+def build(prelude: str, code: str) -> Any:
+    """Runs one program and returns its shape."""
+    import cadquery as cq
+
+    scope: dict[str, Any] = {}
+    exec(compile(prelude + "\n" + code, "<ref>", "exec"), scope)
+    result = scope["result"]
+    if isinstance(result, cq.Workplane):
+        vals = [v for v in result.vals() if isinstance(v, cq.Shape)]
+        return vals[0] if len(vals) == 1 else cq.Compound.makeCompound(vals)
+    return result
+
+
+def measure(shape: Any) -> tuple[list[float], float, int, bool]:
+    """Tight extents, volume, number of solids and OCCT's validity of a shape."""
+    from OCP.Bnd import Bnd_Box
+    from OCP.BRepBndLib import BRepBndLib
+
+    box = Bnd_Box()
+    BRepBndLib.AddOptimal_s(shape.wrapped, box, False, False)
+    x0, y0, z0, x1, y1, z1 = box.Get()
+    return [x1 - x0, y1 - y0, z1 - z0], float(shape.Volume()), len(shape.Solids()), bool(shape.isValid())
+
+
+def agree(got: list[float], want: tuple[float, float, float]) -> float:
+    """The largest relative difference of the sorted extents."""
+    g, w = sorted(got), sorted(want)
+    return max(abs(a - b) / b if abs(a - b) > EXTENT_SLACK else 0.0 for a, b in zip(g, w))
+
+
+def run(suite: str) -> int:
+    programs = sections(os.path.join(HERE, f"{suite}.ref.py"))
+    prelude = programs.pop("_prelude", "")
+    formulas: dict[str, tuple[tuple[float, float, float], float | None]] = {}
+    if os.path.exists(os.path.join(HERE, f"formulas_{suite}.py")):
+        formulas = importlib.import_module(f"formulas_{suite}").table()
+    problems = 0
+    rows = []
+    worst_extent, worst_volume, checked = 0.0, 0.0, 0
+    for ref_id, code in programs.items():
+        try:
+            shape = build(prelude, code)
+            size, volume, solids, valid = measure(shape)
+        except Exception as e:  # noqa: BLE001 - every failure is reported, then the next
+            print(f"{ref_id}: the program failed: {type(e).__name__}: {e}")
+            problems += 1
+            continue
+        if solids != 1 or not valid:
+            print(f"{ref_id}: {solids} solids, valid {valid}")
+            problems += 1
+        formula = formulas.get(ref_id)
+        if formula is not None:
+            checked += 1
+            fe = agree(size, formula[0])
+            worst_extent = max(worst_extent, fe)
+            if fe > EXTENT_TOL:
+                print(f"{ref_id}: extents {[round(s, 4) for s in size]} vs formula {formula[0]}")
+                problems += 1
+            if formula[1] is not None:
+                ve = abs(volume - formula[1]) / formula[1]
+                worst_volume = max(worst_volume, ve)
+                if ve > VOLUME_TOL:
+                    print(f"{ref_id}: volume {volume:.3f} vs formula {formula[1]:.3f} ({100 * ve:.3f} %)")
+                    problems += 1
+        rows.append(f"{ref_id}\t{size[0]:.4f}\t{size[1]:.4f}\t{size[2]:.4f}\t{volume:.3f}\t-\n")
+    missing = sorted(set(formulas) - set(programs))
+    if missing:
+        print(f"formulas without a program: {missing}")
+        problems += 1
+    out = os.path.join(HERE, f"{suite}.refs.tsv")
+    with open(out, "w", encoding="utf-8") as f:
+        f.write(
+            f"# Reference extents and volumes of {suite}: the exact solids of {suite}.ref.py (one CadQuery\n"
+            f"# program per prompt, written by hand from its words), checked against closed formulas\n"
+            f"# (formulas_{suite}.py, where one is at hand) by bench/cad/refs.py, which wrote this file.\n"
+            "# Columns: id<TAB>size_x_mm<TAB>size_y_mm<TAB>size_z_mm<TAB>volume_mm3<TAB>reference mesh (- none).\n"
+        )
+        f.writelines(rows)
+    print(
+        f"{suite}: {len(rows)} references, {checked} checked against formulas "
+        f"(largest difference: extents {100 * worst_extent:.4f} %, volume {100 * worst_volume:.4f} %), "
+        f"{problems} problem(s); wrote {os.path.relpath(out)}"
+    )
+    return problems
+
+
 if __name__ == "__main__":
-    out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "standard_100.refs.tsv")
-    with open(out, "w") as f:
-        f.write(HEADER)
-        for id_, s, v in ROWS:
-            vol = "-" if v is None else f"{v:.3f}"
-            f.write(f"{id_}\t{s[0]:.4f}\t{s[1]:.4f}\t{s[2]:.4f}\t{vol}\t-\n")
+    suites = sys.argv[1:] or ["standard_100"]
+    sys.exit(1 if sum(run(s) for s in suites) else 0)
