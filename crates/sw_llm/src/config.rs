@@ -7,7 +7,8 @@
 //! SCENEWRIGHT_LLM_API_KEY=...                              (else OPENAI_API_KEY)
 //! SCENEWRIGHT_LLM_CAD_MODEL=another-model                  one stage: PLAN, RELATIONS,
 //!                                                          CAD, EDIT, REFINE, EMBEDDINGS
-//! SCENEWRIGHT_LLM_TIMEOUT_S=120  _RETRIES=2  _STREAM=1  _STRUCTURED=1  _CONCURRENCY=8
+//! SCENEWRIGHT_LLM_TIMEOUT_S=60  _RETRIES=2  _STREAM=1  _STRUCTURED=1  _CONCURRENCY=8
+//! SCENEWRIGHT_LLM_MAX_TOKENS=…  _MAX_CALL_S=300  _LOAD_WAIT_S=60  _ENDPOINT_CONCURRENCY=…
 //! SCENEWRIGHT_LLM_CONFIG=llm.json                          a file with the same settings
 //! ```
 //!
@@ -49,10 +50,20 @@ pub struct Endpoint {
     pub base_url: String,
     pub api_key: Option<ApiKey>,
     pub model: String,
-    /// Longest wait for one attempt, from the request to the end of the answer.
+    /// Longest silence of the server in one attempt: until the first byte of the answer,
+    /// and between two pieces of a streamed one (a stream that keeps coming is not cut;
+    /// `max_tokens` bounds its length). An answer that is not streamed must be complete
+    /// within it.
     pub timeout: Duration,
+    /// Longest attempt, however it progresses (a safety net behind `max_tokens`).
+    pub max_call: Duration,
+    /// How long a server that is starting (connection refused, `503 Loading model`) is
+    /// waited for before the call fails, on top of the retries.
+    pub load_wait: Duration,
     pub connect_timeout: Duration,
-    /// Attempts after the first, on 429, 5xx, timeouts and broken connections.
+    /// Attempts after the first, on 429, 5xx, broken connections and broken-off streams.
+    /// A timeout at temperature 0 and an answer cut off at `max_tokens` are deterministic:
+    /// they are not asked again unchanged.
     pub max_retries: u32,
     /// First back-off; it doubles per retry (with jitter), up to `max_backoff`. A
     /// server's `Retry-After` is honoured up to `max_backoff`.
@@ -60,12 +71,34 @@ pub struct Endpoint {
     pub max_backoff: Duration,
     /// Send `response_format` with our JSON Schema (structured output).
     pub structured: bool,
-    /// Ask for a streamed answer where the stage can use one.
+    /// Stream answers (every call, whole answers too: the silence timeout, cancellation
+    /// and early work need the pieces).
     pub stream: bool,
+    /// Send `stream_options.include_usage` with streams (refusals are learnt anyway).
+    pub stream_options: bool,
     pub temperature: Option<f64>,
+    /// The token limit of every answer; else the caller's, else the stage's default
+    /// ([`default_max_tokens`]).
     pub max_tokens: Option<u32>,
     /// Concurrent calls of this stage (the CAD stage runs one per missing asset).
     pub concurrency: usize,
+    /// Calls in flight at this endpoint's server at once, whatever the stage; by default
+    /// 1 for a server on this machine (one model on a few cores) and no limit elsewhere.
+    pub endpoint_concurrency: Option<usize>,
+}
+
+/// The token limit of a stage's answers when neither the endpoint nor the caller sets
+/// one: the longest plausible answer with room to spare, so that a model that loops is
+/// cut off in bounded time.
+pub fn default_max_tokens(stage: LlmStage) -> Option<u32> {
+    match stage {
+        LlmStage::Plan => Some(1024),
+        LlmStage::Relations => Some(512),
+        LlmStage::Cad => Some(1536),
+        LlmStage::Edit => Some(384),
+        LlmStage::Refine => Some(256),
+        LlmStage::Embeddings => None,
+    }
 }
 
 impl Endpoint {
@@ -75,16 +108,20 @@ impl Endpoint {
             base_url: base_url.into(),
             api_key: None,
             model: model.into(),
-            timeout: Duration::from_secs(120),
+            timeout: Duration::from_secs(60),
+            max_call: Duration::from_secs(300),
+            load_wait: Duration::from_secs(60),
             connect_timeout: Duration::from_secs(10),
             max_retries: 2,
             backoff: Duration::from_millis(500),
             max_backoff: Duration::from_secs(8),
             structured: true,
             stream: true,
+            stream_options: true,
             temperature: Some(0.0),
             max_tokens: None,
             concurrency: 8,
+            endpoint_concurrency: None,
         }
     }
 
@@ -97,7 +134,8 @@ impl Endpoint {
         format!("{scheme}://{host}")
     }
 
-    pub(crate) fn completions_url(&self) -> String {
+    /// `{base}/chat/completions`.
+    pub fn completions_url(&self) -> String {
         let base = self.base_url.trim_end_matches('/');
         if base.ends_with("/chat/completions") { base.to_string() } else { format!("{base}/chat/completions") }
     }
@@ -133,6 +171,8 @@ struct Settings {
     api_key: Option<String>,
     api_key_env: Option<String>,
     timeout_s: Option<f64>,
+    max_call_s: Option<f64>,
+    load_wait_s: Option<f64>,
     connect_timeout_s: Option<f64>,
     retries: Option<u32>,
     backoff_ms: Option<u64>,
@@ -142,6 +182,7 @@ struct Settings {
     temperature: Option<f64>,
     max_tokens: Option<u32>,
     concurrency: Option<usize>,
+    endpoint_concurrency: Option<usize>,
 }
 
 #[derive(Debug, Clone, Default)]
@@ -162,6 +203,8 @@ impl Settings {
                 .or_else(|| if other.api_key_env.is_some() { None } else { self.api_key.clone() }),
             api_key_env: other.api_key_env.clone().or_else(|| self.api_key_env.clone()),
             timeout_s: other.timeout_s.or(self.timeout_s),
+            max_call_s: other.max_call_s.or(self.max_call_s),
+            load_wait_s: other.load_wait_s.or(self.load_wait_s),
             connect_timeout_s: other.connect_timeout_s.or(self.connect_timeout_s),
             retries: other.retries.or(self.retries),
             backoff_ms: other.backoff_ms.or(self.backoff_ms),
@@ -171,6 +214,7 @@ impl Settings {
             temperature: other.temperature.or(self.temperature),
             max_tokens: other.max_tokens.or(self.max_tokens),
             concurrency: other.concurrency.or(self.concurrency),
+            endpoint_concurrency: other.endpoint_concurrency.or(self.endpoint_concurrency),
         }
     }
 
@@ -201,6 +245,8 @@ impl Settings {
             api_key: var("API_KEY"),
             api_key_env: None,
             timeout_s: num("TIMEOUT_S")?,
+            max_call_s: num("MAX_CALL_S")?,
+            load_wait_s: num("LOAD_WAIT_S")?,
             connect_timeout_s: num("CONNECT_TIMEOUT_S")?,
             retries: int("RETRIES")?.map(|v| v.min(20) as u32),
             backoff_ms: int("BACKOFF_MS")?,
@@ -210,6 +256,7 @@ impl Settings {
             temperature: num("TEMPERATURE")?,
             max_tokens: int("MAX_TOKENS")?.map(|v| v.min(u64::from(u32::MAX)) as u32),
             concurrency: int("CONCURRENCY")?.map(|v| v as usize),
+            endpoint_concurrency: int("ENDPOINT_CONCURRENCY")?.map(|v| v as usize),
         })
     }
 
@@ -251,7 +298,12 @@ impl Settings {
         };
         let mut e = Endpoint::new(base_url.clone(), model.trim());
         e.api_key = api_key;
-        e.timeout = secs(self.timeout_s, 120.0, "timeout_s")?;
+        e.timeout = secs(self.timeout_s, 60.0, "timeout_s")?;
+        e.max_call = secs(self.max_call_s, 300.0, "max_call_s")?;
+        e.load_wait = match self.load_wait_s {
+            Some(0.0) => Duration::ZERO,
+            v => secs(v, 60.0, "load_wait_s")?,
+        };
         e.connect_timeout = secs(self.connect_timeout_s, 10.0, "connect_timeout_s")?;
         e.max_retries = self.retries.unwrap_or(2).min(20);
         e.backoff = Duration::from_millis(self.backoff_ms.unwrap_or(500).min(60_000));
@@ -261,6 +313,7 @@ impl Settings {
         e.temperature = self.temperature.or(Some(0.0));
         e.max_tokens = self.max_tokens;
         e.concurrency = self.concurrency.unwrap_or(8).clamp(1, 64);
+        e.endpoint_concurrency = self.endpoint_concurrency.map(|n| n.clamp(1, 256));
         Ok(Some(e))
     }
 }
@@ -404,7 +457,7 @@ mod tests {
         assert_eq!(c.endpoint(LlmStage::Plan).unwrap().model, "m");
         assert_eq!(c.endpoint(LlmStage::Cad).unwrap().model, "coder");
         assert_eq!(c.endpoint(LlmStage::Plan).unwrap().timeout, Duration::from_millis(2500));
-        assert_eq!(c.endpoint(LlmStage::Edit).unwrap().timeout, Duration::from_secs(120));
+        assert_eq!(c.endpoint(LlmStage::Edit).unwrap().timeout, Duration::from_secs(60));
         let key = c.endpoint(LlmStage::Plan).unwrap().api_key.clone().unwrap();
         assert_eq!(key.expose(), "sk-test");
         assert!(!format!("{:?}", c).contains("sk-test"), "keys are never printed");

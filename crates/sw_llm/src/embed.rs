@@ -8,9 +8,11 @@ use serde_json::{Value, json};
 use sw_plan::{LlmCall, LlmOutcome, LlmStage};
 use tracing::{debug, info_span};
 
-use crate::client::{AttemptError, Client, LlmError, MAX_ANSWER_BYTES, backoff, http_error, ms, transport_error};
+use crate::answer::{AttemptError, MAX_ANSWER_BYTES};
+use crate::client::{Client, LlmError, backoff, ms};
 use crate::config::Endpoint;
 use crate::lenient::preview;
+use crate::transport::{http_error, transport_error};
 
 /// Most texts in one request (providers cap batches; OpenAI at 2048).
 pub const MAX_BATCH: usize = 256;
@@ -38,6 +40,7 @@ impl Client {
             self.telemetry().record(LlmCall {
                 stage,
                 model: ep.model.clone(),
+                served_model: None,
                 endpoint: ep.origin(),
                 streamed: false,
                 latency_ms: ms(started.elapsed()),
@@ -48,6 +51,9 @@ impl Client {
                 retries,
                 outcome,
                 error,
+                attempt_errors: Vec::new(),
+                dialect: None,
+                max_tokens: None,
                 purpose: purpose.to_string(),
             });
         };
@@ -86,7 +92,7 @@ fn attempt(agent: &ureq::Agent, ep: &Endpoint, texts: &[String]) -> Result<(Vec<
         r = r.header("authorization", format!("Bearer {}", k.expose()));
     }
     let resp = r.send(payload.as_bytes()).map_err(transport_error)?;
-    let mut body = http_error(resp).map_err(|(e, _, _)| e)?;
+    let mut body = http_error(resp)?;
     let bytes = body.with_config().limit(MAX_ANSWER_BYTES as u64).read_to_vec().map_err(transport_error)?;
     parse(&String::from_utf8_lossy(&bytes), texts.len())
 }

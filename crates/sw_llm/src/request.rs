@@ -1,8 +1,6 @@
 //! What a stage asks: messages and, optionally, the JSON Schema the answer must follow.
 
-use serde_json::{Value, json};
-
-use crate::Endpoint;
+use serde_json::Value;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Role {
@@ -12,7 +10,7 @@ pub enum Role {
 }
 
 impl Role {
-    fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Role::System => "system",
             Role::User => "user",
@@ -47,6 +45,7 @@ pub struct ChatRequest {
     pub messages: Vec<Message>,
     /// `(name, schema)`: structured output against this JSON Schema.
     pub schema: Option<(String, Value)>,
+    /// The caller's token limit (an endpoint's own limit wins over it).
     pub max_tokens: Option<u32>,
 }
 
@@ -60,60 +59,13 @@ impl ChatRequest {
         self
     }
 
+    pub fn with_max_tokens(mut self, n: u32) -> Self {
+        self.max_tokens = Some(n);
+        self
+    }
+
     /// Bytes of all messages (for token estimates).
     pub(crate) fn text_len(&self) -> usize {
         self.messages.iter().map(|m| m.content.len()).sum()
     }
-}
-
-/// How much of the OpenAI request shape a server is sent. Servers that reject
-/// `response_format` with a JSON Schema (or `stream_options`) get less on a retry.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub(crate) enum Shape {
-    /// `response_format: json_schema`, `stream_options.include_usage`.
-    Full,
-    /// `response_format: json_object`, no stream options.
-    JsonObject,
-    /// Messages only.
-    Plain,
-}
-
-impl Shape {
-    pub fn next(self) -> Option<Shape> {
-        match self {
-            Shape::Full => Some(Shape::JsonObject),
-            Shape::JsonObject => Some(Shape::Plain),
-            Shape::Plain => None,
-        }
-    }
-}
-
-pub(crate) fn body(req: &ChatRequest, ep: &Endpoint, stream: bool, shape: Shape) -> Value {
-    let messages: Vec<Value> =
-        req.messages.iter().map(|m| json!({ "role": m.role.name(), "content": m.content })).collect();
-    let mut b = json!({ "model": ep.model, "messages": messages, "stream": stream });
-    if let Some(t) = ep.temperature {
-        b["temperature"] = json!(t);
-    }
-    if let Some(n) = req.max_tokens.or(ep.max_tokens) {
-        b["max_tokens"] = json!(n);
-    }
-    if stream && shape == Shape::Full {
-        b["stream_options"] = json!({ "include_usage": true });
-    }
-    if let Some((name, schema)) = &req.schema
-        && ep.structured
-    {
-        match shape {
-            Shape::Full => {
-                b["response_format"] = json!({
-                    "type": "json_schema",
-                    "json_schema": { "name": name, "schema": schema, "strict": false }
-                });
-            }
-            Shape::JsonObject => b["response_format"] = json!({ "type": "json_object" }),
-            Shape::Plain => {}
-        }
-    }
-    b
 }

@@ -140,15 +140,25 @@ fn server_errors_give_up_after_the_retries_and_say_so() {
 }
 
 #[test]
-fn silence_past_the_timeout_ends_in_a_timeout() {
+fn silence_past_the_timeout_ends_in_a_timeout_asked_again_only_when_sampling() {
     let server = MockServer::start(|_| Reply::Hang(Duration::from_secs(30))).unwrap();
     let mut ep = endpoint(&server);
     ep.timeout = Duration::from_millis(300);
     ep.max_retries = 1;
+    // At temperature 0 the same request would be as slow again: one attempt.
+    let c = Client::new(LlmConfig::offline().with(LlmStage::Plan, ep.clone()));
+    let e = within(Duration::from_secs(3), || c.stream(LlmStage::Plan, &request(), "plan", &mut |_| {})).unwrap_err();
+    assert_eq!(e.outcome(), LlmOutcome::Timeout, "{e}");
+    assert!(e.to_string().contains("silent"), "{e}");
+    assert_eq!(server.requests().len(), 1);
+    // Sampling, another attempt may be luckier.
+    ep.temperature = Some(0.7);
     let c = Client::new(LlmConfig::offline().with(LlmStage::Plan, ep));
     let e = within(Duration::from_secs(3), || c.stream(LlmStage::Plan, &request(), "plan", &mut |_| {})).unwrap_err();
     assert_eq!(e.outcome(), LlmOutcome::Timeout, "{e}");
-    assert_eq!(server.requests().len(), 2);
+    assert_eq!(server.requests().len(), 3);
+    let call = &c.telemetry().calls()[0];
+    assert_eq!((call.retries, call.attempt_errors.len()), (1, 1), "{call:?}");
 }
 
 #[test]

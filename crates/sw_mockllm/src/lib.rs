@@ -4,8 +4,10 @@
 //! It can answer whole or streamed (server-sent events, chunked transfer), replay
 //! recorded response bodies byte for byte, and inject every fault a real endpoint
 //! shows: malformed JSON, prose, schema-invalid documents, 429 with `Retry-After`, 500,
-//! streams that break off, and silence past the client's timeout. Every request is
-//! logged for assertions.
+//! streams that break off, silence past the client's timeout, a model that loops until
+//! the token limit, streams that end without a finish reason, a server loading its model
+//! — and it counts the answers whose client went away before they were written. Every
+//! request is logged for assertions; `GET …/models` is routed to the responder too.
 //!
 //! ```no_run
 //! use sw_mockllm::{MockServer, Reply};
@@ -94,6 +96,12 @@ pub enum Reply {
     Raw { status: u16, content_type: String, body: Vec<u8>, delay: Duration },
     /// Reads the request, then says nothing for this long and closes the connection.
     Hang(Duration),
+    /// A stream of `pieces` pieces of `content`, one every `gap` (the first at once), as
+    /// a local server writes tokens; then the finish reason (`None`: none, as
+    /// llama-cpp-python's interrupted streams), `[DONE]` when `done`. Chunks name
+    /// `model` when set (a server answering with its own model's name), else the one
+    /// asked for.
+    Tokens { content: String, pieces: usize, gap: Duration, finish: Option<String>, done: bool, model: Option<String> },
 }
 
 impl Reply {
@@ -108,6 +116,35 @@ impl Reply {
     /// A stream of `chunks` pieces over `total`, the first after a tenth of it.
     pub fn stream(content: impl Into<String>, chunks: usize, total: Duration) -> Reply {
         Reply::Stream { content: content.into(), chunks: chunks.max(1), first: total / 10, total, done: true }
+    }
+
+    /// A stream of `pieces` pieces, one every `gap`, ending normally (`stop`, `[DONE]`).
+    pub fn tokens(content: impl Into<String>, pieces: usize, gap: Duration) -> Reply {
+        Reply::Tokens {
+            content: content.into(),
+            pieces: pieces.max(1),
+            gap,
+            finish: Some("stop".into()),
+            done: true,
+            model: None,
+        }
+    }
+
+    /// What llama.cpp's server answers while it loads its model.
+    pub fn loading() -> Reply {
+        Reply::Status {
+            code: 503,
+            body: json!({ "error": { "code": 503, "message": "Loading model", "type": "unavailable_error" } })
+                .to_string(),
+            retry_after: None,
+        }
+    }
+
+    /// `GET /v1/models` of a server holding these models.
+    pub fn models(ids: &[&str]) -> Reply {
+        let data: Vec<Value> =
+            ids.iter().map(|id| json!({ "id": id, "object": "model", "owned_by": "mock" })).collect();
+        Reply::recorded(json!({ "object": "list", "data": data }).to_string(), "application/json")
     }
 
     pub fn status(code: u16, message: &str) -> Reply {
@@ -195,6 +232,7 @@ pub struct MockServer {
     addr: SocketAddr,
     stop: Arc<AtomicBool>,
     log: Arc<Mutex<Vec<Request>>>,
+    gone: Arc<AtomicU64>,
     accept: Option<JoinHandle<()>>,
 }
 
@@ -207,25 +245,37 @@ impl std::fmt::Debug for MockServer {
 impl MockServer {
     /// Listens on an ephemeral loopback port and answers each request with `responder`.
     pub fn start(responder: impl Fn(&Request) -> Reply + Send + Sync + 'static) -> std::io::Result<MockServer> {
-        let listener = TcpListener::bind("127.0.0.1:0")?;
+        Self::start_at("127.0.0.1:0", responder)
+    }
+
+    /// Listens on `addr` (a server started again on the port of one that stopped: a
+    /// restart).
+    pub fn start_at(
+        addr: &str,
+        responder: impl Fn(&Request) -> Reply + Send + Sync + 'static,
+    ) -> std::io::Result<MockServer> {
+        let listener = TcpListener::bind(addr)?;
         let addr = listener.local_addr()?;
         let stop = Arc::new(AtomicBool::new(false));
         let log: Arc<Mutex<Vec<Request>>> = Arc::new(Mutex::new(Vec::new()));
+        let gone = Arc::new(AtomicU64::new(0));
         let responder: Arc<Responder> = Arc::new(responder);
-        let (s, l) = (Arc::clone(&stop), Arc::clone(&log));
+        let (s, l, g) = (Arc::clone(&stop), Arc::clone(&log), Arc::clone(&gone));
         let accept = std::thread::Builder::new().name("mockllm-accept".into()).spawn(move || {
             for conn in listener.incoming() {
                 if s.load(Ordering::SeqCst) {
                     break;
                 }
                 let Ok(conn) = conn else { continue };
-                let (s, l, r) = (Arc::clone(&s), Arc::clone(&l), Arc::clone(&responder));
+                let (s, l, r, g) = (Arc::clone(&s), Arc::clone(&l), Arc::clone(&responder), Arc::clone(&g));
                 let _ = std::thread::Builder::new().name("mockllm-conn".into()).spawn(move || {
-                    let _ = serve(conn, &*r, &l, &s);
+                    if serve(conn, &*r, &l, &s).is_err() {
+                        g.fetch_add(1, Ordering::SeqCst);
+                    }
                 });
             }
         })?;
-        Ok(MockServer { addr, stop, log, accept: Some(accept) })
+        Ok(MockServer { addr, stop, log, gone, accept: Some(accept) })
     }
 
     pub fn addr(&self) -> SocketAddr {
@@ -235,6 +285,12 @@ impl MockServer {
     /// `http://127.0.0.1:<port>/v1`: the base URL to configure.
     pub fn base_url(&self) -> String {
         format!("http://{}/v1", self.addr)
+    }
+
+    /// Answers the server could not finish writing because the client had gone (closed
+    /// its connection): a cancelled or abandoned call.
+    pub fn abandoned(&self) -> u64 {
+        self.gone.load(Ordering::SeqCst)
     }
 
     /// Every request so far.
@@ -391,18 +447,18 @@ impl Writer<'_> {
 fn serve(conn: TcpStream, responder: &Responder, log: &Mutex<Vec<Request>>, stop: &AtomicBool) -> std::io::Result<()> {
     // Streamed pieces go out as they are written, as a real server's do.
     conn.set_nodelay(true)?;
-    let req = read_request(&conn)?;
+    // A connection that sends no request is not an answer the client abandoned.
+    let Ok(req) = read_request(&conn) else { return Ok(()) };
     if let Ok(mut l) = log.lock() {
         l.push(req.clone());
     }
     let model = req.model();
     let prompt_tokens = req.body.len().div_ceil(4);
-    let routed = req.path.ends_with("/chat/completions") || req.path.ends_with("/embeddings");
-    let reply = if req.method == "POST" && routed {
-        responder(&req)
-    } else {
-        Reply::status(404, &format!("no route {} {}", req.method, req.path))
-    };
+    let routed = (req.method == "POST"
+        && (req.path.ends_with("/chat/completions") || req.path.ends_with("/embeddings")))
+        || (req.method == "GET" && req.path.ends_with("/models"));
+    let reply =
+        if routed { responder(&req) } else { Reply::status(404, &format!("no route {} {}", req.method, req.path)) };
     let mut w = Writer { conn: &conn };
     match reply {
         Reply::Answer { content, delay } => {
@@ -474,6 +530,25 @@ fn serve(conn: TcpStream, responder: &Responder, log: &Mutex<Vec<Request>>, stop
         }
         Reply::Hang(d) => {
             pause(d, stop);
+        }
+        Reply::Tokens { content, pieces: n, gap, finish, done, model: served } => {
+            let name = served.unwrap_or(model);
+            w.head(200, "text/event-stream", "", None)?;
+            let start = Instant::now();
+            for (i, p) in pieces(&content, n).iter().enumerate() {
+                let due = start + gap * (i as u32);
+                if i > 0 && !pause(due.saturating_duration_since(Instant::now()), stop) {
+                    return Ok(());
+                }
+                w.chunk(&chunk(Some(p), None, &name))?;
+            }
+            if let Some(f) = finish {
+                w.chunk(&chunk(None, Some(&f), &name))?;
+            }
+            if done {
+                w.chunk("data: [DONE]\n\n")?;
+            }
+            w.end()?;
         }
     }
     let _ = conn.shutdown(Shutdown::Write);

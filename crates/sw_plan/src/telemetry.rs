@@ -2,7 +2,8 @@
 //!
 //! Every call to an LLM endpoint is recorded as an [`LlmCall`]: which stage asked, which
 //! model answered, how long it took, how many tokens went in and out, how many retries
-//! it needed and how it ended. Runs of the offline pipeline make no calls, so their
+//! it needed and how it ended, each failed attempt's error, the model the server said
+//! answered and how structured output was asked for. Runs of the offline pipeline make no calls, so their
 //! `report.json` carries no such field and stays byte-identical to earlier versions.
 //!
 //! `edits.json` ([`EditLog`]) is the history of natural-language edits applied to a
@@ -73,6 +74,9 @@ pub enum LlmOutcome {
     ConnectionFailed,
     /// A streamed answer ended before it was complete.
     Truncated,
+    /// The answer was cut off at the token limit sent with the call (`max_tokens`): a
+    /// model that loops or rambles. Never retried unchanged.
+    Length,
     /// The response was not an OpenAI-compatible chat completion.
     Malformed,
     /// The run no longer needed the answer.
@@ -86,6 +90,10 @@ pub struct LlmCall {
     pub stage: LlmStage,
     /// The model asked for.
     pub model: String,
+    /// The model the server said answered, when it said (servers that hold one model
+    /// answer any name with theirs).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub served_model: Option<String>,
     /// Scheme, host and port of the endpoint (never a key or a path with secrets).
     pub endpoint: String,
     /// The answer was streamed (server-sent events).
@@ -107,6 +115,18 @@ pub struct LlmCall {
     /// What went wrong, in one line, when the outcome is not `ok`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
+    /// Why each earlier attempt of this call failed, in order (the last one's is `error`,
+    /// or the call succeeded after them).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub attempt_errors: Vec<String>,
+    /// How structured output was asked for: `json_schema`, `json_object_schema` (the
+    /// schema inside `json_object`), `json_object`, or `prompt` (the schema in the
+    /// messages); absent when the call asked for no structure.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dialect: Option<String>,
+    /// The token limit sent with the call (`max_tokens`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_tokens: Option<u32>,
     /// What the call was for ("plan", "repair", "cad: forklift", …).
     #[serde(default, skip_serializing_if = "String::is_empty")]
     pub purpose: String,
