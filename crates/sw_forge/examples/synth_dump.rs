@@ -1,5 +1,5 @@
 #![allow(clippy::print_stdout, clippy::print_stderr)]
-//! Prints what the template synthesizer makes of every prompt of a suite file.
+//! Prints what the offline synthesizer makes of every prompt of a suite file.
 //! `cargo run -p sw_forge --example synth_dump -- bench/cad/standard_100.tsv [--code]`
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -8,6 +8,23 @@ fn main() {
         std::process::exit(2);
     };
     let code = args.iter().any(|a| a == "--code");
+    // Reference extents and volumes, to compare with (a development aid: `bench cad` runs the code).
+    let refs: std::collections::BTreeMap<String, ([f64; 3], Option<f64>)> = args
+        .iter()
+        .position(|a| a == "--refs")
+        .and_then(|i| args.get(i + 1))
+        .and_then(|p| std::fs::read_to_string(p).ok())
+        .map(|t| {
+            t.lines()
+                .filter(|l| !l.starts_with('#'))
+                .filter_map(|l| {
+                    let c: Vec<&str> = l.split('\t').collect();
+                    let f = |i: usize| c.get(i).and_then(|x| x.parse::<f64>().ok());
+                    Some((c.first()?.to_string(), ([f(1)?, f(2)?, f(3)?], f(4))))
+                })
+                .collect()
+        })
+        .unwrap_or_default();
     let only = args.iter().position(|a| a == "--only").and_then(|i| args.get(i + 1)).cloned();
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
@@ -23,19 +40,53 @@ fn main() {
             continue;
         }
         if only.is_some() {
-            let r = sw_forge::synth::measure::read(prompt);
-            for d in &r.dims {
+            let d = sw_forge::synth::doc::Doc::new(prompt);
+            for x in &d.dims {
+                println!("  dim {} {:?} quals={:?} axis={:?} paren={} list={:?}", x.mm, x.role, x.quals, x.axis, x.paren, x.list);
+            }
+            for x in &d.ranges {
+                println!("  range {:?} {}..{}", x.axis, x.a, x.b);
+            }
+            for x in &d.coords {
+                println!("  coord {:?} {}", x.axis, x.v);
+            }
+            for x in &d.tuples {
+                println!("  tuple {:?}", x.vals);
+            }
+            let (_, els) = sw_forge::synth::mention::read(&d);
+            for e in &els {
                 println!(
-                    "  {:?} {:?} mods={:?} axis={:?} coord={:?} paren={} list={:?}",
-                    d.mm, d.role, d.mods, d.axis, d.coord, d.paren, d.list
+                    "  element {} {:?} mods={:?} shape={:?} count={:?} dims={:?} ranges={:?} coords={:?} tuples={:?} angles={:?} teeth={:?}",
+                    e.noun,
+                    e.kind,
+                    e.mods,
+                    e.shape,
+                    e.count,
+                    e.dims.iter().map(|k| d.dims[*k].mm).collect::<Vec<_>>(),
+                    e.ranges,
+                    e.coords,
+                    e.tuples,
+                    e.angles,
+                    e.teeth
                 );
             }
-            println!("  counts {:?}", r.counts);
         }
         match sw_forge::synth::synthesize(prompt) {
             Ok(s) => {
+                let verdict = refs.get(id).map_or(String::new(), |(size, vol)| {
+                    let (mut a, mut b) = (s.size, *size);
+                    a.sort_by(f64::total_cmp);
+                    b.sort_by(f64::total_cmp);
+                    let be = a.iter().zip(&b).map(|(x, y)| (x - y).abs() / y).fold(0.0, f64::max);
+                    let ve = match (s.volume, vol) {
+                        (Some(x), Some(y)) => Some((x - y).abs() / y),
+                        _ => None,
+                    };
+                    let ok = be <= 0.01 && ve.is_none_or(|v| v <= 0.02);
+                    format!("\t{} bbox {:.2}% vol {}", if ok { "ok" } else { "BAD" }, 100.0 * be, ve.map_or("?".into(), |v| format!("{:.2}%", 100.0 * v)))
+                });
                 println!(
-                    "{id}\t{}\t{:.3} x {:.3} x {:.3}\t{}\tgenus {:?}",
+                    "{id}\t{}\t{:.3} x {:.3} x {:.3}\t{}\tgenus {:?}{verdict}",
                     s.template,
                     s.size[0],
                     s.size[1],

@@ -33,6 +33,10 @@ pub struct Target {
     pub size_tolerance: f64,
     /// Absolute slack added to each extent's tolerance (tessellation of round parts).
     pub size_slack: f64,
+    /// Which extents are checked (with `Strict` orientation): a cut that may trim a side
+    /// of a part leaves that extent unpromised.
+    #[serde(default = "all_axes")]
+    pub size_axes: [bool; 3],
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub volume: Option<f64>,
     pub volume_tolerance: f64,
@@ -49,12 +53,17 @@ impl Default for Target {
             orientation: Orientation::Free,
             size_tolerance: 0.01,
             size_slack: 0.02,
+            size_axes: all_axes(),
             volume: None,
             volume_tolerance: 0.02,
             genus: None,
             max_triangles: 200_000,
         }
     }
+}
+
+fn all_axes() -> [bool; 3] {
+    [true; 3]
 }
 
 /// What the validator measured.
@@ -116,6 +125,9 @@ pub fn validate(mesh: &Mesh, target: &Target) -> Result<MeshReport, Failure> {
         let mut worst = 0.0f64;
         let mut problems = Vec::new();
         for (axis, (g, w)) in got.iter().zip(want.iter()).enumerate() {
+            if target.orientation == Orientation::Strict && !target.size_axes[axis] {
+                continue;
+            }
             let err = (g - w).abs();
             let rel = if *w > 0.0 { err / w } else { err };
             worst = worst.max(rel);

@@ -1,0 +1,558 @@
+//! A prompt read into sentences and quantities: every length with what it measures (its
+//! role), the words that qualify it and the axis it is given along; coordinates and
+//! coordinate ranges ("Z=3 to Z=33"), tuples ("(±60, 0)"), angles and counts. Every token
+//! the reader uses is marked, so what is left unread can be named exactly.
+
+use std::cell::RefCell;
+
+use super::solid::Axis;
+use super::text::{Tk, Token, tokenize};
+
+/// What a length measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Role {
+    Length,
+    Width,
+    Height,
+    Thickness,
+    Depth,
+    Diameter,
+    Radius,
+    Side,
+    Fillet,
+    Chamfer,
+    Inset,
+    Spacing,
+    /// A length with no role word near it ("100mm by 60mm", "6.93mm across corners").
+    Bare,
+}
+
+pub fn role_of(word: &str) -> Option<Role> {
+    Some(match word {
+        "long" | "length" | "extruded" | "extrude" => Role::Length,
+        "wide" | "width" | "broad" => Role::Width,
+        "tall" | "high" | "height" => Role::Height,
+        "thick" | "thickness" => Role::Thickness,
+        "deep" | "depth" => Role::Depth,
+        "diameter" => Role::Diameter,
+        "radius" => Role::Radius,
+        "side" | "sided" => Role::Side,
+        "fillet" | "filleted" | "rounded" | "radiused" => Role::Fillet,
+        "chamfer" | "chamfered" | "bevel" | "bevelled" | "beveled" => Role::Chamfer,
+        "inset" | "offset" => Role::Inset,
+        "spacing" | "spaced" | "interval" | "apart" | "pitch" => Role::Spacing,
+        _ => return None,
+    })
+}
+
+/// Words that qualify a length (its own phrase) — "outer diameter", "tip circle".
+pub const QUALS: &[&str] = &[
+    "outer", "outside", "inner", "inside", "bore", "hole", "tip", "root", "pitch", "bolt", "circle", "circumscribed",
+    "across", "corner", "flat", "major", "minor", "face", "wall", "base", "top", "bottom", "head", "shaft", "total",
+    "overall", "counterbore", "countersink", "radial", "radially", "axial", "center", "inscribed", "hub", "flange",
+    "web", "leg", "end", "each", "both", "all", "vertical", "horizontal", "long", "short", "edge", "circular",
+    "cross-section", "opening", "neck", "belly", "shoulder", "rim", "slot", "keyway", "groove", "pocket", "recess",
+    "socket", "boss", "post", "arm", "fin", "rib", "plate", "disc", "body", "seat", "journal", "section", "tooth",
+    "extruded", "metric", "clearance", "thread", "key", "gasket", "mount", "motor", "spoke", "rail", "cap", "ring",
+];
+
+/// Words that end the phrase after a length.
+fn is_stop(word: &str) -> bool {
+    matches!(
+        word,
+        "and" | "with" | "on" | "at" | "of" | "from" | "through" | "to" | "in" | "by" | "into" | "onto" | "is" | "are"
+            | "for" | "that" | "which" | "then" | "where" | "running" | "runs" | "spanning" | "starting" | "rising"
+    )
+}
+
+/// A length in the prompt.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Dim {
+    pub tok: usize,
+    pub mm: f64,
+    pub role: Role,
+    /// Qualifying words of its phrase.
+    pub quals: Vec<String>,
+    /// The axis named with it: "60mm (X)", "along Z", "in the Y direction".
+    pub axis: Option<Axis>,
+    /// Inside parentheses (a restatement).
+    pub paren: bool,
+    /// Written "±" / "+/-".
+    pub pm: bool,
+    /// Part of an "A x B (x C)" list: (list id, position).
+    pub list: Option<(usize, usize)>,
+    /// The tokens of its phrase (for marking them read).
+    pub phrase: (usize, usize),
+}
+
+impl Dim {
+    pub fn has(&self, q: &str) -> bool {
+        self.quals.iter().any(|w| w == q)
+    }
+}
+
+/// "Z=3 to Z=33", "from X=0 to X=30": a span along an axis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Range {
+    pub axis: Axis,
+    pub a: f64,
+    pub b: f64,
+    pub toks: (usize, usize),
+}
+
+/// A coordinate "X=+25" (not part of a range).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Coord {
+    pub axis: Axis,
+    pub v: f64,
+    pub tok: usize,
+}
+
+/// "(±60, 0)", "(40,40)", "(X=+25, Y=20)": numbers in parentheses, with their axes when
+/// named, and whether each is ±.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tuple {
+    pub vals: Vec<(Option<Axis>, f64, bool)>,
+    pub toks: (usize, usize),
+}
+
+/// The prompt read.
+#[derive(Debug)]
+pub struct Doc {
+    pub text: String,
+    pub toks: Vec<Token>,
+    /// Sentence of each token.
+    pub sent: Vec<usize>,
+    /// Parenthesis depth of each token.
+    pub depth: Vec<u8>,
+    pub dims: Vec<Dim>,
+    pub ranges: Vec<Range>,
+    pub coords: Vec<Coord>,
+    pub tuples: Vec<Tuple>,
+    /// Tokens read so far.
+    used: RefCell<Vec<bool>>,
+}
+
+fn axis_word(w: &str) -> Option<Axis> {
+    match w {
+        "x" | "+x" | "-x" => Some(Axis::X),
+        "y" | "+y" | "-y" => Some(Axis::Y),
+        "z" | "+z" | "-z" => Some(Axis::Z),
+        _ => None,
+    }
+}
+
+impl Doc {
+    pub fn new(prompt: &str) -> Self {
+        let toks = tokenize(prompt);
+        let mut sent = Vec::with_capacity(toks.len());
+        let mut depth = Vec::with_capacity(toks.len());
+        let (mut s, mut d) = (0usize, 0u8);
+        for t in &toks {
+            if t.is_sym('(') {
+                d = d.saturating_add(1);
+            }
+            sent.push(s);
+            depth.push(d);
+            if t.is_sym(')') {
+                d = d.saturating_sub(1);
+            }
+            if t.is_sym('.') && d == 0 {
+                s += 1;
+            }
+        }
+        let n = toks.len();
+        let mut doc = Doc {
+            text: prompt.to_string(),
+            toks,
+            sent,
+            depth,
+            dims: Vec::new(),
+            ranges: Vec::new(),
+            coords: Vec::new(),
+            tuples: Vec::new(),
+            used: RefCell::new(vec![false; n]),
+        };
+        doc.read_coordinates();
+        doc.read_tuples();
+        let tuples = doc.tuples.clone();
+        doc.coords.retain(|c| !tuples.iter().any(|t| c.tok >= t.toks.0 && c.tok < t.toks.1));
+        doc.read_dims();
+        doc
+    }
+
+    pub fn len(&self) -> usize {
+        self.toks.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.toks.is_empty()
+    }
+
+    pub fn word(&self, i: usize) -> Option<&str> {
+        self.toks.get(i).and_then(Token::word)
+    }
+
+    pub fn is(&self, i: usize, w: &str) -> bool {
+        self.word(i) == Some(w)
+    }
+
+    pub fn sym(&self, i: usize, c: char) -> bool {
+        self.toks.get(i).is_some_and(|t| t.is_sym(c))
+    }
+
+    /// The axis a token names: "X" is read as the times sign, so both count.
+    pub fn axis_at(&self, i: usize) -> Option<Axis> {
+        if self.sym(i, 'x') {
+            return Some(Axis::X);
+        }
+        self.word(i).and_then(axis_word)
+    }
+
+    pub fn sentences(&self) -> usize {
+        self.sent.last().map_or(0, |s| s + 1)
+    }
+
+    /// Token range [start, end) of sentence `s`.
+    pub fn sentence(&self, s: usize) -> (usize, usize) {
+        let start = self.sent.iter().position(|x| *x == s).unwrap_or(self.toks.len());
+        let end = self.sent.iter().rposition(|x| *x == s).map_or(start, |e| e + 1);
+        (start, end)
+    }
+
+    pub fn mark(&self, i: usize) {
+        if let Some(u) = self.used.borrow_mut().get_mut(i) {
+            *u = true;
+        }
+    }
+
+    pub fn mark_range(&self, a: usize, b: usize) {
+        let mut u = self.used.borrow_mut();
+        for k in a..b.min(u.len()) {
+            u[k] = true;
+        }
+    }
+
+    pub fn is_used(&self, i: usize) -> bool {
+        self.used.borrow().get(i).copied().unwrap_or(true)
+    }
+
+    /// The prompt's words from token `a` to token `b` (inclusive).
+    pub fn quote(&self, a: usize, b: usize) -> String {
+        let (Some(s), Some(e)) = (self.toks.get(a), self.toks.get(b.min(self.toks.len().saturating_sub(1)))) else {
+            return String::new();
+        };
+        self.text.get(s.start..e.end).unwrap_or("").trim().to_string()
+    }
+
+    /// The first token at or after `from` (before `to`) that is the word `w`.
+    pub fn find(&self, w: &str, from: usize, to: usize) -> Option<usize> {
+        (from..to.min(self.len())).find(|i| self.is(*i, w))
+    }
+
+    fn num(&self, i: usize) -> Option<(f64, Option<f64>, bool)> {
+        match self.toks.get(i)?.kind {
+            Tk::Num { v, unit, pm, .. } => Some((v, unit, pm)),
+            _ => None,
+        }
+    }
+
+    fn read_coordinates(&mut self) {
+        let n = self.toks.len();
+        let mut coords = Vec::new();
+        for i in 0..n.saturating_sub(2) {
+            if let (Some(a), true, Some((v, Some(f), _))) = (self.word(i).and_then(axis_word), self.sym(i + 1, '='), self.num(i + 2)) {
+                coords.push(Coord { axis: a, v: v * f, tok: i });
+            }
+        }
+        // Ranges: two coordinates of one axis joined by "to" (or "-"), optionally "up".
+        let mut used = vec![false; coords.len()];
+        for k in 0..coords.len() {
+            if used[k] {
+                continue;
+            }
+            if let Some(l) = (k + 1..coords.len()).find(|l| coords[*l].axis == coords[k].axis && !used[*l]) {
+                let between = &self.toks[coords[k].tok + 3..coords[l].tok];
+                let joined = !between.is_empty()
+                    && between.len() <= 3
+                    && between.iter().all(|t| matches!(t.word(), Some("to" | "up" | "down" | "through")) || t.is_sym('-'));
+                if joined {
+                    used[k] = true;
+                    used[l] = true;
+                    self.ranges.push(Range { axis: coords[k].axis, a: coords[k].v, b: coords[l].v, toks: (coords[k].tok, coords[l].tok + 3) });
+                }
+            }
+        }
+        self.coords = coords.into_iter().zip(used).filter(|(_, u)| !u).map(|(c, _)| c).collect();
+    }
+
+    fn read_tuples(&mut self) {
+        let n = self.toks.len();
+        let mut i = 0;
+        while i < n {
+            if !self.sym(i, '(') {
+                i += 1;
+                continue;
+            }
+            let Some(close) = (i + 1..n).find(|j| self.sym(*j, ')') || self.sym(*j, '(')) else { break };
+            if !self.sym(close, ')') {
+                i = close;
+                continue;
+            }
+            // Numbers separated by commas, each optionally "A=".
+            let mut vals = Vec::new();
+            let mut j = i + 1;
+            let mut ok = true;
+            while j < close {
+                let mut axis = None;
+                if let (Some(a), true) = (self.word(j).and_then(axis_word), self.sym(j + 1, '=')) {
+                    axis = Some(a);
+                    j += 2;
+                }
+                match self.num(j) {
+                    Some((v, f, pm)) => vals.push((axis, v * f.unwrap_or(1.0), pm)),
+                    None => {
+                        ok = false;
+                        break;
+                    }
+                }
+                j += 1;
+                if j < close && !self.sym(j, ',') {
+                    ok = false;
+                    break;
+                }
+                j += 1;
+            }
+            if ok && vals.len() >= 2 {
+                self.tuples.push(Tuple { vals, toks: (i, close + 1) });
+            }
+            i = close + 1;
+        }
+    }
+
+    fn in_tuple_or_coord(&self, i: usize) -> bool {
+        self.tuples.iter().any(|t| i >= t.toks.0 && i < t.toks.1)
+            || self.ranges.iter().any(|r| i >= r.toks.0 && i < r.toks.1)
+            || self.coords.iter().any(|c| i >= c.tok && i < c.tok + 3)
+    }
+
+    fn read_dims(&mut self) {
+        let n = self.toks.len();
+        let nums: Vec<usize> = (0..n)
+            .filter(|i| matches!(self.toks[*i].kind, Tk::Num { unit: Some(_), .. }) && !self.in_tuple_or_coord(*i))
+            .collect();
+        let all_nums: Vec<usize> = (0..n).filter(|i| matches!(self.toks[*i].kind, Tk::Num { .. } | Tk::Deg(_))).collect();
+        let mut dims = Vec::new();
+        for &i in &nums {
+            let Some((v, Some(f), pm)) = self.num(i) else { continue };
+            let next_num = all_nums.iter().copied().find(|k| *k > i).unwrap_or(n);
+            let prev_num = all_nums.iter().copied().rev().find(|k| *k < i);
+            // The phrase after: to a stop word, punctuation or the next number.
+            let mut after = Vec::new();
+            let mut axis = None;
+            let mut j = i + 1;
+            while j < next_num.min(n) {
+                match &self.toks[j].kind {
+                    Tk::Word(w) => {
+                        // "60mm in diameter", "80mm on each side" read on.
+                        if is_stop(w) && !(after.is_empty() && (w == "in" || w == "on")) {
+                            // "along the X axis", "in the Y direction": the axis, then stop.
+                            if (w == "along" || w == "in") && axis.is_none() {
+                                if let Some(a) = self.word(j + 1).and_then(axis_word).or_else(|| self.word(j + 2).and_then(axis_word)) {
+                                    axis = Some(a);
+                                }
+                            }
+                            break;
+                        }
+                        if w == "along" {
+                            if let Some(a) = self.word(j + 1).and_then(axis_word).or_else(|| self.word(j + 2).and_then(axis_word)) {
+                                axis = Some(a);
+                            }
+                            break;
+                        }
+                        after.push((j, w.clone()));
+                    }
+                    Tk::Sym('(') => {
+                        // "(X)", "(Y, matching the base)", "(in X)", "(in the Y direction)".
+                        let mut q = j + 1;
+                        while matches!(self.word(q), Some("in" | "the" | "along")) {
+                            q += 1;
+                        }
+                        if (self.sym(q + 1, ')') || self.sym(q + 1, ',') || self.is(q + 1, "direction") || self.is(q + 1, "axis"))
+                            && let Some(a) = self.axis_at(q)
+                        {
+                            axis = Some(a);
+                            j = q + 1;
+                        }
+                        break;
+                    }
+                    Tk::Sym('-') => {}
+                    _ => break,
+                }
+                j += 1;
+            }
+            let after_end = j;
+            // The phrase before: back to the previous number, punctuation or a clause break.
+            let mut before = Vec::new();
+            let mut j = i;
+            let floor = prev_num.map_or(0, |p| p + 1);
+            while j > floor {
+                j -= 1;
+                match &self.toks[j].kind {
+                    Tk::Word(w) if w == "and" || w == "with" || w == "is" || w == "are" || w == "has" => break,
+                    Tk::Word(w) => before.push((j, w.clone())),
+                    Tk::Sym('x') => {}
+                    _ => break,
+                }
+            }
+            before.reverse();
+            let before_start = before.first().map_or(i, |b| b.0);
+            let role = after
+                .first()
+                .and_then(|(_, w)| role_of(w))
+                .or_else(|| before.last().and_then(|(_, w)| role_of(w)))
+                .or_else(|| after.iter().find_map(|(_, w)| role_of(w)))
+                .or_else(|| before.iter().rev().find_map(|(_, w)| role_of(w)))
+                .unwrap_or(Role::Bare);
+            // "extruded to a height of", "pitch circle diameter": the later, more specific word wins.
+            let role = match role {
+                Role::Length if before.iter().any(|(_, w)| w == "height") => Role::Height,
+                Role::Spacing if after.iter().chain(before.iter()).any(|(_, w)| w == "circle" || w == "diameter") => {
+                    if after.iter().chain(before.iter()).any(|(_, w)| w == "radius") { Role::Radius } else { Role::Diameter }
+                }
+                r => r,
+            };
+            if axis.is_none() {
+                for (k, (_, w)) in before.iter().enumerate() {
+                    if (w == "along" || w == "in") && let Some((_, a)) = before.get(k + 1) {
+                        axis = axis_word(a).or(axis);
+                    }
+                }
+            }
+            let quals: Vec<String> = before
+                .iter()
+                .chain(after.iter())
+                .map(|(_, w)| w.clone())
+                .filter(|w| QUALS.contains(&w.as_str()))
+                .collect();
+            dims.push(Dim {
+                tok: i,
+                mm: v * f,
+                role,
+                quals,
+                axis,
+                paren: self.depth[i] > 0,
+                pm,
+                list: None,
+                phrase: (before_start, after_end),
+            });
+        }
+        // "A x B (x C)" lists: lengths joined by x / by, with at most an "(X)"-style tag between.
+        let mut list_id = 0;
+        let mut k = 0;
+        while k < dims.len() {
+            let mut group = vec![k];
+            while let Some(&last) = group.last() {
+                let Some(next) = dims.get(last + 1) else { break };
+                let between = &self.toks[dims[last].tok + 1..next.tok];
+                let joined = !between.is_empty()
+                    && between.len() <= 5
+                    && between.iter().any(|t| t.is_word("by") || t.is_sym('x'))
+                    && between.iter().all(|t| match &t.kind {
+                        Tk::Word(w) => w == "by" || axis_word(w).is_some() || w == "thick" || w == "wide" || w == "long" || w == "tall" || w == "deep",
+                        Tk::Sym(c) => matches!(c, 'x' | '(' | ')'),
+                        _ => false,
+                    });
+                if joined {
+                    group.push(last + 1);
+                } else {
+                    break;
+                }
+            }
+            if group.len() >= 2 {
+                let len = group.len();
+                for (pos, g) in group.iter().enumerate() {
+                    dims[*g].list = Some((list_id, pos));
+                    // A "(X)" tag right after each member.
+                    let t = dims[*g].tok;
+                    if dims[*g].axis.is_none() && self.sym(t + 1, '(') && self.sym(t + 3, ')') {
+                        dims[*g].axis = self.axis_at(t + 2);
+                    }
+                }
+                // "60mm x 60mm (X x Y)": tags after the list.
+                let last_tok = dims[group[len - 1]].tok;
+                if self.sym(last_tok + 1, '(') {
+                    // "(X x Y)": tags at every other token.
+                    let tags: Vec<Axis> = (0..len).filter_map(|p| self.axis_at(last_tok + 2 + 2 * p)).collect();
+                    let closes = self.sym(last_tok + 2 * len + 1, ')');
+                    let tags = if closes { tags } else { Vec::new() };
+                    if tags.len() == len && dims[group[0]].axis.is_none() {
+                        for (g, a) in group.iter().zip(tags) {
+                            dims[*g].axis = Some(a);
+                        }
+                        let close = (last_tok + 1..n).find(|j| self.sym(*j, ')')).unwrap_or(last_tok + 1);
+                        dims[group[len - 1]].phrase.1 = dims[group[len - 1]].phrase.1.max(close + 1);
+                    }
+                }
+                list_id += 1;
+            }
+            k += group.len();
+        }
+        self.dims = dims;
+    }
+
+    /// The words of the prompt not read, as runs: (first token, last token).
+    pub fn unread_runs(&self, ignorable: impl Fn(usize) -> bool) -> Vec<(usize, usize)> {
+        let mut runs = Vec::new();
+        let mut start: Option<usize> = None;
+        for i in 0..self.len() {
+            let open = !self.is_used(i) && !ignorable(i);
+            match (open, start) {
+                (true, None) => start = Some(i),
+                (false, Some(s)) => {
+                    runs.push((s, i - 1));
+                    start = None;
+                }
+                _ => {}
+            }
+        }
+        if let Some(s) = start {
+            runs.push((s, self.len() - 1));
+        }
+        runs
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn roles_axes_and_lists() {
+        let d = Doc::new("A flat mounting plate: 80mm (X) by 60mm (Y) by 5mm thick (Z), with a 10mm diameter bore.");
+        let got: Vec<(f64, Role, Option<Axis>)> = d.dims.iter().map(|d| (d.mm, d.role, d.axis)).collect();
+        assert_eq!(
+            got,
+            vec![
+                (80.0, Role::Bare, Some(Axis::X)),
+                (60.0, Role::Bare, Some(Axis::Y)),
+                (5.0, Role::Thickness, Some(Axis::Z)),
+                (10.0, Role::Diameter, None)
+            ]
+        );
+        assert!(d.dims[0].list.is_some() && d.dims[2].list.is_some());
+        assert!(d.dims[3].has("bore") || d.dims[3].quals.is_empty());
+    }
+
+    #[test]
+    fn ranges_coordinates_and_tuples() {
+        let d = Doc::new("The flange is 3mm thick (Z=0 to Z=3). Holes at (X=+25, Y=20) and (±60, 0) mm, at Z=6mm.");
+        assert_eq!(d.ranges.len(), 1);
+        assert_eq!((d.ranges[0].a, d.ranges[0].b), (0.0, 3.0));
+        assert_eq!(d.tuples.len(), 2);
+        assert_eq!(d.tuples[1].vals[0], (None, 60.0, true));
+        assert_eq!(d.coords.len(), 1);
+        assert_eq!(d.dims.len(), 1, "{:?}", d.dims);
+        assert_eq!(d.sentences(), 2);
+    }
+}

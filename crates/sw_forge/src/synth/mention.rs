@@ -1,0 +1,433 @@
+//! Who is who in a prompt: the noun phrases that name a body, a cut or an edge
+//! treatment (mentions), which of them are the same thing (coreference: "a hexagonal
+//! head … The head has …"), and which lengths, spans, coordinates, tuples and angles
+//! belong to each (attachment: "a 10mm diameter shaft, 30mm long" — both to the shaft;
+//! "rises from the plate from Z=5 to Z=18" — the span to the subject, not to the plate).
+
+use super::doc::Doc;
+use super::lexicon::{Noun, ShapeHint, noun, number_word, shape_adjective};
+use super::text::Tk;
+
+/// Words that may stand before a noun to say what it is for ("mounting holes", "gasket
+/// groove", "flight-controller holes"); they do not change its geometry.
+const LABELS: &[&str] = &[
+    "motor", "mounting", "flight-controller", "controller", "gasket", "lightening", "cooling", "set", "screw", "pilot",
+    "clearance", "retaining", "bearing", "cable", "wire", "drain", "vent", "access", "locating", "alignment", "fixing",
+    "tool", "spring", "lock", "electronics", "heat", "sink", "spur", "idler", "drive", "driven", "pinion", "support",
+    "guide", "center", "central", "main", "run", "branch", "outer", "inner", "upper", "lower", "top", "bottom",
+    "front", "back", "rear", "left", "right", "side", "end", "first", "second", "third", "large", "small", "big",
+    "larger", "smaller", "narrower", "wider", "thinner", "thicker", "shorter", "longer", "taller", "raised",
+    "sunken", "horizontal", "vertical", "upright", "parallel", "radial", "axial", "transverse", "longitudinal",
+    "perpendicular", "diagonal", "solid", "simple", "plain", "flat", "thin", "thick", "long", "short", "tall",
+    "wide", "narrow", "deep", "shallow", "straight", "smooth", "structural", "mechanical", "cross", "pipe",
+    "allen", "cap", "socket", "hex", "machine", "wood", "metal", "steel", "aluminium", "aluminum", "brass",
+    "plastic", "nylon", "rubber", "tooth", "belt", "v-belt", "timing", "pitch", "bolt", "stepped", "flanged",
+    "threaded", "smooth", "full", "half", "quarter", "semicircular", "continuous", "through", "blind",
+    "counterbored", "countersunk", "rounded", "filleted", "chamfered", "equal", "identical", "matching",
+    "protruding", "extended", "integral", "single", "double", "twin", "triple", "compound", "coaxial",
+    "concentric", "base", "mount", "shaft", "gear", "hub", "journal", "neck", "shoulder", "head", "body",
+    "wall", "floor", "rim", "platform", "post", "plate", "standoff", "arm", "fin", "rib", "rail", "seat",
+    "flange", "key", "keyway", "slot", "groove", "hole", "bore", "boss", "ring", "disc", "lug", "ear", "tab",
+    "leg", "foot", "pad", "web", "stem", "spoke", "mid-height", "square", "rectangular", "round", "circular",
+    "cylindrical", "regular",
+];
+
+/// A noun phrase naming a body, a cut or an edge treatment.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mention {
+    pub head: usize,
+    /// First token of the phrase (after its determiner).
+    pub start: usize,
+    pub noun: String,
+    pub kind: Noun,
+    /// The words before the head in its phrase.
+    pub mods: Vec<String>,
+    pub shape: Option<ShapeHint>,
+    pub count: Option<u32>,
+    /// "each", "every", "both", "all" before it.
+    pub each: bool,
+    /// "the", "each", "both" … — it may refer back.
+    pub definite: bool,
+    /// The preposition it is the object of ("through the plate"), when it is one.
+    pub prep: Option<String>,
+    /// It has a determiner ("a", "the", "each" …).
+    pub det: bool,
+    pub sent: usize,
+    pub elem: usize,
+}
+
+/// One thing the prompt describes, from all its mentions.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Element {
+    pub noun: String,
+    pub kind: Noun,
+    pub mods: Vec<String>,
+    pub shape: Option<ShapeHint>,
+    pub count: Option<u32>,
+    pub mentions: Vec<usize>,
+    /// Indices into the doc's dims, ranges, coords and tuples, and angles (token, deg).
+    pub dims: Vec<usize>,
+    pub ranges: Vec<usize>,
+    pub coords: Vec<usize>,
+    pub tuples: Vec<usize>,
+    pub angles: Vec<(usize, f64)>,
+    /// "16 teeth", "32 vertices" (halved).
+    pub teeth: Option<u32>,
+    /// The first element of the prompt: the part itself.
+    pub title: bool,
+}
+
+impl Element {
+    pub fn has_mod(&self, w: &str) -> bool {
+        self.mods.iter().any(|m| m == w)
+    }
+}
+
+fn is_det(w: &str) -> bool {
+    matches!(w, "a" | "an" | "the" | "each" | "every" | "both" | "all" | "another" | "its" | "their" | "any" | "this")
+}
+
+fn is_prep(w: &str) -> bool {
+    matches!(
+        w,
+        "through" | "on" | "onto" | "from" | "of" | "to" | "at" | "in" | "into" | "above" | "below" | "inside" | "around"
+            | "past" | "between" | "along" | "over" | "under" | "beneath" | "across" | "within" | "toward" | "towards"
+            | "bridging" | "connecting" | "via" | "by" | "per"
+    )
+}
+
+/// Reads the mentions of a prompt and groups them into elements.
+pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
+    let mut mentions = Vec::new();
+    let n = doc.len();
+    for i in 0..n {
+        let Some(w) = doc.word(i) else { continue };
+        let Some(kind) = noun(w) else { continue };
+        // A noun directly followed by another noun of the phrase is a modifier ("bolt
+        // holes", "base plate", "motor mount platform").
+        if let Some(next) = doc.word(i + 1)
+            && (noun(next).is_some_and(|k| !matches!(k, Noun::Pattern | Noun::Whole)) || next == "through-hole")
+            && !matches!(kind, Noun::Pattern)
+        {
+            continue;
+        }
+        if matches!(kind, Noun::Pattern) {
+            continue;
+        }
+        // A noun qualifying a length ("base diameter", "wall thickness", "flange width",
+        // "head height") is not a mention of its own.
+        if doc.word(i + 1).is_some_and(|n| super::doc::role_of(n).is_some() && n != "side" && n != "rounded" && n != "filleted" && n != "chamfered")
+            && !matches!(kind, Noun::Fillet | Noun::Chamfer)
+        {
+            continue;
+        }
+        // "A stadium (oblong) shape", "clevis bracket (fork mount)": a name in parentheses
+        // right after another is the same thing, read with it.
+        if i >= 2 && doc.depth[i] > 0 && doc.toks[i + 1..].first().is_some_and(|t| t.is_sym(')')) {
+            let open = (0..i).rev().find(|j| doc.sym(*j, '('));
+            if let Some(o) = open
+                && o >= 1
+                && doc.word(o - 1).is_some_and(|w| noun(w).is_some())
+                && (o + 1..i).all(|j| doc.word(j).is_some())
+            {
+                doc.mark_range(o, i + 2);
+                continue;
+            }
+        }
+        // The phrase: back over modifiers, counts, lengths and determiners.
+        let mut start = i;
+        let mut mods = Vec::new();
+        let mut shape = None;
+        let mut count = None;
+        let mut each = false;
+        let mut definite = false;
+        let mut j = i;
+        while j > 0 {
+            let k = j - 1;
+            let t = &doc.toks[k];
+            let take = match &t.kind {
+                Tk::Word(v) => {
+                    if is_det(v) {
+                        definite |= !matches!(v.as_str(), "a" | "an" | "another");
+                        each |= matches!(v.as_str(), "each" | "every" | "both" | "all");
+                        if v == "both" {
+                            count = count.or(Some(2));
+                        }
+                        start = k;
+                        break;
+                    }
+                    if let Some(c) = number_word(v) {
+                        count = Some(c);
+                        true
+                    } else if let Some(s) = shape_adjective(v) {
+                        shape = shape.or(Some(s));
+                        mods.push(v.clone());
+                        true
+                    } else if noun(v).is_some() || LABELS.contains(&v.as_str()) || v == "metric" {
+                        mods.push(v.clone());
+                        true
+                    } else {
+                        super::doc::role_of(v).is_some() && doc.toks.get(k.wrapping_sub(1)).is_some_and(|p| matches!(p.kind, Tk::Num { .. }))
+                    }
+                }
+                Tk::Num { unit: Some(_), .. } => true,
+                Tk::Num { v, unit: None, .. } if v.fract() == 0.0 && *v >= 1.0 && !doc.sym(k.wrapping_sub(1), '=') => {
+                    // "16-tooth gear": the count is the teeth's, not the gear's.
+                    if !doc.is(k + 1, "tooth") {
+                        count = Some(*v as u32);
+                    }
+                    true
+                }
+                Tk::Sym('x') => true,
+                Tk::Sym('-') => true,
+                // "dodecagonal (12-sided) prism": an aside inside the phrase.
+                Tk::Sym(')') => {
+                    if let Some(o) = (0..k).rev().find(|q| doc.sym(*q, '(')) {
+                        let sides = (o + 1..k).find_map(|q| match doc.toks[q].kind {
+                            Tk::Num { v, unit: None, .. } if doc.is(q + 2, "sided") || doc.is(q + 1, "sided") => Some(v),
+                            _ => None,
+                        });
+                        if sides.is_some() || (o + 1..k).all(|q| doc.word(q).is_some()) {
+                            doc.mark_range(o, k + 1);
+                            j = o;
+                            start = o;
+                            continue;
+                        }
+                    }
+                    false
+                }
+                _ => false,
+            };
+            if !take {
+                break;
+            }
+            start = k;
+            j = k;
+        }
+        mods.reverse();
+        let det_at = if doc.word(start).is_some_and(is_det) { Some(start) } else { None };
+        let first = det_at.map_or(start, |d| d + 1).min(i);
+        let before = det_at.unwrap_or(start);
+        let prep = if before > 0 { doc.word(before - 1).filter(|p| is_prep(p)).map(str::to_string) } else { None };
+        let prep = prep.or_else(|| {
+            // "one in each flange ear": the preposition before the determiner's phrase.
+            if before >= 2 && doc.word(before - 1).is_some_and(|w| w == "one") { doc.word(before - 2).filter(|p| is_prep(p)).map(str::to_string) } else { None }
+        });
+        mentions.push(Mention {
+            head: i,
+            start: first,
+            noun: w.to_string(),
+            kind,
+            mods,
+            shape,
+            count,
+            each,
+            definite,
+            prep,
+            det: det_at.is_some(),
+            sent: doc.sent[i],
+            elem: usize::MAX,
+        });
+    }
+    let elements = group(doc, &mut mentions);
+    (mentions, elements)
+}
+
+/// Whether a later mention refers to an element already met.
+fn same_thing(m: &Mention, e: &Element) -> bool {
+    // A bare plural or heading ("Side rails: each rail is …") also refers back.
+    let bare = m.count.is_none() && !m.det;
+    if !(m.definite || m.each || m.prep.is_some() || (bare && m.noun == e.noun)) {
+        return false;
+    }
+    if m.noun == e.noun || e.noun.ends_with(&format!("-{}", m.noun)) {
+        // "the bore" vs a "keyway ... along the bore wall": same noun is enough.
+        return true;
+    }
+    // "each motor mount" → a "motor mount platform".
+    e.mods.iter().any(|x| *x == m.noun) && m.mods.iter().all(|x| e.mods.contains(x) || *x == e.noun || !matches!(noun(x), Some(_)))
+}
+
+fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
+    let mut elements: Vec<Element> = Vec::new();
+    for mi in 0..mentions.len() {
+        let m = mentions[mi].clone();
+        let target = elements.iter().rposition(|e| same_thing(&m, e));
+        let id = match target {
+            Some(id) => {
+                let e = &mut elements[id];
+                e.mentions.push(mi);
+                if e.shape.is_none() {
+                    e.shape = m.shape;
+                }
+                for x in &m.mods {
+                    if !e.mods.contains(x) {
+                        e.mods.push(x.clone());
+                    }
+                }
+                if e.count.is_none() && !m.each {
+                    e.count = m.count;
+                }
+                id
+            }
+            None => {
+                elements.push(Element {
+                    noun: m.noun.clone(),
+                    kind: m.kind,
+                    mods: m.mods.clone(),
+                    shape: m.shape,
+                    count: if m.each { None } else { m.count },
+                    mentions: vec![mi],
+                    dims: Vec::new(),
+                    ranges: Vec::new(),
+                    coords: Vec::new(),
+                    tuples: Vec::new(),
+                    angles: Vec::new(),
+                    teeth: None,
+                    title: elements.is_empty(),
+                });
+                elements.len() - 1
+            }
+        };
+        mentions[mi].elem = id;
+    }
+    attach(doc, mentions, &mut elements);
+    elements
+}
+
+/// Whether a length of this role can belong to an element of this kind (a bore has no
+/// height: "15mm bore (inner diameter), and 12mm height" — the height is the ring's).
+fn fits(kind: Noun, role: Option<super::doc::Role>) -> bool {
+    use super::doc::Role::*;
+    use super::lexicon::CutKind;
+    let Some(role) = role else { return true };
+    match kind {
+        Noun::Cut(CutKind::Hole | CutKind::Bore | CutKind::Counterbore | CutKind::Countersink) => {
+            matches!(role, Diameter | Radius | Depth | Bare | Inset | Spacing)
+        }
+        Noun::Fillet | Noun::Chamfer => matches!(role, Bare | Fillet | Chamfer | Radius),
+        _ => true,
+    }
+}
+
+/// The element a quantity at token `t` belongs to.
+fn owner(doc: &Doc, mentions: &[Mention], t: usize) -> Option<usize> {
+    owner_fit(doc, mentions, t, None, &[])
+}
+
+fn owner_fit(doc: &Doc, mentions: &[Mention], t: usize, role: Option<super::doc::Role>, kinds: &[Noun]) -> Option<usize> {
+    let kind_of = |m: &Mention| kinds.get(m.elem).copied().unwrap_or(m.kind);
+    let s = doc.sent[t];
+    // Inside a mention's phrase (before its head): that mention.
+    if let Some(m) = mentions.iter().find(|m| m.sent == s && t >= m.start && t < m.head) {
+        return Some(m.elem);
+    }
+    // A pre-modifier of the next head with only phrase words between.
+    // Else the last mention before it in the sentence that is not a preposition's object
+    // (a subject or a "with" feature); else the sentence's first mention; else the last
+    // subject of an earlier sentence.
+    let before: Vec<&Mention> = mentions.iter().filter(|m| m.sent == s && m.head < t).collect();
+    if let Some(m) = before.iter().rev().find(|m| (m.prep.is_none() || m.prep.as_deref() == Some("with")) && fits(kind_of(m), role)) {
+        return Some(m.elem);
+    }
+    if let Some(m) = mentions.iter().find(|m| m.sent == s && (m.prep.is_none() || m.prep.as_deref() == Some("with"))) {
+        return Some(m.elem);
+    }
+    mentions.iter().rev().find(|m| m.sent < s && m.prep.is_none()).map(|m| m.elem)
+}
+
+fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
+    if elements.is_empty() {
+        return;
+    }
+    for (k, d) in doc.dims.iter().enumerate() {
+        // A restatement in parentheses right after another length: that length's owner.
+        let o = if d.paren && k > 0 && doc.dims[k - 1].tok + 8 > d.tok && doc.depth[doc.dims[k - 1].tok] < doc.depth[d.tok] {
+            owner(doc, mentions, doc.dims[k - 1].tok)
+        } else {
+            let kinds: Vec<Noun> = elements.iter().map(|e| e.kind).collect();
+            owner_fit(doc, mentions, d.tok, Some(d.role), &kinds)
+        };
+        if let Some(o) = o.and_then(|o| elements.get_mut(o)) {
+            o.dims.push(k);
+        }
+    }
+    for (k, r) in doc.ranges.iter().enumerate() {
+        if let Some(o) = owner(doc, mentions, r.toks.0).and_then(|o| elements.get_mut(o)) {
+            o.ranges.push(k);
+        }
+    }
+    for (k, c) in doc.coords.iter().enumerate() {
+        if let Some(o) = owner(doc, mentions, c.tok).and_then(|o| elements.get_mut(o)) {
+            o.coords.push(k);
+        }
+    }
+    for (k, t) in doc.tuples.iter().enumerate() {
+        if let Some(o) = owner(doc, mentions, t.toks.0).and_then(|o| elements.get_mut(o)) {
+            o.tuples.push(k);
+        }
+    }
+    for (i, t) in doc.toks.iter().enumerate() {
+        match t.kind {
+            Tk::Deg(a) => {
+                if let Some(o) = owner(doc, mentions, i).and_then(|o| elements.get_mut(o)) {
+                    o.angles.push((i, a));
+                }
+            }
+            // "16 teeth", "16-tooth", "32 vertices".
+            Tk::Num { v, unit: None, .. } if v.fract() == 0.0 && v >= 1.0 => {
+                let per = if doc.is(i + 1, "tooth") || (doc.is(i + 2, "tooth") && doc.word(i + 1).is_some_and(|w| shape_adjective(w).is_some())) {
+                    Some(1)
+                } else if doc.is(i + 1, "vertex") {
+                    Some(2)
+                } else {
+                    None
+                };
+                if let Some(per) = per
+                    && let Some(o) = owner(doc, mentions, i).and_then(|o| elements.get_mut(o))
+                {
+                    o.teeth.get_or_insert((v as u32) / per);
+                    doc.mark(i);
+                    doc.mark(i + 1);
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn subjects_own_their_lengths_and_objects_do_not() {
+        let doc = Doc::new(
+            "A flanged bushing. The flange is at the bottom: 30mm outer diameter, 3mm thick (Z=0 to Z=3). \
+             The cylindrical body extends upward from the flange: 20mm outer diameter, 30mm long (Z=3 to Z=33). \
+             A 10mm diameter bore runs through the entire length of the part.",
+        );
+        let (_, els) = read(&doc);
+        let names: Vec<&str> = els.iter().map(|e| e.noun.as_str()).collect();
+        assert_eq!(names, vec!["bushing", "flange", "body", "bore", "part"]);
+        let mm = |e: &Element| e.dims.iter().map(|k| doc.dims[*k].mm).collect::<Vec<_>>();
+        assert_eq!(mm(&els[1]), vec![30.0, 3.0]);
+        assert_eq!(mm(&els[2]), vec![20.0, 30.0]);
+        assert_eq!(els[2].ranges.len(), 1);
+        assert_eq!(mm(&els[3]), vec![10.0]);
+    }
+
+    #[test]
+    fn compounds_counts_and_coreference() {
+        let doc = Doc::new(
+            "A hex bolt: a 10mm diameter cylindrical shaft, 30mm long, with a hexagonal head on top. \
+             The head has a 19.6mm circumscribed circle diameter and is 7mm tall. Four M3 mounting holes (3.2mm diameter).",
+        );
+        let (_, els) = read(&doc);
+        let names: Vec<&str> = els.iter().map(|e| e.noun.as_str()).collect();
+        assert_eq!(names, vec!["bolt", "shaft", "head", "hole"]);
+        assert_eq!(els[2].shape, Some(ShapeHint::Ngon(6)));
+        assert_eq!(els[2].dims.len(), 2);
+        assert_eq!(els[3].count, Some(4));
+    }
+}

@@ -1,0 +1,269 @@
+//! Where things go: the part's frame ("centered at the origin", "standing upright along
+//! Z"), and the copies of a body or a cut — explicit points ("at (X=+25, Y=20)",
+//! "(±60, 0) and (0, ±60)"), corners inset from the edges, rectangular patterns, pitch
+//! circles at given or equal angles, grids with spacings, and rows at intervals.
+
+use std::f64::consts::PI;
+
+use super::super::doc::Role;
+use super::super::solid::Axis;
+use super::{Reader, Refusal, Res};
+
+/// Words that name the shape of a section ("an equilateral triangle cross-section").
+const SECTION_WORDS: &[&str] = &[
+    "triangle", "rectangle", "square", "circle", "hexagon", "octagon", "pentagon", "polygon", "star", "u-shaped",
+    "t-shaped", "l-shaped", "z-shaped", "i-shaped", "semicircular", "circular", "rectangular", "hexagonal",
+    "triangular", "annular", "equilateral", "right", "rounded-rectangle", "star-polygon", "tooth", "v-shaped",
+];
+
+/// Reads the words that orient the whole part, describe its section in words, or
+/// compare it with something ("resembling a hockey puck").
+pub fn read_frame(r: &mut Reader<'_>) {
+    let d = r.doc;
+    for i in 0..d.len() {
+        // "… cross-section", "… profile": the section's name words before it.
+        if matches!(d.word(i), Some("cross-section" | "profile" | "outline")) {
+            d.mark(i);
+            let mut j = i;
+            while j > 0 && d.word(j - 1).is_some_and(|w| SECTION_WORDS.contains(&w)) {
+                j -= 1;
+                d.mark(j);
+            }
+        }
+        // "resembling a hockey puck", "shaped like a coin": a likeness, up to the clause's end.
+        if matches!(d.word(i), Some("resembling" | "like")) {
+            let mut j = i;
+            while j < d.len() && !(d.toks[j].kind == super::super::text::Tk::Sym(',') || d.toks[j].kind == super::super::text::Tk::Sym('.')) {
+                d.mark(j);
+                j += 1;
+            }
+        }
+        // "extruded in the +Z direction", "thickness extruded along +Z": the default.
+        if d.is(i, "extruded") && d.word(i + 1).is_some_and(|w| w == "in" || w == "along") {
+            let end = (i + 1..(i + 6).min(d.len())).find(|j| d.is(*j, "direction") || d.is(*j, "axis"));
+            if let Some(end) = end {
+                d.mark_range(i, end + 1);
+            }
+        }
+        // "centroid at the origin".
+        if d.is(i, "centroid") && d.is(i + 1, "at") {
+            let end = (i + 1..(i + 4).min(d.len())).find(|j| d.is(*j, "origin"));
+            if let Some(end) = end {
+                d.mark_range(i, end + 1);
+            }
+        }
+        // "centered at the origin", "centred on the origin".
+        if (d.is(i, "centered") || d.is(i, "center")) && (i + 3 < d.len()) {
+            let end = (i + 1..(i + 4).min(d.len())).find(|j| d.is(*j, "origin"));
+            if let Some(end) = end {
+                r.centered = true;
+                d.mark_range(i, end + 1);
+            }
+        }
+    }
+}
+
+/// A count of copies: the element's count, else 1.
+pub fn count_of(r: &Reader<'_>, e: usize) -> u32 {
+    r.els[e].count.unwrap_or(1)
+}
+
+/// Angles given for an element (degrees), marked read.
+pub fn take_angles(r: &mut Reader<'_>, e: usize) -> Vec<f64> {
+    let a: Vec<(usize, f64)> = r.els[e].angles.iter().copied().filter(|(t, _)| !r.used_angles.contains(t)).collect();
+    // A single "45-degree" before a noun is a chamfer or bend angle, not a position.
+    a.into_iter().map(|(t, v)| {
+        r.used_angles.insert(t);
+        r.doc.mark(t);
+        v
+    })
+    .collect()
+}
+
+/// Explicit points from the element's tuples and coordinates, in the plane of `axis`:
+/// "(±60, 0) and (0, ±60)", "(X=+25, Y=20)", "(+/-27, +/-17)".
+pub fn points(r: &mut Reader<'_>, e: usize, axis: Axis) -> Res<Vec<[f64; 2]>> {
+    let (u, v) = axis.uv();
+    let mut out: Vec<[f64; 2]> = Vec::new();
+    let tuples: Vec<usize> = r.els[e].tuples.iter().copied().filter(|k| !r.used_tuples[*k]).collect();
+    for k in tuples {
+        let t = r.doc.tuples[k].clone();
+        if t.vals.len() != 2 {
+            continue;
+        }
+        // Named axes map to (u, v); unnamed ones are in the plane's order (X, Y for Z).
+        let mut pair = [None, None];
+        let mut unnamed = Vec::new();
+        for (a, val, pm) in &t.vals {
+            match a {
+                Some(a) if *a == u => pair[0] = Some((*val, *pm)),
+                Some(a) if *a == v => pair[1] = Some((*val, *pm)),
+                Some(a) => {
+                    return Err(Refusal::new(
+                        r.doc.quote(t.toks.0, t.toks.1 - 1),
+                        format!("a point given in {} where the feature is placed in {}{}", a.name(), u.name(), v.name()),
+                    ));
+                }
+                None => unnamed.push((*val, *pm)),
+            }
+        }
+        let (a, b) = match (pair, unnamed.as_slice()) {
+            ([Some(a), Some(b)], []) => (a, b),
+            ([None, None], [a, b]) => {
+                // Unnamed pairs are (X, Y) on a horizontal face; mapped to (u, v) of Z.
+                if axis == Axis::Z { (*a, *b) } else { continue }
+            }
+            _ => continue,
+        };
+        r.used_tuples[k] = true;
+        r.doc.mark_range(t.toks.0, t.toks.1);
+        let us: Vec<f64> = if a.1 { vec![a.0, -a.0] } else { vec![a.0] };
+        let vs: Vec<f64> = if b.1 { vec![b.0, -b.0] } else { vec![b.0] };
+        for x in &us {
+            for y in &vs {
+                if !out.iter().any(|p| (p[0] - x).abs() < 1e-9 && (p[1] - y).abs() < 1e-9) {
+                    out.push([*x, *y]);
+                }
+            }
+        }
+    }
+    // "at X=20": a coordinate alone (the other in-plane one 0).
+    if out.is_empty() {
+        let cu = r.take_coord(e, u);
+        let cv = r.take_coord(e, v);
+        if cu.is_some() || cv.is_some() {
+            out.push([cu.unwrap_or(0.0), cv.unwrap_or(0.0)]);
+        }
+    }
+    // Coordinate lists "centered at X = -24, -12, 0, 12, 24mm".
+    Ok(out)
+}
+
+/// Copies on a pitch circle: "on a 45mm pitch circle diameter", "on a 40mm bolt circle",
+/// "equally spaced", "at 0, 60, 120 … degrees".
+pub fn circle(r: &mut Reader<'_>, e: usize, count: u32) -> Option<Vec<[f64; 2]>> {
+    let k = r
+        .find(e, &[Role::Diameter, Role::Radius], &["pitch"], &[])
+        .or_else(|| r.find(e, &[Role::Diameter, Role::Radius], &["circle"], &[]))
+        .or_else(|| r.find(e, &[Role::Diameter, Role::Radius], &["bolt"], &["hole"]))?;
+    let d = &r.doc.dims[k];
+    let pcd = if d.role == Role::Radius { 2.0 * d.mm } else { d.mm };
+    r.used_dims[k] = true;
+    let mut angles = take_angles(r, e);
+    if angles.len() != count as usize {
+        angles = (0..count).map(|i| 360.0 * f64::from(i) / f64::from(count)).collect();
+    }
+    Some(angles.iter().map(|a| [pcd / 2.0 * a.to_radians().cos(), pcd / 2.0 * a.to_radians().sin()]).collect())
+}
+
+/// Four copies at the corners of a `size` rectangle (centred), `inset` from its edges.
+pub fn corners(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64; 2]>> {
+    let k = r.find(e, &[Role::Inset], &[], &[])?;
+    let i = r.doc.dims[k].mm;
+    r.used_dims[k] = true;
+    let (x, y) = (size[0] / 2.0 - i, size[1] / 2.0 - i);
+    Some(vec![[-x, -y], [x, -y], [x, y], [-x, y]])
+}
+
+/// "in a 20mm x 20mm square pattern", "in a rectangular pattern 64mm (X) by 34mm (Y)":
+/// the four corners of a centred rectangle given by a list of two lengths.
+pub fn rect_pattern(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
+    let dims = r.free_dims(e);
+    let list: Vec<usize> = dims.iter().copied().filter(|k| r.doc.dims[*k].list.is_some()).collect();
+    let [a, b] = list.as_slice() else { return None };
+    let said = r.sentences_of(e).iter().any(|(s, t)| (*s..*t).any(|i| r.doc.is(i, "pattern") || r.doc.is(i, "square") || r.doc.is(i, "rectangle")));
+    if !said {
+        return None;
+    }
+    let (x, y) = (r.doc.dims[*a].mm / 2.0, r.doc.dims[*b].mm / 2.0);
+    r.used_dims[*a] = true;
+    r.used_dims[*b] = true;
+    for (s, t) in r.sentences_of(e) {
+        for i in s..t {
+            if r.doc.is(i, "pattern") || r.doc.is(i, "rectangle") {
+                r.doc.mark(i);
+                if r.doc.word(i.wrapping_sub(1)).is_some_and(|w| w == "rectangular" || w == "square") {
+                    r.doc.mark(i - 1);
+                }
+            }
+        }
+    }
+    Some(vec![[-x, -y], [x, -y], [x, y], [-x, y]])
+}
+
+/// "a 3x2 rectangular array … with 30mm spacing in X and 30mm spacing in Y": a centred
+/// grid. Returns the points and marks the words.
+pub fn grid(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
+    let d = r.doc;
+    for (s, t) in r.sentences_of(e) {
+        for i in s..t.saturating_sub(2) {
+            let (Some((nx, _)), true, Some((ny, _))) = (int_at(r, i), d.sym(i + 1, 'x'), int_at(r, i + 2)) else { continue };
+            let sx = r.find(e, &[Role::Spacing], &[], &[]).filter(|k| d.dims[*k].axis != Some(Axis::Y));
+            let Some(sx) = sx else { continue };
+            r.used_dims[sx] = true;
+            let sy = r.find(e, &[Role::Spacing], &[], &[]);
+            let (px, py) = (d.dims[sx].mm, sy.map_or(d.dims[sx].mm, |k| d.dims[k].mm));
+            if let Some(k) = sy {
+                r.used_dims[k] = true;
+            }
+            d.mark_range(i, i + 3);
+            for j in i + 3..(i + 6).min(t) {
+                if d.is(j, "array") || d.is(j, "grid") || d.is(j, "pattern") || d.is(j, "rectangular") {
+                    d.mark(j);
+                }
+            }
+            let mut out = Vec::new();
+            for a in 0..ny {
+                for b in 0..nx {
+                    out.push([
+                        (f64::from(b) - f64::from(nx - 1) / 2.0) * px,
+                        (f64::from(a) - f64::from(ny - 1) / 2.0) * py,
+                    ]);
+                }
+            }
+            return Some(out);
+        }
+    }
+    None
+}
+
+fn int_at(r: &Reader<'_>, i: usize) -> Option<(u32, usize)> {
+    match r.doc.toks.get(i)?.kind {
+        super::super::text::Tk::Num { v, unit: None, .. } if v.fract() == 0.0 && (1.0..=100.0).contains(&v) => Some((v as u32, i)),
+        _ => None,
+    }
+}
+
+/// "evenly spaced along X at 12mm intervals": `count` copies in a centred row.
+pub fn row(r: &mut Reader<'_>, e: usize, count: u32, default_axis: Axis, plane: Axis) -> Option<Vec<[f64; 2]>> {
+    let k = r.find(e, &[Role::Spacing], &[], &[])?;
+    let d = &r.doc.dims[k];
+    let along = d.axis.unwrap_or(default_axis);
+    let p = d.mm;
+    r.used_dims[k] = true;
+    let (u, v) = plane.uv();
+    Some(
+        (0..count)
+            .map(|i| {
+                let off = (f64::from(i) - f64::from(count - 1) / 2.0) * p;
+                if along == u {
+                    [off, 0.0]
+                } else if along == v {
+                    [0.0, off]
+                } else {
+                    [off, 0.0]
+                }
+            })
+            .collect(),
+    )
+}
+
+/// Equal angles around a circle of diameter `d`.
+pub fn equal_on_circle(count: u32, d: f64, start_deg: f64) -> Vec<[f64; 2]> {
+    (0..count)
+        .map(|i| {
+            let a = start_deg.to_radians() + 2.0 * PI * f64::from(i) / f64::from(count);
+            [d / 2.0 * a.cos(), d / 2.0 * a.sin()]
+        })
+        .collect()
+}

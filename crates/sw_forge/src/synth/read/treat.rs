@@ -1,0 +1,158 @@
+//! Edge treatments and shells: fillets and chamfers on the edges the words select ("all
+//! edges", "the four vertical edges", "all long edges", "both circular edges", "the top
+//! edges"), and a body hollowed to a wall with a face removed ("the top face is removed
+//! and the body is shelled inward with 2mm wall thickness").
+
+use super::super::doc::Role;
+use super::super::lexicon::Noun;
+use super::super::solid::{Axis, EdgeKind, EdgeOp, Edges, Shape, Shell};
+use super::{Reader, Refusal, Res};
+
+/// The body treatments apply to: the part's own (its name's), else the first one made.
+fn main_body(r: &Reader<'_>) -> Option<usize> {
+    let t = r.els.iter().position(|e| e.title)?;
+    r.built[t].as_ref().and_then(|b| b.bodies.first().copied()).filter(|_| !r.built[t].as_ref().is_some_and(|b| b.cut)).or((!r.model.adds.is_empty()).then_some(0))
+}
+
+pub fn read(r: &mut Reader<'_>) -> Res<()> {
+    // Fillets and chamfers: their elements ("3mm fillets"), or lengths whose role says so,
+    // or a radius in a sentence that rounds edges ("filleted with a 5mm radius").
+    let d = r.doc;
+    let mut ops: Vec<(usize, EdgeKind, f64, usize)> = Vec::new(); // (dim, kind, size, sentence)
+    for e in 0..r.els.len() {
+        let kind = match r.els[e].kind {
+            Noun::Fillet => EdgeKind::Fillet,
+            Noun::Chamfer => EdgeKind::Chamfer,
+            _ => continue,
+        };
+        for k in r.free_dims(e) {
+            if !d.dims[k].paren {
+                ops.push((k, kind, d.dims[k].mm, d.sent[d.dims[k].tok]));
+                r.used_dims[k] = true;
+                break;
+            }
+        }
+        r.mark_element(e);
+        // A chamfer's "45-degree": the only angle a chamfer of one size has.
+        for (t, a) in r.els[e].angles.clone() {
+            if (a - 45.0).abs() < 1e-9 {
+                r.used_angles.insert(t);
+                d.mark(t);
+            }
+        }
+    }
+    for k in 0..d.dims.len() {
+        if r.used_dims[k] {
+            continue;
+        }
+        let dm = &d.dims[k];
+        let s = d.sent[dm.tok];
+        let (a, b) = d.sentence(s);
+        let rounding = (a..b).any(|i| matches!(d.word(i), Some("filleted" | "rounded" | "fillet" | "radiused")));
+        let kind = match dm.role {
+            Role::Fillet => Some(EdgeKind::Fillet),
+            Role::Chamfer => Some(EdgeKind::Chamfer),
+            Role::Radius if rounding && (a..b).any(|i| d.is(i, "edge")) => Some(EdgeKind::Fillet),
+            _ => None,
+        };
+        if let Some(kind) = kind {
+            ops.push((k, kind, dm.mm, s));
+            r.used_dims[k] = true;
+        }
+    }
+    for (k, kind, size, s) in ops {
+        let Some(bi) = main_body(r) else { break };
+        let edges = select(r, s, bi);
+        let body = &r.model.adds[bi];
+        let bb = body.bounds();
+        let thin = (0..3).map(|i| bb[1][i] - bb[0][i]).fold(f64::INFINITY, f64::min);
+        if size <= 0.0 || 2.0 * size >= thin {
+            return Err(Refusal::new(r.quote_dim(k), format!("an edge treatment of {size} mm does not fit a body {thin} mm thin")));
+        }
+        r.model.adds[bi].edges.push(EdgeOp { edges, kind, size });
+        let dm = &d.dims[k];
+        d.mark_range(dm.phrase.0.min(dm.tok), dm.phrase.1.max(dm.tok + 1));
+    }
+    shell(r)
+}
+
+/// The edges a sentence selects on a body.
+fn select(r: &Reader<'_>, s: usize, bi: usize) -> Edges {
+    let d = r.doc;
+    let (a, b) = d.sentence(s);
+    let has = |w: &str| (a..b).any(|i| d.is(i, w));
+    let mark = |w: &str| {
+        for i in a..b {
+            if d.is(i, w) {
+                d.mark(i);
+            }
+        }
+    };
+    for w in ["edge", "all", "four", "both", "only", "on"] {
+        mark(w);
+    }
+    let round = matches!(&r.model.adds[bi].shape, Shape::Prism { profile: super::super::profile::Profile::Circle { .. }, .. });
+    if has("vertical") {
+        mark("vertical");
+        return Edges::Parallel(Axis::Z);
+    }
+    if has("long") {
+        mark("long");
+        let bb = r.model.adds[bi].bounds();
+        let s = [bb[1][0] - bb[0][0], bb[1][1] - bb[0][1], bb[1][2] - bb[0][2]];
+        let k = if s[0] >= s[1] && s[0] >= s[2] { Axis::X } else if s[1] >= s[2] { Axis::Y } else { Axis::Z };
+        return Edges::Parallel(k);
+    }
+    if has("circular") || has("end") || (has("top") && has("bottom")) {
+        for w in ["circular", "end", "top", "bottom", "and"] {
+            mark(w);
+        }
+        return Edges::Circular;
+    }
+    if has("top") {
+        mark("top");
+        return Edges::Face(Axis::Z, true);
+    }
+    if has("bottom") {
+        mark("bottom");
+        return Edges::Face(Axis::Z, false);
+    }
+    if round { Edges::Circular } else { Edges::All }
+}
+
+/// "shelled inward with 2mm wall thickness", with the face removed ("the top face (+Z)
+/// is removed", "open on top").
+fn shell(r: &mut Reader<'_>) -> Res<()> {
+    let d = r.doc;
+    let Some(at) = (0..d.len()).find(|i| matches!(d.word(*i), Some("shelled" | "shell" | "hollowed"))) else { return Ok(()) };
+    let s = d.sent[at];
+    let (a, b) = d.sentence(s);
+    let k = (0..d.dims.len()).find(|k| !r.used_dims[*k] && d.sent[d.dims[*k].tok] == s && matches!(d.dims[*k].role, Role::Thickness | Role::Bare));
+    let Some(k) = k else { return Err(Refusal::new(d.quote(at, at), "the shell's wall thickness is not given")) };
+    let t = d.dims[k].mm;
+    r.used_dims[k] = true;
+    d.mark_range(d.dims[k].phrase.0.min(d.dims[k].tok), d.dims[k].phrase.1.max(d.dims[k].tok + 1));
+    let Some(bi) = main_body(r) else { return Ok(()) };
+    // The open face: the top, unless the words say the bottom.
+    let open_top = !(a..b).any(|i| d.is(i, "bottom")) || (a..b).any(|i| d.is(i, "top"));
+    let bb = r.model.adds[bi].bounds();
+    let thin = (0..3).map(|i| bb[1][i] - bb[0][i]).fold(f64::INFINITY, f64::min);
+    if t <= 0.0 || 2.0 * t >= thin {
+        return Err(Refusal::new(d.quote(at, at), format!("a {t} mm wall does not fit a body {thin} mm thin")));
+    }
+    r.model.adds[bi].shell = Some(Shell { axis: Axis::Z, max: open_top, t });
+    d.mark(at);
+    for i in 0..d.len() {
+        let w = d.word(i).unwrap_or("");
+        if matches!(w, "top" | "face" | "removed" | "open" | "open-top" | "inward" | "wall" | "opening" | "neck") && d.sent[i] <= s {
+            // Only the words that say which face is open.
+            if matches!(w, "removed" | "open" | "open-top" | "inward") || (i + 1 < d.len() && d.is(i + 1, "face")) || w == "face" {
+                d.mark(i);
+                if d.is(i + 1, "face") {
+                    d.mark(i + 1);
+                }
+            }
+        }
+    }
+    Ok(())
+}

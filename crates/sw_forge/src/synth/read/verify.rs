@@ -1,0 +1,209 @@
+//! Accounting for every number and word after the part is built. A length, span,
+//! coordinate, point or angle the construction did not use must restate the part (its
+//! extents, a body's diameter or span, a radial distance, a point of a path, within 0.5 %,
+//! or 2 % after "approximately"); a body or cut that was named but not made, and any word
+//! not read that carries geometry, refuses the prompt with its exact words.
+
+use super::super::doc::{QUALS, role_of};
+use super::super::lexicon::{Noun, is_filler};
+use super::super::text::Tk;
+use super::{Reader, Refusal, Res};
+
+fn close(a: f64, b: f64, tol: f64) -> bool {
+    (a - b).abs() <= tol * b.abs().max(1.0)
+}
+
+/// Every length the finished part has, for restatements to match.
+fn lengths(r: &Reader<'_>) -> Vec<f64> {
+    let mut v = r.known.clone();
+    let b = r.model.bounds();
+    for k in 0..3 {
+        v.extend([b[1][k] - b[0][k], b[0][k], b[1][k], (b[1][k] - b[0][k]) / 2.0]);
+    }
+    for built in r.built.iter().flatten() {
+        v.extend([built.span[1] - built.span[0], built.span[0], built.span[1]]);
+        if let Some(d) = built.od {
+            v.extend([d, d / 2.0]);
+            if let Some(i) = built.id {
+                v.push((d - i) / 2.0);
+            }
+        }
+        if let Some(i) = built.id {
+            v.extend([i, i / 2.0]);
+        }
+        if let Some(s) = built.size {
+            v.extend(s);
+        }
+        for p in &built.at {
+            v.extend([p[0].abs(), p[1].abs(), (p[0] * p[0] + p[1] * p[1]).sqrt(), 2.0 * (p[0] * p[0] + p[1] * p[1]).sqrt()]);
+        }
+        // Copies' spacing and the pattern's extent.
+        if built.at.len() > 1 {
+            for (i, p) in built.at.iter().enumerate() {
+                for q in built.at.iter().skip(i + 1) {
+                    v.push(((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt());
+                    v.push((p[0] - q[0]).abs());
+                    v.push((p[1] - q[1]).abs());
+                }
+            }
+        }
+    }
+    // Distances from a copy to the edges of the part (an inset restated).
+    for built in r.built.iter().flatten() {
+        for p in &built.at {
+            v.extend([p[0] - b[0][0], b[1][0] - p[0], p[1] - b[0][1], b[1][1] - p[1]]);
+        }
+    }
+    for (k, d) in r.doc.dims.iter().enumerate() {
+        if r.used_dims[k] {
+            v.push(d.mm);
+        }
+    }
+    // Polygons' width across flats and their sides.
+    for b in r.model.adds.iter().chain(r.model.cuts.iter()) {
+        if let super::super::solid::Shape::Prism { profile: super::super::profile::Profile::Ngon { n, d, .. }, .. } = &b.shape {
+            let n = *n as f64;
+            v.extend([d * (std::f64::consts::PI / n).cos(), d * (std::f64::consts::PI / n).sin()]);
+        }
+    }
+    v
+}
+
+/// Coordinates along an axis the part has (bounds, spans, copies, path points).
+fn coordinates(r: &Reader<'_>, axis: usize) -> Vec<f64> {
+    let mut v: Vec<f64> = r.known_points.iter().map(|p| p[axis]).collect();
+    let b = r.model.bounds();
+    v.extend([b[0][axis], b[1][axis], (b[0][axis] + b[1][axis]) / 2.0]);
+    for body in r.model.adds.iter().chain(r.model.cuts.iter()) {
+        let q = body.bounds();
+        v.extend([q[0][axis], q[1][axis], (q[0][axis] + q[1][axis]) / 2.0]);
+    }
+    v.extend(r.known.iter().copied());
+    v
+}
+
+fn approx_near(r: &Reader<'_>, tok: usize) -> bool {
+    (tok.saturating_sub(4)..tok).any(|i| matches!(r.doc.word(i), Some("approximately" | "about" | "approx" | "roughly" | "around" | "nearly")))
+}
+
+pub fn check(r: &mut Reader<'_>) -> Res<()> {
+    let d = r.doc;
+    let lens = lengths(r);
+    // Lengths not used.
+    for k in 0..d.dims.len() {
+        let dm = &d.dims[k];
+        if !r.used_dims[k] {
+            let tol = if approx_near(r, dm.tok) { 0.02 } else { 0.005 };
+            if !lens.iter().any(|c| close(dm.mm, *c, tol)) {
+                return Err(Refusal::new(r.quote_dim(k), "a length the part does not have, or one the synthesizer could not place"));
+            }
+            r.used_dims[k] = true;
+        }
+        // Its number and its role and qualifier words are read.
+        d.mark(dm.tok);
+        for i in dm.phrase.0..dm.phrase.1.min(d.len()) {
+            if let Some(w) = d.word(i)
+                && (role_of(w).is_some() || QUALS.contains(&w) || is_filler(w) || matches!(w, "x" | "y" | "z"))
+            {
+                d.mark(i);
+            }
+        }
+    }
+    // Spans.
+    for k in 0..d.ranges.len() {
+        if r.used_ranges[k] {
+            continue;
+        }
+        let rg = &d.ranges[k];
+        let cs = coordinates(r, rg.axis.index());
+        let tol = 0.005;
+        if !(cs.iter().any(|c| close(rg.a, *c, tol)) && cs.iter().any(|c| close(rg.b, *c, tol))) {
+            return Err(Refusal::new(d.quote(rg.toks.0, rg.toks.1 - 1), "a span the part does not have"));
+        }
+        r.used_ranges[k] = true;
+        d.mark_range(rg.toks.0, rg.toks.1);
+    }
+    // Coordinates.
+    for k in 0..d.coords.len() {
+        if r.used_coords[k] {
+            continue;
+        }
+        let c = &d.coords[k];
+        let tol = if approx_near(r, c.tok) { 0.02 } else { 0.005 };
+        if !coordinates(r, c.axis.index()).iter().any(|v| close(c.v, *v, tol)) {
+            return Err(Refusal::new(d.quote(c.tok, c.tok + 2), "a coordinate the part has nothing at"));
+        }
+        r.used_coords[k] = true;
+        d.mark_range(c.tok, c.tok + 3);
+    }
+    // Points.
+    for k in 0..d.tuples.len() {
+        if r.used_tuples[k] {
+            continue;
+        }
+        let t = &d.tuples[k];
+        let tol = if approx_near(r, t.toks.0) { 0.02 } else { 0.005 };
+        let ok = t.vals.iter().all(|(axis, v, _)| {
+            let axes: Vec<usize> = match axis {
+                Some(a) => vec![a.index()],
+                None => vec![0, 1, 2],
+            };
+            axes.iter().any(|a| coordinates(r, *a).iter().any(|c| close(v.abs(), c.abs(), tol)))
+        });
+        if !ok {
+            return Err(Refusal::new(d.quote(t.toks.0, t.toks.1 - 1), "a point the part has nothing at"));
+        }
+        r.used_tuples[k] = true;
+        d.mark_range(t.toks.0, t.toks.1);
+    }
+    // Angles.
+    for (i, t) in d.toks.iter().enumerate() {
+        if let Tk::Deg(_) = t.kind
+            && !r.used_angles.contains(&i)
+        {
+            return Err(Refusal::new(d.quote(i, i), "an angle the synthesizer could not place"));
+        }
+    }
+    // Bodies and cuts named but not made.
+    for e in 0..r.els.len() {
+        if r.done[e] {
+            continue;
+        }
+        match r.els[e].kind {
+            Noun::Whole => r.mark_element(e),
+            _ => {
+                let m = &r.els[e].mentions;
+                let all_read = m.iter().all(|mi| {
+                    let x = &r.mentions[*mi];
+                    (x.start..=x.head).all(|i| d.is_used(i))
+                });
+                if !all_read {
+                    // A reference to a made thing ("through the plate") or a restating name.
+                    let referenced = m.iter().all(|mi| r.mentions[*mi].prep.is_some() || r.mentions[*mi].definite);
+                    let same_noun_made = (0..r.els.len()).any(|o| o != e && r.done[o] && r.els[o].noun == r.els[e].noun);
+                    if referenced || same_noun_made || r.built.iter().flatten().count() > 0 && is_place_noun(&r.els[e].noun) {
+                        r.mark_element(e);
+                        continue;
+                    }
+                    return Err(Refusal::new(r.quote_element(e), "named, but nothing says its size or where it is"));
+                }
+            }
+        }
+    }
+    // Words.
+    let runs = d.unread_runs(|i| match &d.toks[i].kind {
+        Tk::Word(w) => is_filler(w) || (role_of(w).is_some() && w != "side" && w != "sided") || matches!(w.as_str(), "x" | "y" | "z" | "xy" | "xz" | "yz" | "degree" | "mm"),
+        Tk::Sym(_) => true,
+        Tk::Num { unit: None, .. } => true,
+        _ => false,
+    });
+    if let Some((a, b)) = runs.first() {
+        return Err(Refusal::new(d.quote(*a, *b), "the synthesizer does not know what these words ask for"));
+    }
+    Ok(())
+}
+
+/// Nouns that, said of a made part, name a place on it rather than a new body.
+fn is_place_noun(w: &str) -> bool {
+    matches!(w, "base" | "body" | "head" | "floor" | "wall" | "rim" | "section" | "seat" | "shoulder" | "neck" | "hub")
+}
