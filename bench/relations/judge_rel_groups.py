@@ -22,6 +22,8 @@ from judge_geometry import (
     axis_angle_deg,
     interval_overlap,
     perp,
+    point_in_convex,
+    point_segment_distance,
     poly_distance,
     principal_axis,
     project,
@@ -159,6 +161,9 @@ def _rows_check(subs: list[Thing], d: Arr, n: int | None) -> tuple[list[str], di
     probs = []
     if (n is not None and len(rows) != n) or (n is None and len(rows) < 2):
         probs.append(f"{len(rows)} rows")
+    sizes = [len(r) for r in rows]
+    if n is not None and max(sizes) - min(sizes) > 1:
+        probs.append(f"uneven rows {sizes}")
     for r in rows:
         probs += _row_problems(r, d, 2)
     return probs, {
@@ -170,7 +175,7 @@ def _rows_check(subs: list[Thing], d: Arr, n: int | None) -> tuple[list[str], di
 
 
 def in_rows(rel: Relation, scene: Scene) -> Verdict:
-    """Judge `in_rows`: the instances split into `n` parallel rows (each at least two, each a row as above)."""
+    """Judge `in_rows`: `n` parallel rows of (nearly) equal length, each a row as above."""
     subs = resolve(scene, rel.subject)
     if len(subs) < 2:
         return Verdict.fail(f"{len(subs)} {rel.subject}: rows need more")
@@ -320,6 +325,13 @@ def _largest_gap(covered: list[bool]) -> tuple[int, int]:
     return best, best_at
 
 
+def _distance_from(p: Arr, poly: Arr) -> float:
+    """Return the distance from a point to a convex polygon (0 inside)."""
+    if point_in_convex(p, poly):
+        return 0.0
+    return min(point_segment_distance(p, poly[i], poly[(i + 1) % len(poly)]) for i in range(len(poly)))
+
+
 def around(rel: Relation, scene: Scene) -> Verdict:
     """Judge `around`.
 
@@ -366,14 +378,17 @@ def around(rel: Relation, scene: Scene) -> Verdict:
     share = {k: sum(covered[b] for b in v) / max(1, len(v)) for k, v in sectors.items()}
     sides = sorted(k for k, f in share.items() if f >= AROUND_SIDE_SHARE)
     gap_deg, gap_at = _largest_gap(covered)
-    # The opening is the clear distance between the two pieces flanking the widest gap.
+    # The opening: the two pieces flanking the widest angular gap, the larger of their clear
+    # distance and the chord the gap spans at the nearer piece's distance from the centre.
     left, right = owner[(gap_at - 1) % 360], owner[(gap_at + gap_deg) % 360]
     if gap_deg == 0:
         opening = 0.0
     elif gap_deg >= 360 or left is None or right is None or left is right:
         opening = math.inf
     else:
-        opening = poly_distance(left.footprint, right.footprint)
+        r = min(_distance_from(tc, left.footprint), _distance_from(tc, right.footprint))
+        chord = 2.0 * r * math.sin(math.radians(min(gap_deg, 180)) / 2.0)
+        opening = max(poly_distance(left.footprint, right.footprint), chord)
     barriers = all(s.top - s.bottom >= BARRIER_HEIGHT_M for s in subs)
     probs = []
     if len(sides) < AROUND_SIDES:
