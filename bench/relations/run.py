@@ -7,6 +7,7 @@ mismatches.
 
     .cache/venv/bin/python bench/relations/run.py [--seeds 5] [--binary target/release/scenewright]
         [--suite bench/relations/suite.jsonl] [--only ID[,ID]] [--work DIR] [--keep] [--json FILE]
+    .cache/venv/bin/python bench/relations/run.py --report FILE   # the tables of an earlier --json
 
 Packages are written under --work (a temporary directory, removed at the end unless --keep).
 A package that fails to generate counts every one of its relations as not held.
@@ -128,7 +129,7 @@ def report(data: dict[str, Any]) -> str:
         "",
         "count mismatches (prompt: key expected -> found, per seed):",
     ]
-    seen: dict[str, list[str]] = defaultdict(list)
+    seen: dict[str, dict[str, list[int]]] = defaultdict(lambda: defaultdict(list))
     for r in res:
         c = r["counts"]
         bits = [
@@ -143,9 +144,10 @@ def report(data: dict[str, Any]) -> str:
         if c.get("error"):
             bits.append(c["error"])
         if bits:
-            seen[r["id"]].append(f"s{r['seed']}: " + "; ".join(bits))
+            seen[r["id"]]["; ".join(bits)].append(r["seed"])
     for ident, rows in sorted(seen.items()):
-        out.append(f"- {ident}: " + " | ".join(rows))
+        parts = [f"{msg} (seeds {','.join(map(str, seeds))})" for msg, seeds in rows.items()]
+        out.append(f"- {ident}: " + " | ".join(parts))
     return "\n".join(out)
 
 
@@ -159,7 +161,11 @@ def main() -> int:
     ap.add_argument("--work", type=Path)
     ap.add_argument("--keep", action="store_true", help="keep the packages")
     ap.add_argument("--json", type=Path, help="write every verdict here")
+    ap.add_argument("--report", type=Path, help="print the tables of an earlier --json file and stop")
     args = ap.parse_args()
+    if args.report:
+        print(report(json.loads(args.report.read_text())))
+        return 0
     if not args.binary.is_file():
         print(f"run: no binary at {args.binary} (cargo build --release -p sw_cli)", file=sys.stderr)
         return 2
