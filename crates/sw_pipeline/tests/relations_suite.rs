@@ -1,0 +1,231 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! Issue 12's relation suite (`bench/relations/suite.jsonl`) through the pipeline, judged by
+//! the independent geometric judge (`bench/relations/judge.py`): it reads only the written
+//! `scene.xml` with the official MuJoCo 4.0 Python bindings (`.cache/venv`, made by
+//! `scripts/setup.sh --tests`) and measures every stated relation and the counts.
+//!
+//! - `the_judge_tells_holding_from_failing_fixtures` checks the judge itself on hand-written
+//!   scenes (`bench/relations/fixtures/`) where each relation clearly holds and clearly
+//!   fails, so it cannot pass everything;
+//! - `the_judge_reads_real_packages` runs it on scenes the pipeline writes (names, walls,
+//!   sites as the writer emits them) and checks what holds today;
+//! - `suite_prompts_hold_every_relation` is the issue's target — every relation held and
+//!   counts exact on a prompt per relation kind, two seeds — and waits for the solver.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+use serde_json::{Value, json};
+use sw_pipeline::{Options, generate};
+use sw_plan::Status;
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn bench() -> PathBuf {
+    root().join("bench/relations")
+}
+
+fn python() -> PathBuf {
+    let py = root().join(".cache/venv/bin/python");
+    assert!(
+        py.is_file(),
+        "the Python venv with the official mujoco 4.0 bindings is missing at {}: run scripts/setup.sh --tests",
+        py.display()
+    );
+    py
+}
+
+fn jsonl(path: &Path) -> Vec<Value> {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    text.lines().filter(|l| !l.trim().is_empty()).map(|l| serde_json::from_str(l).unwrap()).collect()
+}
+
+fn suite_line(id: &str) -> Value {
+    jsonl(&bench().join("suite.jsonl"))
+        .into_iter()
+        .find(|l| l["id"] == id)
+        .unwrap_or_else(|| panic!("no suite line {id:?}"))
+}
+
+/// Runs the judge once over (package, line) pairs; one verdict per pair, in order.
+fn judge(cases: &[(PathBuf, Value)]) -> Vec<Value> {
+    let dir = tempfile::tempdir().unwrap();
+    let batch = dir.path().join("batch.jsonl");
+    let text: Vec<String> =
+        cases.iter().map(|(p, l)| json!({"package": p.to_string_lossy(), "line": l}).to_string()).collect();
+    std::fs::write(&batch, text.join("\n")).unwrap();
+    let out = Command::new(python())
+        .arg(bench().join("judge.py"))
+        .arg("--batch")
+        .arg(&batch)
+        .stdin(Stdio::null())
+        .output()
+        .expect("cannot run the venv's python");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "judge.py failed: {stderr}");
+    let verdicts: Vec<Value> =
+        String::from_utf8_lossy(&out.stdout).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(verdicts.len(), cases.len(), "one verdict per case; stderr: {stderr}");
+    for v in &verdicts {
+        assert!(v.get("error").is_none(), "the judge could not judge {}: {}", v["package"], v["error"]);
+    }
+    verdicts
+}
+
+fn held(v: &Value) -> bool {
+    v["held"].as_bool().unwrap_or_else(|| panic!("no verdict in {v}"))
+}
+
+#[test]
+fn the_judge_tells_holding_from_failing_fixtures() {
+    let fixtures = bench().join("fixtures");
+    let cases = jsonl(&fixtures.join("cases.jsonl"));
+    let pairs: Vec<(PathBuf, Value)> =
+        cases.iter().map(|c| (fixtures.join(c["fixture"].as_str().unwrap()), c["line"].clone())).collect();
+    let verdicts = judge(&pairs);
+    let mut wrong = Vec::new();
+    // relation name -> (seen holding, seen failing) among the fixtures' expectations
+    let mut both: BTreeMap<String, (bool, bool)> = BTreeMap::new();
+    for (case, v) in cases.iter().zip(&verdicts) {
+        let fixture = case["fixture"].as_str().unwrap();
+        if held(&v["counts"]) != case["expect"]["counts"].as_bool().unwrap() {
+            wrong.push(format!("{fixture}: counts {}", v["counts"]));
+        }
+        let expect = case["expect"]["relations"].as_array().unwrap();
+        let got = v["relations"].as_array().unwrap();
+        assert_eq!(expect.len(), got.len(), "{fixture}: an expectation per relation");
+        for (e, r) in expect.iter().zip(got) {
+            let e = e.as_bool().unwrap();
+            let name = r["relation"].as_str().unwrap().to_string();
+            let seen = both.entry(name.clone()).or_default();
+            if e {
+                seen.0 = true;
+            } else {
+                seen.1 = true;
+            }
+            if held(r) != e {
+                wrong.push(format!("{fixture}: {name} {} expected {e}: {} {}", r["subject"], r["why"], r["measured"]));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "the judge disagrees with {} fixture expectations:\n{}", wrong.len(), wrong.join("\n"));
+    // Every relation the suite uses is seen both holding and failing.
+    let used: BTreeSet<String> = jsonl(&bench().join("suite.jsonl"))
+        .iter()
+        .flat_map(|l| l["relations"].as_array().unwrap().iter().map(|r| r["relation"].as_str().unwrap().to_string()))
+        .collect();
+    for name in &used {
+        let (h, f) = both.get(name).copied().unwrap_or_default();
+        assert!(h && f, "the fixtures must show {name} both holding ({h}) and failing ({f})");
+    }
+    assert!(used.len() >= 25, "the suite uses {} relation kinds", used.len());
+}
+
+#[test]
+fn the_judge_refuses_bad_input_with_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| {
+        let out =
+            Command::new(python()).arg(bench().join("judge.py")).args(args).stdin(Stdio::null()).output().unwrap();
+        (out.status.code(), String::from_utf8_lossy(&out.stderr).to_string())
+    };
+    let missing = dir.path().join("nothing");
+    let (code, err) = run(&[missing.to_str().unwrap(), "--line", r#"{"counts": {}, "robots": {}, "relations": []}"#]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("no scene.xml") && err.trim().lines().count() == 1, "{err}");
+    let fixture = bench().join("fixtures/aisle_good");
+    let bad = r#"{"counts": {}, "robots": {}, "relations": [{"subject": "shelf", "relation": "levitating"}]}"#;
+    let (code, err) = run(&[fixture.to_str().unwrap(), "--line", bad]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("unknown relation 'levitating'"), "{err}");
+}
+
+/// Generates each prompt on each seed; every scene must verify in MuJoCo.
+fn generate_all(ids: &[&str], seeds: &[u64], dir: &Path) -> Vec<(PathBuf, Value)> {
+    let mut out = Vec::new();
+    for id in ids {
+        let line = suite_line(id);
+        for &seed in seeds {
+            let pkg = dir.join(format!("{id}-{seed}"));
+            let prompt = line["prompt"].as_str().unwrap();
+            let o = generate(prompt, &pkg, &Options { seed, ..Options::default() }, &mut |_| {}).unwrap();
+            let v = o.report.verification.as_ref().unwrap();
+            assert!(
+                o.report.status == Status::Verified
+                    && v.compiled
+                    && v.initial_contacts.as_ref().unwrap().deep.is_empty()
+                    && v.settle.as_ref().unwrap().moved.is_empty(),
+                "{id} seed {seed}: not verified: {:?}",
+                v.failures
+            );
+            out.push((pkg, line.clone()));
+        }
+    }
+    out
+}
+
+#[test]
+fn the_judge_reads_real_packages() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = generate_all(&["readme-aisle", "lab-issue2"], &[1], dir.path());
+    let verdicts = judge(&cases);
+    // Every relation gets a verdict with its measurements or a reason.
+    for v in &verdicts {
+        for r in v["relations"].as_array().unwrap() {
+            let measured = r["measured"].as_object().map_or(0, |m| m.len());
+            assert!(measured > 0 || r["why"].is_string(), "{}: {} has neither numbers nor a reason", v["id"], r);
+        }
+    }
+    // What holds today and must keep holding: the README example's counts, the bins and the
+    // arm on the bench of issue 2's prompt.
+    assert!(held(&verdicts[0]["counts"]), "readme-aisle counts: {}", verdicts[0]["counts"]);
+    let lab = &verdicts[1];
+    for r in lab["relations"].as_array().unwrap().iter().filter(|r| r["relation"] == "on") {
+        assert!(held(r), "lab-issue2: {} on {}: {} {}", r["subject"], r["target"], r["why"], r["measured"]);
+    }
+}
+
+#[test]
+#[ignore = "waiting for the solver (issue 12): the layout does not keep every stated relation yet; run with --ignored"]
+fn suite_prompts_hold_every_relation() {
+    // A prompt for every relation kind of the suite (all 25 are covered), on two seeds.
+    let ids = [
+        "aisle-facing",
+        "readme-aisle",
+        "factory-workstations",
+        "factory-welding-cell",
+        "factory-panda-belt",
+        "warehouse-pallet-stack",
+        "loading-dock-pallets",
+        "storage-shelves-full",
+        "garage-tires",
+        "office-desk-middle",
+        "office-monitors-row",
+        "storage-cabinets-two-walls",
+        "warehouse-pallet-aisles",
+        "warehouse-shelves-north",
+        "office-desks-rows-chairs",
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let cases = generate_all(&ids, &[1, 2], dir.path());
+    let verdicts = judge(&cases);
+    let mut kinds = BTreeSet::new();
+    let mut failures = Vec::new();
+    for ((pkg, _), v) in cases.iter().zip(&verdicts) {
+        let name = pkg.file_name().unwrap().to_string_lossy().to_string();
+        if !held(&v["counts"]) {
+            failures.push(format!("{name}: counts {}", v["counts"]));
+        }
+        for r in v["relations"].as_array().unwrap() {
+            kinds.insert(r["relation"].as_str().unwrap().to_string());
+            if !held(r) {
+                failures.push(format!("{name}: {} {} {}: {}", r["subject"], r["relation"], r["target"], r["why"]));
+            }
+        }
+    }
+    assert_eq!(kinds.len(), 25, "the chosen prompts cover every relation kind: {kinds:?}");
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+}
