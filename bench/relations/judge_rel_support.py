@@ -17,9 +17,9 @@ from typing import Any
 import numpy as np
 
 from judge_common import Relation, Verdict, resolve
-from judge_geometry import Arr, point_in_convex, point_segment_distance, poly_distance
+from judge_geometry import Arr, point_in_convex, point_segment_distance, poly_distance, project
 from judge_rel_place import ahead, wall_contact
-from judge_scene import Scene, Thing
+from judge_scene import Scene, Surface, Thing
 
 REST_TOL_M = 0.03
 REST_XY_SLACK_M = 0.02
@@ -27,6 +27,7 @@ UNDER_SLACK_M = 0.01
 STACK_OFFSET_M = 0.25
 FULL_SHARE = 0.75
 FULL_PER_LEVEL = 2
+FULL_LENGTH_SHARE = 0.5
 UPRIGHT_DEG = 60.0
 LEAN_WALL_M = 0.10
 ON_FLOOR_M = 0.05
@@ -205,20 +206,43 @@ def full_of(rel: Relation, scene: Scene) -> Verdict:
     """Judge `full_of`.
 
     On every carrier, at least 75 % of its levels (sites named `_level_`, else all its
-    support surfaces) hold two or more items.
+    support surfaces) are filled: two or more items, or items covering at least half the
+    level's length (one bin that fills a narrow shelf).
     """
     subs, tgts = resolve(scene, rel.subject), resolve(scene, rel.target)
     if not subs:
         return _missing(rel.subject)
-    per, bad = [], []
+    per, cover, bad = [], [], []
     for c in subs:
         levels = [s for s in c.surfaces if "_level_" in s.name] or c.surfaces
-        counts = [sum(1 for i in tgts if rests_on(i, c) == s.name) for s in levels]
+        counts, shares, filled = [], [], 0
+        for lv in levels:
+            items = [i for i in tgts if rests_on(i, c) == lv.name]
+            share = _length_share(lv, items)
+            counts.append(len(items))
+            shares.append(share)
+            filled += int(len(items) >= FULL_PER_LEVEL or share >= FULL_LENGTH_SHARE)
         per.append(counts)
-        need = math.ceil(FULL_SHARE * len(levels))
-        if not levels or sum(1 for k in counts if k >= FULL_PER_LEVEL) < need:
+        cover.append(shares)
+        if not levels or filled < math.ceil(FULL_SHARE * len(levels)):
             bad.append(c.name)
-    return Verdict.of(not bad, f"not full: {', '.join(bad)}", items_per_level=per)
+    return Verdict.of(not bad, f"not full: {', '.join(bad)}", items_per_level=per, length_share_per_level=cover)
+
+
+def _length_share(level: Surface, items: list[Thing]) -> float:
+    """Return the share of a level's length its items cover (their union along its long side)."""
+    k = 0 if level.half[0] >= level.half[1] else 1
+    axis = level.rot[:2, k]
+    c = float(level.centre[:2] @ axis)
+    spans = sorted(project(i.footprint, axis) for i in items)
+    covered, end = 0.0, -math.inf
+    lo_lv, hi_lv = c - float(level.half[k]), c + float(level.half[k])
+    for lo, hi in spans:
+        lo, hi = max(lo, lo_lv, end), min(hi, hi_lv)
+        if hi > lo:
+            covered += hi - lo
+            end = hi
+    return covered / max(1e-9, hi_lv - lo_lv)
 
 
 def leaning(rel: Relation, scene: Scene) -> Verdict:
