@@ -143,10 +143,52 @@ pub(crate) fn door_zone(door: &DoorLayout, size: &Dims) -> Aabb {
 /// Items that rest on other objects rather than the floor.
 pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
     let o = &ctx.input.objects[idx];
-    ctx.relations(&o.group).iter().find_map(|r| match r {
-        RelationKind::On { target } => Some(target.clone()),
-        _ => None,
-    })
+    ctx.relations(&o.group)
+        .iter()
+        .find_map(|r| match r {
+            RelationKind::On { target } => Some(target.clone()),
+            _ => None,
+        })
+        .or_else(|| {
+            companion_rests_on_host(ctx, idx).then(|| floor::hosts_of(ctx, &o.group).into_iter().next()).flatten()
+        })
+}
+
+/// Small things that rest on surfaces (as opposed to furniture and fixtures).
+pub(crate) fn is_small(ctx: &Ctx<'_>, idx: usize) -> bool {
+    ctx.input.objects[idx].asset.placement == PlacementKind::OnSurface
+}
+
+/// A companion that rests on its host ("desks each with a monitor").
+pub(crate) fn companion_rests_on_host(ctx: &Ctx<'_>, idx: usize) -> bool {
+    is_small(ctx, idx)
+        && floor::hosts_of(ctx, &ctx.input.objects[idx].group)
+            .iter()
+            .any(|h| ctx.instances(h).first().is_some_and(|&i| !ctx.input.objects[i].asset.surfaces.is_empty()))
+}
+
+/// A floor group: as a formation when it has one (kept whole, or each member placed on
+/// its own and the formation reported unmet), else one instance at a time.
+fn place_group(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) {
+    let formation = ctx.relations(group).into_iter().find(|r| r.is_group_formation()).cloned();
+    if let Some(rel) = formation
+        && idxs.len() > 1
+    {
+        if crate::formation::place(ctx, group, idxs, &rel) {
+            return;
+        }
+        let plan = ctx.input.plan;
+        let phrase = plan.describe(&sw_plan::Relation { subject: group.to_string(), kind: rel.clone() });
+        ctx.warn(
+            "relation_unmet",
+            format!("could not keep {phrase}: no free floor space for the whole group in that arrangement; placed one by one"),
+        );
+    }
+    for &idx in idxs {
+        if ctx.placed[idx].is_none() {
+            floor::place(ctx, idx);
+        }
+    }
 }
 
 pub(crate) fn run(input: &LayoutInput<'_>, size: Dims) -> AttemptResult {
@@ -204,24 +246,25 @@ pub(crate) fn run_pinned(input: &LayoutInput<'_>, size: Dims, pins: Option<&crat
     }
     let pinned: Vec<bool> = ctx.placed.iter().map(Option::is_some).collect();
 
-    // 1. Furniture and fixtures on the floor, targets before the things related to them.
-    let is_small = |i: usize| input.objects[i].asset.placement == PlacementKind::OnSurface;
+    // 1. Furniture, fixtures and robots on the floor, each after what its relations
+    //    point at; groups with a formation (a row, aisles, a stack …) as a whole.
     // Small things go here too when where they stand was said ("a bin under the table").
     let related: Vec<bool> = input.objects.iter().map(|o| !ctx.relations(&o.group).is_empty()).collect();
-    let has_relations = |i: usize| related[i];
+    let companions: Vec<bool> = input.objects.iter().map(|o| !floor::hosts_of(&ctx, &o.group).is_empty()).collect();
     let furniture: Vec<usize> = (0..input.objects.len())
         .filter(|&i| {
             !pinned[i]
                 && input.objects[i].carries_robot.is_none()
-                && (!is_small(i) || has_relations(i))
+                && (!is_small(&ctx, i) || related[i] || companions[i])
                 && surface_target(&ctx, i).is_none()
         })
         .collect();
-    for idx in floor::order(&ctx, &furniture) {
-        floor::place(&mut ctx, idx);
+    for unit in crate::order::units(&ctx, &furniture) {
+        match unit {
+            crate::order::Unit::Group(group, idxs) => place_group(&mut ctx, &group, &idxs),
+            crate::order::Unit::Robot(ri) => robots::place_one(&mut ctx, ri),
+        }
     }
-    // 2. Robots, with their pedestals and carts.
-    robots::place_all(&mut ctx);
     // 3. Items on surfaces (and large objects said to be on something).
     let on_surfaces: Vec<usize> = (0..input.objects.len())
         .filter(|&i| !pinned[i] && input.objects[i].carries_robot.is_none() && surface_target(&ctx, i).is_some())
@@ -232,9 +275,9 @@ pub(crate) fn run_pinned(input: &LayoutInput<'_>, size: Dims, pins: Option<&crat
     let rest: Vec<usize> = (0..input.objects.len())
         .filter(|&i| {
             !pinned[i]
+                && ctx.placed[i].is_none()
                 && input.objects[i].carries_robot.is_none()
-                && is_small(i)
-                && !has_relations(i)
+                && is_small(&ctx, i)
                 && surface_target(&ctx, i).is_none()
         })
         .collect();

@@ -11,9 +11,15 @@
 
 mod anomaly;
 mod attempt;
+mod candidates;
 mod floor;
+mod formation;
 mod frames;
+mod guards;
+mod order;
 mod pinned;
+mod reach;
+mod relate;
 mod robots;
 pub mod rules;
 mod space;

@@ -7,8 +7,10 @@ use sw_geom::{Aabb, SupportSurface};
 use sw_plan::{PlacedRobot, Support};
 
 use crate::attempt::{Ctx, round};
-use crate::floor::{beside, fits_floor, free_grid, keeps_egress};
+use crate::candidates::free_grid;
+use crate::floor::{fits_floor, keeps_egress};
 use crate::frames::{Spot, robot_yaw_facing};
+use crate::reach;
 use crate::space::FLOOR_GAP;
 use crate::{RobotItem, RobotMount};
 
@@ -17,40 +19,39 @@ const ROBOT_GAP: f64 = 0.02;
 /// Extra room around mobile bases so they can move, m.
 const MOBILE_GAP: f64 = 0.25;
 
-pub(crate) fn place_all(ctx: &mut Ctx<'_>) {
-    for ri in 0..ctx.input.robots.len() {
-        if ctx.robots[ri].is_some() {
-            // Pinned where an earlier layout put it.
-            continue;
+/// Places one robot (with its pedestal or cart): first with guards kept at their safety
+/// distance, then (reported by the rules check) without, rather than leaving it out.
+pub(crate) fn place_one(ctx: &mut Ctx<'_>, ri: usize) {
+    if ctx.robots[ri].is_some() {
+        // Pinned where an earlier layout put it.
+        return;
+    }
+    let robot = ctx.input.robots[ri].clone();
+    let mut ok = false;
+    for strict in [true, false] {
+        ctx.guards_strict = strict;
+        ok = match &robot.mount {
+            RobotMount::Surface { group } => on_surface(ctx, ri, &robot, group),
+            RobotMount::Carrier { object } => on_carrier(ctx, ri, &robot, object),
+            RobotMount::Floor => on_floor(ctx, ri, &robot),
+        };
+        if ok {
+            break;
         }
-        let robot = ctx.input.robots[ri].clone();
-        // First with guards kept at their safety distance, then (reported by the rules
-        // check) without, rather than leaving the robot out.
-        let mut ok = false;
-        for strict in [true, false] {
-            ctx.guards_strict = strict;
-            ok = match &robot.mount {
-                RobotMount::Surface { group } => on_surface(ctx, ri, &robot, group),
-                RobotMount::Carrier { object } => on_carrier(ctx, ri, &robot, object),
-                RobotMount::Floor => on_floor(ctx, ri, &robot),
-            };
-            if ok {
-                break;
-            }
-        }
-        if !ok {
-            let s = ctx.space.half;
-            ctx.warn(
-                "robot_left_out",
-                format!(
-                    "{}: no collision-free spawn found in the {:.1} × {:.1} m room; the robot was left out",
-                    robot.name,
-                    2.0 * s[0],
-                    2.0 * s[1]
-                ),
-            );
-            ctx.floor_failures += 1;
-        }
+    }
+    ctx.guards_strict = true;
+    if !ok {
+        let s = ctx.space.half;
+        ctx.warn(
+            "robot_left_out",
+            format!(
+                "{}: no collision-free spawn found in the {:.1} × {:.1} m room; the robot was left out",
+                robot.name,
+                2.0 * s[0],
+                2.0 * s[1]
+            ),
+        );
+        ctx.floor_failures += 1;
     }
 }
 
@@ -149,7 +150,7 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
     false
 }
 
-/// On a pedestal or cart made for it, standing beside its work.
+/// On a pedestal or cart made for it, standing beside its work with the work in reach.
 fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) -> bool {
     let Some(ci) = ctx.input.objects.iter().position(|o| o.name == carrier) else {
         return false;
@@ -162,8 +163,9 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         .map(|s| s.z)
         .fold(f64::NAN, f64::max);
     let top = if top.is_finite() { top } else { ctx.bounds[ci].max[2] };
-    // Work to stand beside: the named group, else any work surface or machine.
-    let work_groups: Vec<String> = match &robot.near {
+    // Work to stand beside: the named group, else any work surface, conveyor or machine.
+    let named = reach::work_group(ctx, robot);
+    let work_groups: Vec<String> = match &named {
         Some(g) => vec![g.clone()],
         None => {
             let mut gs: Vec<String> = Vec::new();
@@ -176,80 +178,152 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
             gs
         }
     };
-    let mut candidates: Vec<(Spot, Option<(f64, f64)>)> = Vec::new();
     let turn = ctx.input.robots[..ri].iter().filter(|r| matches!(r.mount, RobotMount::Carrier { .. })).count();
+    let cb = ctx.bounds[ci];
+    let mut candidates: Vec<(Spot, bool)> = Vec::new();
     for g in &work_groups {
-        for (ti, ts) in ctx.placed_instances(g) {
-            let _ = ti;
-            for s in beside(ctx, ci, g, turn) {
-                candidates.push((s, Some((ts.x, ts.y))));
-            }
+        for s in crate::candidates::beside(ctx, &cb, g, turn) {
+            candidates.push((s, true));
         }
     }
-    for s in free_grid(ctx, ci, true).iter().copied() {
-        candidates.push((s, None));
+    let rels: Vec<sw_plan::RelationKind> =
+        ctx.relations(&robot.group).into_iter().filter(|r| crate::relate::is_positional(r)).cloned().collect();
+    if named.is_none() || candidates.is_empty() {
+        for r in &rels {
+            candidates.extend(
+                crate::candidates::for_relation(ctx, &cb, &robot.group, turn, r).into_iter().map(|s| (s, false)),
+            );
+        }
+        for s in free_grid(ctx, &cb, &format!("{}#carrier", robot.group), true).iter().copied() {
+            candidates.push((s, false));
+        }
     }
-    for (spot, work) in candidates {
-        if !fits_floor(ctx, ci, &spot, &[]) || !keeps_egress(ctx, ci, &spot) {
+    let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
+    let mut fallback: Option<(Spot, Spot, Vec<Aabb>, Option<usize>)> = None;
+    for (spot, beside_work) in candidates {
+        if !fits_floor(ctx, ci, &spot, &[]) {
             continue;
         }
         let base = spot.apply([0.0, 0.0, top]);
-        let (tx, ty) = work.unwrap_or((0.0, 0.0));
+        // The instance it works at, and that it can: a belt within reach, a surface at hand.
+        let work = work_groups.iter().find_map(|g| reach::work_instance(ctx, g, base));
+        let in_reach = work.is_some_and(|w| reach::can_work_at(ctx, base, robot.reach, w));
+        if beside_work && robot.is_arm && !in_reach && named.is_some() {
+            continue;
+        }
+        let body = crate::relate::Body::object(&ctx.local[ci], &spot);
+        if !checks.iter().all(|c| c.holds(ctx, &body, 1)) && fallback.is_some() {
+            continue;
+        }
+        let (tx, ty) = work.and_then(|w| reach::work_point(ctx, base, w)).map_or((0.0, 0.0), |p| (p[0], p[1]));
         let yaw = robot_yaw_facing(tx - base[0], ty - base[1]);
         let rspot = Spot::new(base[0], base[1], base[2], yaw);
         let boxes = robot_boxes(robot, &rspot);
         if !ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) || !clear_of_doorway(ctx, robot, &rspot) {
             continue;
         }
-        ctx.commit(ci, spot, Support::Floor);
-        let kind = if ctx.input.objects[ci].category == "mobile_cart" { "mobile_base" } else { "pedestal" };
-        let cov = work.and_then(|(tx, ty)| {
-            let (wi, ws) = work_groups
-                .iter()
-                .flat_map(|g| ctx.placed_instances(g))
-                .find(|(_, s)| (s.x - tx).abs() < 1e-9 && (s.y - ty).abs() < 1e-9)?;
-            let surf = ctx.input.objects[wi].asset.surfaces.iter().find(|s| s.clearance.is_none())?.clone();
-            Some(coverage(&rspot, robot, &ws, &surf))
-        });
-        let carrier_name = ctx.input.objects[ci].name.clone();
-        commit(ctx, ri, robot, rspot, boxes, kind, Some(carrier_name), cov.filter(|_| robot.is_arm));
+        if !keeps_egress(ctx, ci, &spot) {
+            continue;
+        }
+        if !checks.iter().all(|c| c.holds(ctx, &body, 1)) {
+            fallback = Some((spot, rspot, boxes, work));
+            continue;
+        }
+        drop(checks);
+        commit_carrier(ctx, ri, robot, ci, spot, rspot, boxes, work);
+        return true;
+    }
+    drop(checks);
+    if let Some((spot, rspot, boxes, work)) = fallback {
+        let plan = ctx.input.plan;
+        let unmet: Vec<String> = rels
+            .iter()
+            .map(|r| plan.describe(&sw_plan::Relation { subject: robot.group.clone(), kind: r.clone() }))
+            .collect();
+        ctx.warn("relation_unmet", format!("{}: could not keep {}; placed nearby", robot.name, unmet.join(", ")));
+        commit_carrier(ctx, ri, robot, ci, spot, rspot, boxes, work);
         return true;
     }
     false
 }
 
-/// A mobile base on open floor, near its work if it has one.
+#[allow(clippy::too_many_arguments)]
+fn commit_carrier(
+    ctx: &mut Ctx<'_>,
+    ri: usize,
+    robot: &RobotItem,
+    ci: usize,
+    spot: Spot,
+    rspot: Spot,
+    boxes: Vec<Aabb>,
+    work: Option<usize>,
+) {
+    ctx.commit(ci, spot, Support::Floor);
+    let kind = if ctx.input.objects[ci].category == "mobile_cart" { "mobile_base" } else { "pedestal" };
+    let cov = work.and_then(|w| {
+        let ws = ctx.placed[w].as_ref()?.spot;
+        let surf = reach::top_surface(ctx, w)?;
+        Some(coverage(&rspot, robot, &ws, &surf))
+    });
+    let carrier_name = ctx.input.objects[ci].name.clone();
+    commit(ctx, ri, robot, rspot, boxes, kind, Some(carrier_name), cov.filter(|_| robot.is_arm));
+}
+
+/// A robot standing on the floor (mobile bases, arms on their own base plate): where its
+/// relations say ("between the racks", "near the door"), near its work if it has one;
+/// a mobile base with nothing said drives in the aisle when the scene has one.
 fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
+    let mut rels: Vec<sw_plan::RelationKind> =
+        ctx.relations(&robot.group).into_iter().filter(|r| crate::relate::is_positional(r)).cloned().collect();
+    let implicit = rels.is_empty() && robot.near.is_none() && !robot.is_arm;
+    if implicit && let Some(aisle) = aisle_group(ctx) {
+        rels.push(sw_plan::RelationKind::Between { first: aisle.clone(), second: aisle });
+    }
     let mut targets: Vec<(f64, f64)> = Vec::new();
     if let Some(g) = &robot.near {
         targets.extend(ctx.placed_instances(g).iter().map(|(_, s)| (s.x, s.y)));
     }
     let [hw, hd] = ctx.space.half;
-    let mut pts = Vec::new();
+    let keep = crate::space::union(&robot.keepout);
+    let mut pts: Vec<(f64, f64, Option<f64>)> = Vec::new();
+    for r in &rels {
+        for s in crate::candidates::for_relation(ctx, &keep, &robot.group, ri, r) {
+            pts.push((s.x, s.y, None));
+        }
+    }
     let step = 0.1;
+    let mut grid = Vec::new();
     let mut x = -hw;
     while x <= hw {
         let mut y = -hd;
         while y <= hd {
-            pts.push((x, y));
+            grid.push((x, y, None));
             y += step;
         }
         x += step;
     }
     let turn = ri as f64;
-    let key = |p: &(f64, f64)| -> f64 {
+    let key = |p: &(f64, f64, Option<f64>)| -> f64 {
         match targets.first() {
             Some(t) => (p.0 - t.0).hypot(p.1 - t.1),
             // Open floor a little off centre, different for each robot.
             None => (p.0 - 0.3 * turn).hypot(p.1 + 0.2 * hd.min(2.0)),
         }
     };
-    pts.sort_by(|a, b| key(a).total_cmp(&key(b)));
-    for (x, y) in pts {
+    grid.sort_by(|a, b| key(a).total_cmp(&key(b)));
+    pts.extend(grid);
+    let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
+    let mut fallback: Option<(Spot, Vec<Aabb>)> = None;
+    for (x, y, _) in pts {
         let (tx, ty) = targets.first().copied().unwrap_or((0.0, 0.0));
         let yaw = if (tx - x).hypot(ty - y) < 1e-6 { 0.0 } else { robot_yaw_facing(tx - x, ty - y) };
         let spot = Spot::new(x, y, 0.0, yaw);
         let boxes = robot_boxes(robot, &spot);
+        let body = crate::relate::Body { fp: crate::space::union(&boxes), front: [yaw.cos(), yaw.sin()] };
+        let all_hold = checks.iter().all(|c| c.holds(ctx, &body, 1));
+        if !all_hold && fallback.is_some() {
+            continue;
+        }
         let inflated: Vec<Aabb> = boxes
             .iter()
             .map(|b| Aabb {
@@ -263,11 +337,40 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
             ctx.egress.clone().is_none_or(|mut g| g.keeps_connected(&crate::space::union(&boxes), &fronts))
         };
         if inside && ctx.space.fits(&boxes, MOBILE_GAP.max(FLOOR_GAP), &[], true, &[]) && keeps_routes() {
-            commit(ctx, ri, robot, spot, boxes, "floor", None, None);
-            return true;
+            if all_hold {
+                drop(checks);
+                commit(ctx, ri, robot, spot, boxes, "floor", None, None);
+                return true;
+            }
+            fallback = Some((spot, boxes));
         }
     }
+    drop(checks);
+    if let Some((spot, boxes)) = fallback {
+        if !implicit {
+            let plan = ctx.input.plan;
+            let unmet: Vec<String> = rels
+                .iter()
+                .map(|r| plan.describe(&sw_plan::Relation { subject: robot.group.clone(), kind: r.clone() }))
+                .collect();
+            ctx.warn(
+                "relation_unmet",
+                format!("{}: could not keep {} (no free floor there); placed nearby", robot.name, unmet.join(", ")),
+            );
+        }
+        commit(ctx, ri, robot, spot, boxes, "floor", None, None);
+        return true;
+    }
     false
+}
+
+/// A group standing in rows that face each other or in aisles: the aisle a mobile robot
+/// drives in.
+fn aisle_group(ctx: &Ctx<'_>) -> Option<String> {
+    ctx.input.plan.relations.iter().find_map(|r| {
+        let aisle = matches!(r.kind, sw_plan::RelationKind::FacingEachOther | sw_plan::RelationKind::InAisles);
+        (aisle && ctx.placed_instances(&r.subject).len() >= 2).then(|| r.subject.clone())
+    })
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -8,12 +8,15 @@ use sw_plan::Support;
 use crate::attempt::{Ctx, surface_target};
 use crate::floor;
 use crate::frames::Spot;
+use crate::reach;
 use crate::space::SURFACE_GAP;
 
 /// Resolution of positions on a surface, m.
 const STEP: f64 = 0.02;
 
-/// Items with an `on` relation: on their target, or on the floor next to it (reported).
+/// Items with an `on` relation (or resting on their host, "desks each with a monitor"):
+/// on their target, within reach of the arm that works there, else on the floor next to
+/// it (reported).
 pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
     for &idx in items {
         let Some(target) = surface_target(ctx, idx) else {
@@ -21,14 +24,27 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
         };
         let group = ctx.input.objects[idx].group.clone();
         let k = ctx.instances(&group).iter().position(|&i| i == idx).unwrap_or(0);
-        if place_on_group(ctx, idx, &target, k) {
+        if place_on_group(ctx, idx, &target, k, true) {
             continue;
         }
         let name = ctx.input.objects[idx].name.clone();
+        if place_on_group(ctx, idx, &target, k, false) {
+            let phrase = ctx.input.plan.phrase_of(&target);
+            ctx.warn(
+                "relation_unmet",
+                format!("{name}: no room on \"{phrase}\" within the reach of the arm that works there; placed out of its reach"),
+            );
+            continue;
+        }
         let had_target = !ctx.placed_instances(&target).is_empty();
         if floor::place(ctx, idx) {
             let why = if had_target { "no room left on it" } else { "it could not be placed" };
-            ctx.warn("relation_unmet", format!("{name}: could not go on {target} ({why}); placed on the floor"));
+            let subject = ctx.input.plan.phrase_of(&group);
+            let phrase = ctx.input.plan.phrase_of(&target);
+            ctx.warn(
+                "relation_unmet",
+                format!("{name}: could not keep \"{subject}\" on \"{phrase}\" ({why}); placed on the floor"),
+            );
         }
     }
 }
@@ -36,30 +52,41 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
 /// Small items with no support named: tabletop things on work surfaces, the rest on
 /// the floor.
 pub(crate) fn place_loose(ctx: &mut Ctx<'_>, items: &[usize]) {
-    let hosts: Vec<String> = {
+    let hosts_tagged = |ctx: &Ctx<'_>, work: bool| -> Vec<String> {
         let mut v: Vec<String> = Vec::new();
         for (i, o) in ctx.input.objects.iter().enumerate() {
-            if o.has_tag("surface")
-                && o.has_tag("furniture")
-                && ctx.placed[i].is_some()
-                && o.carries_robot.is_none()
-                && !v.contains(&o.group)
-            {
+            let host = if work {
+                o.has_tag("surface") && o.has_tag("furniture")
+            } else {
+                o.has_tag("storage") && !o.asset.surfaces.is_empty()
+            };
+            if host && ctx.placed[i].is_some() && o.carries_robot.is_none() && !v.contains(&o.group) {
                 v.push(o.group.clone());
             }
         }
         v
     };
+    let work_hosts = hosts_tagged(ctx, true);
+    let storage_hosts = hosts_tagged(ctx, false);
     for &idx in items {
         let o = &ctx.input.objects[idx];
         // "a bin under the table", "a crate next to the door": where it goes was said.
         let placed_by_relation = !ctx.relations(&o.group).is_empty();
-        let tabletop = o.has_tag("tabletop") && !placed_by_relation;
-        if tabletop && !hosts.is_empty() {
+        // Tabletop things go on work surfaces; boxes and crates on the shelving.
+        let hosts = if o.has_tag("tabletop") {
+            &work_hosts
+        } else if o.has_tag("container") || o.has_tag("stackable") {
+            &storage_hosts
+        } else {
+            &Vec::new()
+        };
+        if !placed_by_relation && !hosts.is_empty() {
             let group = o.group.clone();
             let k = ctx.instances(&group).iter().position(|&i| i == idx).unwrap_or(0);
             let host = hosts[k % hosts.len()].clone();
-            if place_on_group(ctx, idx, &host, k / hosts.len()) || hosts.iter().any(|h| place_on_group(ctx, idx, h, 0))
+            let hosts = hosts.clone();
+            if place_on_group(ctx, idx, &host, k / hosts.len(), true)
+                || hosts.iter().any(|h| place_on_group(ctx, idx, h, 0, true))
             {
                 continue;
             }
@@ -70,7 +97,7 @@ pub(crate) fn place_loose(ctx: &mut Ctx<'_>, items: &[usize]) {
 
 /// Tries every placed instance of `target` (starting with instance `k`) and every
 /// surface of it, least used first.
-fn place_on_group(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize) -> bool {
+fn place_on_group(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize, in_reach: bool) -> bool {
     let mut hosts = ctx.placed_instances(target);
     if hosts.is_empty() {
         return false;
@@ -92,8 +119,9 @@ fn place_on_group(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize) -> bool
             let fb = fill(&used[b]) / surfaces[b].area().max(1e-6);
             lower(a).cmp(&lower(b)).then(fa.total_cmp(&fb)).then(a.cmp(&b))
         });
+        let arms = if in_reach { reach::arms_at(ctx, hi) } else { Vec::new() };
         for si in order {
-            if try_surface(ctx, idx, hi, si) {
+            if try_surface(ctx, idx, hi, si, &arms) {
                 return true;
             }
         }
@@ -105,7 +133,9 @@ fn fill(rects: &[[f64; 4]]) -> f64 {
     rects.iter().map(|r| (r[2] - r[0]) * (r[3] - r[1])).sum()
 }
 
-fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize) -> bool {
+/// Puts the item on surface `si` of `host`, within the reach of one of `arms` (base,
+/// reach) when there are any.
+fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize, arms: &[([f64; 3], f64)]) -> bool {
     let Some(host_spot) = ctx.placed[host].as_ref().map(|p| p.spot) else {
         return false;
     };
@@ -151,6 +181,12 @@ fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize) -> bool {
                 let used = ctx.surface_use.get(&host).and_then(|u| u.get(si));
                 if used.is_some_and(|u| u.iter().any(|r| rects_overlap(r, &rect, SURFACE_GAP))) {
                     continue;
+                }
+                if !arms.is_empty() {
+                    let rest = host_spot.apply([x, y, surf.z]);
+                    if !arms.iter().any(|(base, r)| reach::dist(*base, rest) <= reach::REACH_USE * r) {
+                        continue;
+                    }
                 }
                 let origin = host_spot.apply([x - ox, y - oy, surf.z - b.min[2]]);
                 let spot = Spot::new(origin[0], origin[1], origin[2], host_spot.yaw + local_yaw);

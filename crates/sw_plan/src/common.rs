@@ -58,6 +58,16 @@ pub enum Corner {
 impl Corner {
     pub const ALL: [Corner; 4] = [Corner::NorthEast, Corner::NorthWest, Corner::SouthEast, Corner::SouthWest];
 
+    /// The snake_case name used in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Corner::NorthEast => "north_east",
+            Corner::NorthWest => "north_west",
+            Corner::SouthEast => "south_east",
+            Corner::SouthWest => "south_west",
+        }
+    }
+
     /// The two walls that meet at this corner: (north/south, east/west).
     pub fn walls(self) -> (Wall, Wall) {
         match self {

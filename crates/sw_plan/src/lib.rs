@@ -28,8 +28,8 @@ pub use plan::{
     RelationKind, RobotPlan, RoomKind, RoomPlan, ScenePlan, SizeHint, SizeWord, Understanding,
 };
 pub use report::{
-    AssetCache, ContactCheck, DeepContact, ModelStats, MovedBody, Report, RobotCheck, SceneSummary, SettleCheck,
-    StageTiming, Status, Timings, Verification,
+    AssetCache, ContactCheck, DeepContact, ModelStats, MovedBody, RelationCheck, Report, RobotCheck, SceneSummary,
+    SettleCheck, StageTiming, Status, Timings, Verification,
 };
 pub use schema::{SchemaFile, schemas};
 pub use telemetry::{EditLog, EditRecord, LlmCall, LlmOutcome, LlmStage};

@@ -56,6 +56,46 @@ impl ScenePlan {
     pub fn object_count(&self) -> u32 {
         self.objects.iter().map(|o| o.count).sum()
     }
+
+    pub fn robot(&self, id: &str) -> Option<&RobotPlan> {
+        self.robots.iter().find(|r| r.id == id)
+    }
+
+    /// The words of the prompt behind a group or robot id (its phrase), else the id.
+    pub fn phrase_of(&self, id: &str) -> String {
+        self.object(id)
+            .map(|o| o.phrase.clone())
+            .or_else(|| self.robot(id).map(|r| r.phrase.clone()))
+            .unwrap_or_else(|| id.to_string())
+    }
+
+    /// A relation in the prompt's words, for messages: `"four screens" around "the bench"`.
+    pub fn describe(&self, r: &Relation) -> String {
+        let subject = format!("\"{}\"", self.phrase_of(&r.subject));
+        let detail = match &r.kind {
+            RelationKind::AgainstWall { wall: Some(w) } | RelationKind::Leaning { wall: Some(w) } => {
+                format!(" ({} wall)", w.name())
+            }
+            RelationKind::AtEnd { wall: Some(w) } => format!(" ({} end)", w.name()),
+            RelationKind::InCorner { corner: Some(c) } => format!(" ({})", c.name()),
+            RelationKind::InRows { n: Some(n) } => format!(" ({n})"),
+            _ => String::new(),
+        };
+        let targets: Vec<String> = match &r.kind {
+            RelationKind::Between { first, second } if first == second => {
+                vec![format!("\"{}\"", self.phrase_of(first))]
+            }
+            RelationKind::Between { first, second } => {
+                vec![format!("\"{}\" and \"{}\"", self.phrase_of(first), self.phrase_of(second))]
+            }
+            k => k.targets().into_iter().map(|t| format!("\"{}\"", self.phrase_of(t))).collect(),
+        };
+        if targets.is_empty() {
+            format!("{subject} {}{detail}", r.kind.words())
+        } else {
+            format!("{subject} {} {}{detail}", r.kind.words(), targets.join(" "))
+        }
+    }
 }
 
 /// The room: its kind, its size and whether the user fixed that size.
@@ -290,107 +330,236 @@ pub struct ProxyPlan {
     pub movable: bool,
 }
 
-/// A spatial relation of an object group to the room or to other groups.
+/// A spatial relation of an object group (or a robot group) to the room or to other
+/// groups. Every relation is a constraint the layout keeps; `report.json` says whether it
+/// held in the written scene (see [`RelationKind`] for what each one means, measured).
 ///
 /// (serde cannot deny unknown fields on a struct with a flattened enum, so extra fields
 /// of a relation are ignored rather than rejected.)
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 pub struct Relation {
-    /// The group the relation constrains.
+    /// The group the relation constrains: an object group, or a robot group's id.
     pub subject: String,
     #[serde(flatten)]
     pub kind: RelationKind,
 }
 
-/// The relations the planner and the layout understand.
+/// The relations the planner and the layout understand. The snake_case names are the
+/// names in plans, reports and the relation suite (`bench/relations`). Distances are
+/// between collision footprints (floor projections of the collision boxes), "front" is
+/// an object's +Y axis turned by its yaw, and a group relation holds when it holds for
+/// every instance. The measured definitions are in ARCHITECTURE.md ("Relations").
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(tag = "relation", rename_all = "snake_case")]
 pub enum RelationKind {
-    /// Resting on a surface of `target` ("boxes on the shelves").
-    On {
-        target: String,
-    },
-    /// Underneath `target` ("a bin under the bench").
-    Under {
-        target: String,
-    },
-    /// Back to a wall; any wall when `wall` is absent.
+    /// Resting on a support surface of `target` ("boxes on the shelves").
+    On { target: String },
+    /// Underneath `target`: footprint centre inside its footprint, top below its top.
+    Under { target: String },
+    /// Back to a wall (within 0.15 m of it); any wall when `wall` is absent.
     AgainstWall {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         wall: Option<Wall>,
     },
-    /// Beside `target`.
-    NextTo {
-        target: String,
-    },
-    /// In the gap between two groups.
-    Between {
-        first: String,
-        second: String,
-    },
-    /// The group's instances stand in a row or a line.
+    /// The group spread over two walls, every instance against one of them.
+    OnTwoWalls,
+    /// Beside `target`: at most 0.6 m between footprints.
+    NextTo { target: String },
+    /// Near `target`: at most 1.5 m between footprints.
+    Near { target: String },
+    /// In the gap between instances of two groups (or two instances of one group): the
+    /// footprint centre inside the hull of the two footprints and outside both.
+    Between { first: String, second: String },
+    /// The group's instances stand in one straight row, turned alike.
     InRow,
-    /// The group's instances face each other (two rows, across an aisle).
+    /// The group's instances stand in `n` parallel rows (two when absent).
+    InRows {
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        n: Option<u32>,
+    },
+    /// Parallel rows with corridors 1.5–3.5 m wide between them, fronts to a corridor.
+    InAisles,
+    /// Two rows (or a pair) parallel, fronts facing each other across a gap.
     FacingEachOther,
-    /// Directly in front of `target` (in its front clearance).
-    InFrontOf {
-        target: String,
-    },
-    /// Spread around `target` (chairs around a table).
-    Around {
-        target: String,
-    },
-    /// At one end of the room; a specific end when `wall` is given.
+    /// Directly in front of `target`'s front (or a row's front), within 1.5 m.
+    InFrontOf { target: String },
+    /// Directly behind `target`'s back (or a row's back), within 1.5 m.
+    Behind { target: String },
+    /// Spread around `target`: on at least three of its sides, leaving an opening.
+    Around { target: String },
+    /// At the end of `target`'s row: on its line, beyond its last instance.
+    AtEndOfRow { target: String },
+    /// At one end of the room (the end quarter of its long axis); a specific end when
+    /// `wall` is given.
     AtEnd {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         wall: Option<Wall>,
     },
+    /// Within 2.5 m of the doorway, clear of it.
     NearDoor,
+    /// Within 0.3 m of two walls that meet.
     InCorner {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         corner: Option<Corner>,
     },
-    /// In the middle of the room.
+    /// In the middle of the room, or down the middle of its long axis for a group.
+    #[serde(rename = "in_middle", alias = "in_center")]
     InCenter,
+    /// One stack: each instance resting on the one below ("a stack of five pallets").
+    Stacked,
+    /// Every instance of the subject carries instances of `target` ("pallets of boxes").
+    Loaded { target: String },
+    /// Every support level of the subject holds instances of `target` ("shelves full of
+    /// boxes").
+    FullOf { target: String },
+    /// Standing on edge against a wall ("tires leaning on the wall").
+    Leaning {
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        wall: Option<Wall>,
+    },
+    /// One instance of `target` per instance of the subject, where a person would use it
+    /// ("workstations each with a stool": the stool in front of its station).
+    EachWith { target: String },
+    /// An arm (the subject is a robot group) reaches everything on `target`'s work
+    /// surface, or a conveyor's centreline.
+    Reach { target: String },
 }
 
 impl RelationKind {
-    /// The object groups this relation refers to (besides its subject).
+    /// Every relation name, in the order of the enum.
+    pub const NAMES: [&'static str; 25] = [
+        "on",
+        "under",
+        "against_wall",
+        "on_two_walls",
+        "next_to",
+        "near",
+        "between",
+        "in_row",
+        "in_rows",
+        "in_aisles",
+        "facing_each_other",
+        "in_front_of",
+        "behind",
+        "around",
+        "at_end_of_row",
+        "at_end",
+        "near_door",
+        "in_corner",
+        "in_middle",
+        "stacked",
+        "loaded",
+        "full_of",
+        "leaning",
+        "each_with",
+        "reach",
+    ];
+
+    /// The groups this relation refers to (besides its subject).
     pub fn targets(&self) -> Vec<&str> {
         match self {
             RelationKind::On { target }
             | RelationKind::Under { target }
             | RelationKind::NextTo { target }
+            | RelationKind::Near { target }
             | RelationKind::InFrontOf { target }
-            | RelationKind::Around { target } => vec![target.as_str()],
+            | RelationKind::Behind { target }
+            | RelationKind::Around { target }
+            | RelationKind::AtEndOfRow { target }
+            | RelationKind::Loaded { target }
+            | RelationKind::FullOf { target }
+            | RelationKind::EachWith { target }
+            | RelationKind::Reach { target } => vec![target.as_str()],
             RelationKind::Between { first, second } => vec![first.as_str(), second.as_str()],
             RelationKind::AgainstWall { .. }
+            | RelationKind::OnTwoWalls
             | RelationKind::InRow
+            | RelationKind::InRows { .. }
+            | RelationKind::InAisles
             | RelationKind::FacingEachOther
             | RelationKind::AtEnd { .. }
             | RelationKind::NearDoor
             | RelationKind::InCorner { .. }
-            | RelationKind::InCenter => Vec::new(),
+            | RelationKind::InCenter
+            | RelationKind::Stacked
+            | RelationKind::Leaning { .. } => Vec::new(),
         }
     }
 
-    /// The snake_case name of the relation.
+    /// The snake_case name of the relation (as in JSON).
     pub fn name(&self) -> &'static str {
         match self {
             RelationKind::On { .. } => "on",
             RelationKind::Under { .. } => "under",
             RelationKind::AgainstWall { .. } => "against_wall",
+            RelationKind::OnTwoWalls => "on_two_walls",
             RelationKind::NextTo { .. } => "next_to",
+            RelationKind::Near { .. } => "near",
             RelationKind::Between { .. } => "between",
             RelationKind::InRow => "in_row",
+            RelationKind::InRows { .. } => "in_rows",
+            RelationKind::InAisles => "in_aisles",
             RelationKind::FacingEachOther => "facing_each_other",
             RelationKind::InFrontOf { .. } => "in_front_of",
+            RelationKind::Behind { .. } => "behind",
             RelationKind::Around { .. } => "around",
+            RelationKind::AtEndOfRow { .. } => "at_end_of_row",
             RelationKind::AtEnd { .. } => "at_end",
             RelationKind::NearDoor => "near_door",
             RelationKind::InCorner { .. } => "in_corner",
-            RelationKind::InCenter => "in_center",
+            RelationKind::InCenter => "in_middle",
+            RelationKind::Stacked => "stacked",
+            RelationKind::Loaded { .. } => "loaded",
+            RelationKind::FullOf { .. } => "full_of",
+            RelationKind::Leaning { .. } => "leaning",
+            RelationKind::EachWith { .. } => "each_with",
+            RelationKind::Reach { .. } => "reach",
         }
+    }
+
+    /// The words a prompt uses for the relation, for messages ("around", "next to").
+    pub fn words(&self) -> &'static str {
+        match self {
+            RelationKind::On { .. } => "on",
+            RelationKind::Under { .. } => "under",
+            RelationKind::AgainstWall { .. } => "against the wall",
+            RelationKind::OnTwoWalls => "on two walls",
+            RelationKind::NextTo { .. } => "next to",
+            RelationKind::Near { .. } => "near",
+            RelationKind::Between { .. } => "between",
+            RelationKind::InRow => "in a row",
+            RelationKind::InRows { .. } => "in rows",
+            RelationKind::InAisles => "in aisles",
+            RelationKind::FacingEachOther => "facing each other",
+            RelationKind::InFrontOf { .. } => "in front of",
+            RelationKind::Behind { .. } => "behind",
+            RelationKind::Around { .. } => "around",
+            RelationKind::AtEndOfRow { .. } => "at the end of",
+            RelationKind::AtEnd { .. } => "at one end",
+            RelationKind::NearDoor => "near the door",
+            RelationKind::InCorner { .. } => "in the corner",
+            RelationKind::InCenter => "in the middle",
+            RelationKind::Stacked => "stacked",
+            RelationKind::Loaded { .. } => "loaded with",
+            RelationKind::FullOf { .. } => "full of",
+            RelationKind::Leaning { .. } => "leaning on the wall",
+            RelationKind::EachWith { .. } => "each with",
+            RelationKind::Reach { .. } => "reaching",
+        }
+    }
+
+    /// Relations that arrange a whole group together (rows, aisles, stacks, walls).
+    pub fn is_group_formation(&self) -> bool {
+        matches!(
+            self,
+            RelationKind::InRow
+                | RelationKind::InRows { .. }
+                | RelationKind::InAisles
+                | RelationKind::FacingEachOther
+                | RelationKind::OnTwoWalls
+                | RelationKind::Stacked
+                | RelationKind::Around { .. }
+        )
     }
 }
 

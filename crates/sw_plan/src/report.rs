@@ -6,7 +6,9 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::{Approximation, LeftOut, LlmCall, NotUnderstood, SCHEMA_VERSION, Stage, Violation, Warning};
+use std::collections::BTreeMap;
+
+use crate::{Approximation, LeftOut, LlmCall, NotUnderstood, Relation, SCHEMA_VERSION, Stage, Violation, Warning};
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -25,6 +27,10 @@ pub struct Report {
     pub approximated: Vec<Approximation>,
     pub left_out: Vec<LeftOut>,
     pub violations: Vec<Violation>,
+    /// Every relation the prompt stated (and every arm's reach of its work), measured on
+    /// the written scene (read as empty from older reports).
+    #[serde(default)]
+    pub relations: Vec<RelationCheck>,
     pub warnings: Vec<Warning>,
     /// Every call to a language model the run made (absent for offline runs).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -58,11 +64,34 @@ impl Report {
             approximated: Vec::new(),
             left_out: Vec::new(),
             violations: Vec::new(),
+            relations: Vec::new(),
             warnings: Vec::new(),
             llm_calls: Vec::new(),
             asset_cache: AssetCache::default(),
         }
     }
+}
+
+/// One stated relation and whether it holds in the written scene (`scene.xml` as written:
+/// collision geometry, surface sites and robot bases), with the numbers measured.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+pub struct RelationCheck {
+    /// The relation as planned: `subject`, `relation` and its targets, wall or corner.
+    #[serde(flatten)]
+    pub relation: Relation,
+    /// The subject's catalog category (object bodies are `<category>_<n>`) or robot model.
+    pub subject_category: String,
+    /// The targets' categories or robot models, in the relation's order.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub target_categories: Vec<String>,
+    /// The relation in the prompt's words.
+    pub phrase: String,
+    pub held: bool,
+    /// What was measured, by name: `gap_m`, `angle_deg`, `sides`, `distance_m`, `reach_m` …
+    pub measured: BTreeMap<String, f64>,
+    /// Why it does not hold (absent when it holds).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]

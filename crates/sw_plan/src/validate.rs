@@ -157,9 +157,52 @@ impl ScenePlan {
         }
 
         for (i, rel) in self.relations.iter().enumerate() {
-            if !ids.contains(rel.subject.as_str()) {
+            // Robots may be the subject of placement relations ("a TurtleBot between the
+            // racks") and of reach, and the target of relations that stand things near
+            // them ("screens around the robot"); stacks, loads, supports are objects'.
+            let robot_subject = robot_ids.contains(rel.subject.as_str());
+            let object_only = matches!(
+                rel.kind,
+                RelationKind::On { .. }
+                    | RelationKind::Under { .. }
+                    | RelationKind::Stacked
+                    | RelationKind::Loaded { .. }
+                    | RelationKind::FullOf { .. }
+                    | RelationKind::Leaning { .. }
+                    | RelationKind::EachWith { .. }
+                    | RelationKind::InRow
+                    | RelationKind::InRows { .. }
+                    | RelationKind::InAisles
+                    | RelationKind::FacingEachOther
+                    | RelationKind::OnTwoWalls
+            );
+            let robot_only = matches!(rel.kind, RelationKind::Reach { .. });
+            if robot_only && !robot_subject {
+                err(
+                    format!("relations[{i}].subject"),
+                    format!("'{}' is not a robot group: only arms reach", rel.subject),
+                );
+            } else if !ids.contains(rel.subject.as_str()) && !robot_subject {
                 err(format!("relations[{i}].subject"), format!("refers to unknown object group '{}'", rel.subject));
+            } else if robot_subject && object_only {
+                err(
+                    format!("relations[{i}].relation"),
+                    format!(
+                        "'{}' is a relation of object groups, and '{}' is a robot group",
+                        rel.kind.name(),
+                        rel.subject
+                    ),
+                );
             }
+            let robot_targets = matches!(
+                rel.kind,
+                RelationKind::Around { .. }
+                    | RelationKind::NextTo { .. }
+                    | RelationKind::Near { .. }
+                    | RelationKind::InFrontOf { .. }
+                    | RelationKind::Behind { .. }
+                    | RelationKind::Between { .. }
+            );
             let fields: Vec<(&str, &str)> = match &rel.kind {
                 RelationKind::Between { first, second } => {
                     vec![("first", first), ("second", second)]
@@ -167,7 +210,8 @@ impl ScenePlan {
                 other => other.targets().into_iter().map(|t| ("target", t)).collect(),
             };
             for (field, target) in fields {
-                if !ids.contains(target) {
+                let known = ids.contains(target) || (robot_targets && robot_ids.contains(target));
+                if !known {
                     err(format!("relations[{i}].{field}"), format!("refers to unknown object group '{target}'"));
                 } else if target == rel.subject {
                     err(format!("relations[{i}].{field}"), format!("'{target}' cannot be related to itself"));

@@ -9,7 +9,7 @@ use sw_plan::{
 };
 
 use crate::PlannerError;
-use crate::parse::{Draft, GroupDraft};
+use crate::parse::{CountRule, Draft, GroupDraft};
 use crate::priors::prior_for;
 
 /// Count used for a plural with no number ("boxes on the shelf").
@@ -108,8 +108,37 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         .map(|(s, _)| (s.as_str(), true))
         .collect();
     let mut dropped = Vec::new();
+    // Counts, hosts before the groups whose count follows theirs ("each with").
+    let mut counts: BTreeMap<String, u32> = BTreeMap::new();
+    let mut order: Vec<&GroupDraft> = Vec::new();
+    let mut waiting: Vec<&GroupDraft> = d.groups.iter().collect();
+    while !waiting.is_empty() {
+        let before = waiting.len();
+        waiting.retain(|g| {
+            let host = match &g.count_rule {
+                Some(CountRule::EachOf { host, .. } | CountRule::Fill { host, .. }) => Some(host),
+                None => None,
+            };
+            let ready = host.is_none_or(|h| order.iter().any(|o| &o.id == h) || !d.groups.iter().any(|x| &x.id == h));
+            if ready {
+                order.push(g);
+            }
+            !ready
+        });
+        if waiting.len() == before {
+            order.append(&mut waiting);
+        }
+    }
+    let mut resolved_counts: BTreeMap<String, Option<u32>> = BTreeMap::new();
+    for g in &order {
+        let c = group_count(g, &d, &counts, &mut approximated);
+        if let Some(c) = c {
+            counts.insert(g.id.clone(), c);
+        }
+        resolved_counts.insert(g.id.clone(), c);
+    }
     for g in &d.groups {
-        let Some(count) = resolve_count(g.count, g.plural, &g.phrase, &mut approximated) else {
+        let Some(count) = resolved_counts.get(&g.id).copied().flatten() else {
             dropped.push(g.id.clone());
             continue;
         };
@@ -143,7 +172,7 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         plan.relations.push(Relation { subject: subject.clone(), kind: kind.clone() });
     }
     if d.aisle {
-        // An aisle is storage along both long walls, facing across.
+        // An aisle is storage on both sides of it, facing across.
         let storage: Vec<String> = plan
             .objects
             .iter()
@@ -151,16 +180,24 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
             .map(|o| o.id.clone())
             .collect();
         for id in storage {
-            let placed = plan.relations.iter().any(|r| r.subject == id && !matches!(r.kind, RelationKind::On { .. }));
+            let placed = plan.relations.iter().any(|r| {
+                r.subject == id
+                    && !matches!(
+                        r.kind,
+                        RelationKind::On { .. } | RelationKind::FullOf { .. } | RelationKind::Loaded { .. }
+                    )
+            });
             if !placed {
                 plan.relations.push(Relation { subject: id, kind: RelationKind::FacingEachOther });
             }
         }
     }
+    screens_are_partitions(&mut plan, &mut approximated);
 
     // ---- robots
     let mut robot_ids: BTreeMap<String, u32> = BTreeMap::new();
-    for r in &d.robots {
+    let mut robot_id_of: BTreeMap<usize, String> = BTreeMap::new();
+    for (ri, r) in d.robots.iter().enumerate() {
         let Some(count) = resolve_count(r.count, r.plural, &r.phrase, &mut approximated) else {
             continue;
         };
@@ -208,9 +245,57 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
             });
         }
         let mount = if def.kind == sw_robots::RobotKind::Arm { mount } else { Mount::Floor };
-        let near = r.near.clone().filter(|t| !dropped.contains(t));
+        let near = r.near.clone().filter(|t| !dropped.contains(t) && !t.starts_with('@'));
+        robot_id_of.insert(ri, id.clone());
+        // An arm on or at its work reaches it.
+        if def.kind == sw_robots::RobotKind::Arm {
+            let work = match (&mount, &near) {
+                (Mount::OnSurface { target }, _) => Some(target.clone()),
+                (_, Some(n)) => Some(n.clone()),
+                _ => None,
+            };
+            if let Some(t) = work {
+                plan.relations.push(Relation { subject: id.clone(), kind: RelationKind::Reach { target: t } });
+            }
+        }
         plan.robots.push(RobotPlan { id, model: def.name.into(), phrase: r.phrase.clone(), count, mount, near });
     }
+    // Relations of robots, and relations to robots, by robot id.
+    for (ri, kind) in &d.robot_relations {
+        let Some(id) = robot_id_of.get(ri) else { continue };
+        plan.relations.push(Relation { subject: id.clone(), kind: kind.clone() });
+    }
+    let robot_ref = |t: &str| -> Option<String> {
+        match t.strip_prefix("@robot:") {
+            Some(n) => n.parse::<usize>().ok().and_then(|n| robot_id_of.get(&n).cloned()),
+            None => Some(t.to_string()),
+        }
+    };
+    let mut resolved = Vec::new();
+    for r in std::mem::take(&mut plan.relations) {
+        let kind = match r.kind {
+            RelationKind::Between { first, second } => match (robot_ref(&first), robot_ref(&second)) {
+                (Some(first), Some(second)) => RelationKind::Between { first, second },
+                _ => continue,
+            },
+            k => {
+                let Some(t) = k.targets().first().map(|t| t.to_string()) else {
+                    resolved.push(Relation { subject: r.subject, kind: k });
+                    continue;
+                };
+                let Some(t2) = robot_ref(&t) else { continue };
+                with_target(k, t2)
+            }
+        };
+        if dropped.contains(&r.subject) || kind.targets().contains(&r.subject.as_str()) {
+            continue;
+        }
+        let entry = Relation { subject: r.subject, kind };
+        if !resolved.contains(&entry) {
+            resolved.push(entry);
+        }
+    }
+    plan.relations = resolved;
 
     plan.understanding.approximated = approximated;
     plan.understanding.not_understood = leftovers
@@ -222,6 +307,82 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         .collect();
     plan.validate().map_err(|e| PlannerError::InvalidSize(e.to_string()))?;
     Ok(plan)
+}
+
+/// The same relation pointing at `target`.
+fn with_target(k: RelationKind, target: String) -> RelationKind {
+    match k {
+        RelationKind::On { .. } => RelationKind::On { target },
+        RelationKind::Under { .. } => RelationKind::Under { target },
+        RelationKind::NextTo { .. } => RelationKind::NextTo { target },
+        RelationKind::Near { .. } => RelationKind::Near { target },
+        RelationKind::InFrontOf { .. } => RelationKind::InFrontOf { target },
+        RelationKind::Behind { .. } => RelationKind::Behind { target },
+        RelationKind::Around { .. } => RelationKind::Around { target },
+        RelationKind::AtEndOfRow { .. } => RelationKind::AtEndOfRow { target },
+        RelationKind::Loaded { .. } => RelationKind::Loaded { target },
+        RelationKind::FullOf { .. } => RelationKind::FullOf { target },
+        RelationKind::EachWith { .. } => RelationKind::EachWith { target },
+        RelationKind::Reach { .. } => RelationKind::Reach { target },
+        other => other,
+    }
+}
+
+/// A group's count: its own, or what its count rule makes of its host's.
+fn group_count(
+    g: &GroupDraft,
+    d: &Draft,
+    counts: &BTreeMap<String, u32>,
+    notes: &mut Vec<Approximation>,
+) -> Option<u32> {
+    match &g.count_rule {
+        Some(CountRule::EachOf { host, per }) => {
+            let hosts = counts.get(host).copied()?;
+            let n = (f64::from(hosts) * per).round().clamp(1.0, f64::from(MAX_COUNT)) as u32;
+            Some(n)
+        }
+        Some(CountRule::Fill { host, levels }) if g.count.is_none() => {
+            let hosts = counts.get(host).copied()?;
+            let host_cat = d.groups.iter().find(|x| &x.id == host).and_then(|x| x.category).and_then(sw_catalog::find);
+            // Two on every level of every shelf; three on every pallet.
+            let per =
+                if *levels { 2.0 * host_cat.and_then(|c| c.param("levels")).map_or(3.0, |p| p.default) } else { 3.0 };
+            let n = (f64::from(hosts) * per).clamp(1.0, f64::from(MAX_COUNT)) as u32;
+            notes.push(Approximation {
+                text: g.phrase.clone(),
+                became: format!("{n}"),
+                reason: format!("no count was given; {} on each", if *levels { "two per level" } else { "three" }),
+            });
+            Some(n)
+        }
+        _ => resolve_count(g.count, g.plural, &g.phrase, notes),
+    }
+}
+
+/// "screens" around something, or in a row, or against a wall, are partitions (welding
+/// screens), not computer monitors.
+fn screens_are_partitions(plan: &mut ScenePlan, notes: &mut Vec<Approximation>) {
+    let floor_words = |k: &RelationKind| {
+        !matches!(k, RelationKind::On { .. } | RelationKind::Loaded { .. } | RelationKind::FullOf { .. })
+    };
+    let ids: Vec<String> = plan
+        .objects
+        .iter()
+        .filter(|o| o.category == "monitor" && o.phrase.to_lowercase().contains("screen"))
+        .filter(|o| plan.relations.iter().any(|r| r.subject == o.id && floor_words(&r.kind)))
+        .filter(|o| !plan.relations.iter().any(|r| r.subject == o.id && matches!(r.kind, RelationKind::On { .. })))
+        .map(|o| o.id.clone())
+        .collect();
+    for id in ids {
+        if let Some(o) = plan.objects.iter_mut().find(|o| o.id == id) {
+            o.category = "welding_screen".into();
+            notes.push(Approximation {
+                text: o.phrase.clone(),
+                became: "welding_screen".into(),
+                reason: "screens that stand on the floor are partition screens".into(),
+            });
+        }
+    }
 }
 
 fn resolve_count(count: Option<f64>, plural: bool, phrase: &str, notes: &mut Vec<Approximation>) -> Option<u32> {

@@ -11,23 +11,47 @@ pub(crate) enum Cue {
     On,
     Under,
     NextTo,
+    Near,
     InFront,
+    Behind,
     Between,
     Around,
     Row,
+    /// "in two rows" (`Some(2)`), "in rows" / "in a grid" (`None`: as many as suit).
+    Rows(Option<u32>),
+    Aisles,
     Facing,
     End(Option<Wall>),
+    /// "at the end of": the row (or group) named next.
+    EndOf,
     Corner(Option<Corner>),
     Center,
     Door,
     Wall(Option<Wall>),
+    TwoWalls,
+    Leaning(Option<Wall>),
+    Stacked,
+    /// "picking from", "tending", "working at", "at": an arm works at the target.
+    Tend,
     Floor,
 }
 
 impl Cue {
     /// Cues that need a target object after them.
     pub fn takes_target(&self) -> bool {
-        matches!(self, Cue::On | Cue::Under | Cue::NextTo | Cue::InFront | Cue::Between | Cue::Around)
+        matches!(
+            self,
+            Cue::On
+                | Cue::Under
+                | Cue::NextTo
+                | Cue::Near
+                | Cue::InFront
+                | Cue::Behind
+                | Cue::Between
+                | Cue::Around
+                | Cue::EndOf
+                | Cue::Tend
+        )
     }
 }
 
@@ -109,6 +133,8 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
         i,
         &[
             "facing each other",
+            "face each other",
+            "face one another",
             "face to face",
             "facing one another",
             "opposite each other",
@@ -129,28 +155,152 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
         toks,
         i,
         &[
+            "in aisles",
+            "in parallel aisles",
+            "forming aisles",
+            "forming an aisle",
+            "with aisles between them",
+            "with an aisle between them",
+            "with aisles in between",
+            "with an aisle in between",
+            "in two aisles",
+            "in three aisles",
+            "lined up in aisles",
+        ],
+    ) {
+        return Some((Cue::Aisles, n));
+    }
+    let rows_n: &[(&str, Option<u32>)] = &[
+        ("in rows", None),
+        ("in parallel rows", None),
+        ("in lines", None),
+        ("in columns", None),
+        ("in a grid", None),
+        ("in a grid pattern", None),
+        ("in neat rows", None),
+        ("in two rows", Some(2)),
+        ("in two lines", Some(2)),
+        ("in two parallel rows", Some(2)),
+        ("in three rows", Some(3)),
+        ("in three lines", Some(3)),
+        ("in four rows", Some(4)),
+        ("in five rows", Some(5)),
+        ("in six rows", Some(6)),
+    ];
+    let mut best: Option<(usize, Option<u32>)> = None;
+    for (p, k) in rows_n {
+        if let Some(n) = starts_with(toks, i, p)
+            && best.is_none_or(|(b, _)| n > b)
+        {
+            best = Some((n, *k));
+        }
+    }
+    // "in 3 rows"
+    if t.norm == "in"
+        && let Some(k) = toks.get(i + 1).and_then(|x| x.number())
+        && toks.get(i + 2).is_some_and(|w| matches!(w.norm.as_str(), "rows" | "lines" | "columns"))
+        && k >= 1.0
+        && k <= 50.0
+    {
+        best = Some((3, Some(k.round() as u32)));
+    }
+    if let Some((n, k)) = best {
+        return Some((Cue::Rows(k), n));
+    }
+    if let Some(n) = any_of(
+        toks,
+        i,
+        &[
             "in a row",
-            "in rows",
             "in a line",
-            "in lines",
             "in a straight line",
             "lined up",
             "side by side",
             "in a column",
-            "in columns",
-            "in parallel rows",
-            "in aisles",
             "in a single row",
             "in one row",
-            "in two rows",
-            "in three rows",
-            "in four rows",
-            "in a grid",
+            "in a single line",
+            "in one line",
             "in a neat row",
             "all in a row",
+            "in a long row",
+            "in a straight row",
+            "lined up in a row",
         ],
     ) {
         return Some((Cue::Row, n));
+    }
+    // Stacks: "stacked", "in a stack", "stacked on top of each other", "stacked 5 high".
+    if let Some(n) = any_of(
+        toks,
+        i,
+        &[
+            "stacked on top of each other",
+            "stacked on top of one another",
+            "stacked one on top of another",
+            "stacked one on top of the other",
+            "piled on top of each other",
+            "stacked up",
+            "in a stack",
+            "in a single stack",
+            "in one stack",
+            "in a pile",
+            "piled up",
+        ],
+    ) {
+        return Some((Cue::Stacked, n));
+    }
+    if matches!(t.norm.as_str(), "stacked" | "piled") {
+        // "stacked on the pallet" is a support; "stacked 5 high" a stack.
+        let next = toks.get(i + 1).map(|x| x.norm.as_str()).unwrap_or("");
+        if !matches!(next, "on" | "onto" | "atop" | "upon" | "in" | "against" | "along" | "by" | "next" | "beside") {
+            let mut n = 1;
+            if toks.get(i + 1).is_some_and(|x| x.number().is_some() || crate::text::number_word(&x.norm).is_some())
+                && toks.get(i + 2).is_some_and(|x| matches!(x.norm.as_str(), "high" | "tall" | "deep"))
+            {
+                n = 3;
+            }
+            return Some((Cue::Stacked, n));
+        }
+    }
+    // Leaning: "leaning on the wall", "propped against the north wall".
+    if matches!(t.norm.as_str(), "leaning" | "leaned" | "leant" | "propped" | "leans" | "lean")
+        && toks.get(i + 1).is_some_and(|x| matches!(x.norm.as_str(), "on" | "against" | "up"))
+    {
+        let mut j = i + 1;
+        if toks.get(j).is_some_and(|x| x.norm == "up") {
+            j += 1;
+        }
+        if toks.get(j).is_some_and(|x| matches!(x.norm.as_str(), "on" | "against")) {
+            j = skip_determiners(toks, j + 1);
+            let mut wall = None;
+            while let Some(d) = toks.get(j).and_then(|w| wall_word(&w.norm)) {
+                if d.is_some() {
+                    wall = d;
+                }
+                j += 1;
+            }
+            if toks.get(j).is_some_and(|w| w.norm == "wall" || w.norm == "walls") {
+                return Some((Cue::Leaning(wall), j + 1 - i));
+            }
+        }
+    }
+    if let Some(n) = any_of(
+        toks,
+        i,
+        &[
+            "down the middle",
+            "down the centre",
+            "down the center",
+            "along the middle",
+            "along the centre line",
+            "along the center line",
+            "down the middle of the room",
+            "down the centre of the room",
+            "down the center of the room",
+        ],
+    ) {
+        return Some((Cue::Center, n));
     }
     if let Some(n) = any_of(
         toks,
@@ -203,13 +353,38 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             wall = d;
             j += 1;
         }
-        if toks.get(j).is_some_and(|w| w.norm == "end") {
+        if toks.get(j).is_some_and(|w| w.norm == "end" || w.norm == "ends") {
+            // "at the end of the row": a row's end, not the room's.
+            if toks.get(j + 1).is_some_and(|w| w.norm == "of") {
+                let k = skip_determiners(toks, j + 2);
+                let room_end = toks.get(k).is_some_and(|w| {
+                    matches!(
+                        w.norm.as_str(),
+                        "room" | "hall" | "warehouse" | "space" | "building" | "floor" | "lab" | "shop"
+                    )
+                });
+                if !room_end {
+                    return Some((Cue::EndOf, j + 2 - i));
+                }
+                return Some((Cue::End(wall), k + 1 - i));
+            }
             return Some((Cue::End(wall), j + 1 - i));
         }
-        if let Some(n) = any_of(toks, i, &["at the back", "at the rear"]) {
+        // "at the back" of the room; "at the back of the bench" is behind it.
+        let of_thing = |n: usize| {
+            toks.get(i + n).is_some_and(|w| w.norm == "of")
+                && !toks.get(skip_determiners(toks, i + n + 1)).is_some_and(|w| {
+                    matches!(w.norm.as_str(), "room" | "hall" | "warehouse" | "space" | "building" | "lab" | "shop")
+                })
+        };
+        if let Some(n) = any_of(toks, i, &["at the back", "at the rear"])
+            && !of_thing(n)
+        {
             return Some((Cue::End(Some(Wall::North)), n));
         }
-        if let Some(n) = any_of(toks, i, &["at the front"]) {
+        if let Some(n) = any_of(toks, i, &["at the front"])
+            && !of_thing(n)
+        {
             return Some((Cue::End(Some(Wall::South)), n));
         }
     }
@@ -234,12 +409,29 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
         let mut j = skip_determiners(toks, i + n);
         let mut wall = None;
         let mut any_dir = false;
+        // "two walls", "both long walls", "two of the walls", "opposite walls".
+        let mut two = false;
+        let mut k = i + n;
+        while toks.get(k).is_some_and(|w| matches!(w.norm.as_str(), "the" | "two" | "both" | "of" | "opposite")) {
+            two |= matches!(toks[k].norm.as_str(), "two" | "both" | "opposite");
+            k += 1;
+        }
         while let Some(d) = toks.get(j).and_then(|w| wall_word(&w.norm)) {
             if d.is_some() {
                 wall = d;
             }
+            two |= matches!(toks[j].norm.as_str(), "two" | "both" | "opposite");
             any_dir = true;
             j += 1;
+        }
+        if two && wall.is_none() {
+            let mut e = k;
+            while toks.get(e).is_some_and(|w| matches!(w.norm.as_str(), "long" | "short" | "side" | "outer")) {
+                e += 1;
+            }
+            if toks.get(e).is_some_and(|w| w.norm == "walls") {
+                return Some((Cue::TwoWalls, e + 1 - i));
+            }
         }
         if toks.get(j).is_some_and(|w| w.norm == "wall" || w.norm == "walls" || w.norm == "wall's") {
             return Some((Cue::Wall(wall), j + 1 - i));
@@ -301,31 +493,75 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
     if let Some(n) = any_of(
         toks,
         i,
+        &["behind", "at the back of", "at the rear of", "in back of", "right behind", "directly behind", "just behind"],
+    ) {
+        return Some((Cue::Behind, n));
+    }
+    if let Some(n) =
+        any_of(toks, i, &["near", "nearby", "near to", "close to", "closest to", "close by", "not far from"])
+    {
+        return Some((Cue::Near, n));
+    }
+    if let Some(n) = any_of(
+        toks,
+        i,
         &[
             "next to",
             "beside",
             "besides",
             "by",
-            "near",
-            "nearby",
             "alongside",
-            "close to",
             "adjacent to",
             "to the left of",
             "to the right of",
             "left of",
             "right of",
-            "behind",
-            "near to",
             "right next to",
             "right beside",
-            "closest to",
+            "immediately next to",
+            "directly next to",
         ],
     ) {
         return Some((Cue::NextTo, n));
     }
     if t.norm == "between" {
         return Some((Cue::Between, 1));
+    }
+    if let Some(n) = any_of(
+        toks,
+        i,
+        &[
+            "picking from",
+            "picks from",
+            "picking parts from",
+            "picking up parts from",
+            "picking items from",
+            "placing parts on",
+            "tending",
+            "tends",
+            "feeding",
+            "feeds",
+            "loading",
+            "loads",
+            "unloading",
+            "unloads",
+            "serving",
+            "serves",
+            "working at",
+            "works at",
+            "working on",
+            "operating",
+            "operates",
+            "at",
+            "sorting parts from",
+            "sorting items from",
+        ],
+    ) {
+        // Bare "at" needs an object after it ("at the bench"), not a number ("at 2 m").
+        let j = skip_determiners(toks, i + n);
+        if toks.get(j).is_some_and(|w| w.kind == TokenKind::Word) {
+            return Some((Cue::Tend, n));
+        }
     }
     if matches!(t.norm.as_str(), "around" | "surrounding" | "encircling" | "round") {
         // "around 20 boxes" means about twenty.

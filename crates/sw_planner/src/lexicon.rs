@@ -348,6 +348,19 @@ const QUANTIFIERS: &[(&str, f64)] = &[
 ];
 
 const FILLERS: &[&str] = &[
+    "drives",
+    "drive",
+    "driving",
+    "stands",
+    "sits",
+    "rests",
+    "waits",
+    "waiting",
+    "parked",
+    "runs",
+    "running",
+    "goes",
+    "lies",
     "the",
     "with",
     "and",

@@ -6,9 +6,13 @@ use sw_catalog::PlacementKind;
 use sw_plan::{Approximation, ExplicitSize, Mount, NamedColor, RelationKind, RoomKind, SizeWord};
 
 use crate::PlannerError;
-use crate::cues::{Cue, cue_at, target_start};
+use crate::cues::{Cue, cue_at};
 use crate::lexicon::{Lexicon, Meaning, RobotWord, is_head};
 use crate::text::{Token, TokenKind, edit_distance, number_word, singular};
+
+mod discourse;
+mod relate;
+mod support;
 
 /// What the scan found, before defaults and resolution.
 #[derive(Debug, Default)]
@@ -26,7 +30,20 @@ pub(crate) struct Draft {
     pub groups: Vec<GroupDraft>,
     pub robots: Vec<RobotDraft>,
     pub relations: Vec<(String, RelationKind)>,
+    /// Relations whose subject is a robot (by index into `robots`); targets may be
+    /// `@robot:N`.
+    pub robot_relations: Vec<(usize, RelationKind)>,
     pub approximated: Vec<Approximation>,
+}
+
+/// How a group's count follows from another group's.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum CountRule {
+    /// "stations, each with a stool": `per` for every instance of the host.
+    EachOf { host: String, per: f64 },
+    /// "shelves full of boxes", "pallets of boxes": when no count was given, enough to
+    /// fill every support level of every host (`levels` = true) or a few on each host.
+    Fill { host: String, levels: bool },
 }
 
 #[derive(Debug, Clone)]
@@ -41,6 +58,7 @@ pub(crate) struct GroupDraft {
     pub color: Option<NamedColor>,
     pub sizes: Vec<SizeWord>,
     pub explicit: ExplicitSize,
+    pub count_rule: Option<CountRule>,
 }
 
 #[derive(Debug, Clone)]
@@ -117,6 +135,35 @@ pub(crate) struct Parser<'a> {
     list: Vec<Subject>,
     /// How many groups have been made from each id base (keeps ids unique in O(1)).
     id_counts: std::collections::HashMap<String, u32>,
+    /// "a row of", "two rows of", "a stack of": arranges the group that follows.
+    collective: Option<(Collective, f64)>,
+    /// "each with": the host of the companions that follow.
+    each_host: Option<String>,
+    /// "full of" / "loaded with" / "pallets of": what the items after `with_host` are to it.
+    support: Option<Support>,
+    /// Companions taken since "each with".
+    each_taken: usize,
+    /// The group subject before the last "with" ("stations with a stool each").
+    with_subject: Option<String>,
+    /// Where the phrase being taken starts.
+    phrase_start: usize,
+}
+
+/// A collective noun before a phrase: "a row of", "two rows of", "a stack of", "an aisle of".
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Collective {
+    Row,
+    Stack,
+    Aisle,
+}
+
+/// What items said to be on a carrier are to it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Support {
+    /// "pallets of boxes", "loaded with": every carrier carries some.
+    Loaded,
+    /// "full of", "stocked with": every level holds some.
+    FullOf,
 }
 
 impl<'a> Parser<'a> {
@@ -136,6 +183,12 @@ impl<'a> Parser<'a> {
             mentions: Vec::new(),
             list: Vec::new(),
             id_counts: std::collections::HashMap::new(),
+            collective: None,
+            each_host: None,
+            support: None,
+            each_taken: 0,
+            with_subject: None,
+            phrase_start: 0,
         }
     }
 
@@ -214,11 +267,35 @@ impl<'a> Parser<'a> {
                 i = next;
                 continue;
             }
+            if let Some(next) = self.try_collective(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_each(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_support(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_pronoun_subject(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_trailing_each(i) {
+                i = next;
+                continue;
+            }
             if let Some(next) = self.try_cue(i) {
                 i = next;
                 continue;
             }
             if matches!(self.word(i), "with" | "holding" | "carrying" | "supporting" | "containing") {
+                self.with_subject = match &self.subject {
+                    Some(Subject::Group(g)) => Some(g.clone()),
+                    _ => None,
+                };
                 match &self.subject {
                     Some(Subject::Group(g)) if self.group_has_surface(g) => self.with_host = Some(g.clone()),
                     // "a UR5e on a table with three mugs": the mugs go on the table.
@@ -244,6 +321,25 @@ impl<'a> Parser<'a> {
                 i = end;
                 continue;
             }
+            // "The racks …": a bare definite noun naming a group already introduced.
+            if self.is_definite(i)
+                && let Some(p) = self.phrase_at(i, true, Bare::Target)?
+                && let Some(g) = match &p.head {
+                    Head::Unknown(label) => self.resolve_group(None, label),
+                    Head::Known(Meaning::Category(cat)) => {
+                        let head =
+                            p.text.split_whitespace().last().map(|h| singular(&h.to_lowercase())).unwrap_or_default();
+                        self.resolve_group(Some(cat), &head)
+                    }
+                    _ => None,
+                }
+            {
+                let end = p.end;
+                self.mark(i, end);
+                self.bind(Subject::Group(g));
+                i = end;
+                continue;
+            }
             if self.lookup(i, |m| matches!(m, Meaning::Filler)).is_some() || number_word(self.word(i)).is_some() {
                 self.used[i] = true;
             }
@@ -263,6 +359,10 @@ impl<'a> Parser<'a> {
         self.subject = None;
         self.list.clear();
         self.with_host = None;
+        self.support = None;
+        self.each_host = None;
+        self.collective = None;
+        self.with_subject = None;
         self.pending.clear();
         if let Some((dims, text, _)) = self.pending_dims.take() {
             self.set_room_dims(dims, text);
@@ -636,6 +736,7 @@ impl<'a> Parser<'a> {
 
     /// Records a phrase as a room, an object group or a robot.
     fn take_phrase(&mut self, p: Phrase, start: usize) {
+        self.phrase_start = start;
         let dims_here = self.pending_dims.take();
         if let (Some(typed), Head::Known(Meaning::Category(cat))) = (&p.fuzzy_from, &p.head) {
             self.draft.approximated.push(Approximation {
@@ -673,6 +774,13 @@ impl<'a> Parser<'a> {
                 if let Some((d, t, _)) = dims_here {
                     self.set_room_dims(d, t);
                 }
+                // "the robot", "the arm": the robot already introduced.
+                if self.is_definite(start)
+                    && let Some(idx) = self.resolve_robot(word.wants, word.kind, !word.exact)
+                {
+                    self.bind(Subject::Robot(idx));
+                    return;
+                }
                 let idx = self.draft.robots.len();
                 let mount = if word.on_mobile_base { Mount::MobileBase } else { Mount::Auto };
                 self.draft.robots.push(RobotDraft {
@@ -683,7 +791,12 @@ impl<'a> Parser<'a> {
                     mount,
                     near: None,
                 });
-                if let Some(host) = self.with_host.clone() {
+                // "a table with a UR5e": on it — unless a comma ended the list first.
+                let s = start;
+                let broken = s >= 2 && self.toks.get(s - 2).is_some_and(|t| t.kind == TokenKind::Comma);
+                if let Some(host) = self.with_host.clone()
+                    && !broken
+                {
                     self.draft.robots[idx].mount = Mount::OnSurface { target: host };
                 }
                 self.subject = Some(Subject::Robot(idx));
@@ -692,6 +805,15 @@ impl<'a> Parser<'a> {
                 self.apply_pending();
             }
             Head::Known(Meaning::Category(cat)) => {
+                // "the racks", "the bench": a group already introduced.
+                let raw_head =
+                    p.text.split_whitespace().last().map(|h| singular(&h.to_lowercase())).unwrap_or_default();
+                if self.is_definite(start)
+                    && let Some(g) = self.resolve_group(Some(cat), &raw_head)
+                {
+                    self.bind(Subject::Group(g));
+                    return;
+                }
                 let mut explicit = p.explicit;
                 if let Some((d, t, end)) = dims_here {
                     if end == start || end + 1 == start {
@@ -715,6 +837,12 @@ impl<'a> Parser<'a> {
                 self.after_new_group(&id);
             }
             Head::Unknown(label) => {
+                if self.is_definite(start)
+                    && let Some(g) = self.resolve_group(None, &label)
+                {
+                    self.bind(Subject::Group(g));
+                    return;
+                }
                 let mut explicit = p.explicit;
                 if let Some((d, t, end)) = dims_here {
                     if end == start || end + 1 == start {
@@ -754,18 +882,47 @@ impl<'a> Parser<'a> {
             color: p.color.clone(),
             sizes: p.sizes.clone(),
             explicit,
+            count_rule: None,
         });
         id
     }
 
+    /// Makes an already introduced group or robot the subject again ("The racks …").
+    fn bind(&mut self, s: Subject) {
+        self.subject = Some(s.clone());
+        self.mentions.push(s.clone());
+        self.list.push(s);
+        self.collective = None;
+        self.apply_pending();
+    }
+
     fn after_new_group(&mut self, id: &str) {
+        self.take_collective(id);
+        if let Some(host) = self.each_host.clone() {
+            // "each with a stool and a lamp": the list right after "each with" only.
+            let s = self.phrase_start;
+            let and_only = s >= 2
+                && matches!(self.word(s - 1), "and" | "plus")
+                && self.toks.get(s - 2).is_some_and(|t| t.kind != TokenKind::Comma);
+            let joined =
+                self.each_taken == 0 || (and_only && self.group(id).is_some_and(|g| g.count.is_none_or(|c| c <= 1.0)));
+            if joined {
+                self.each_taken += 1;
+                self.add_companion(&host, id);
+                self.mentions.push(Subject::Group(id.to_string()));
+                return;
+            }
+            self.each_host = None;
+        }
         if let Some(host) = self.with_host.clone()
             && self.group_is_small(id)
         {
             self.relate(id, RelationKind::On { target: host.clone() });
-            self.on_host.push((id.to_string(), host));
+            self.on_host.push((id.to_string(), host.clone()));
+            self.take_support(&host, id);
         } else {
             self.with_host = None;
+            self.support = None;
         }
         self.subject = Some(Subject::Group(id.to_string()));
         self.mentions.push(Subject::Group(id.to_string()));
@@ -799,361 +956,6 @@ impl<'a> Parser<'a> {
         if !self.draft.relations.contains(&entry) {
             self.draft.relations.push(entry);
         }
-    }
-
-    // ---------------------------------------------------------------- relations
-
-    fn try_cue(&mut self, i: usize) -> Option<usize> {
-        let (cue, len) = cue_at(&self.toks, i)?;
-        let mut end = i + len;
-        let mut targets = Vec::new();
-        if cue.takes_target() {
-            let wanted = if cue == Cue::Between { 2 } else { 1 };
-            let mut j = target_start(&self.toks, end);
-            // "between them": the two things mentioned before.
-            if cue == Cue::Between && matches!(self.word(j), "them" | "these" | "those") {
-                let current = self.subject.clone();
-                let before: Vec<String> = self
-                    .mentions
-                    .iter()
-                    .rev()
-                    .filter(|m| Some(*m) != current.as_ref())
-                    .filter_map(|m| match m {
-                        Subject::Group(g) => Some(g.clone()),
-                        Subject::Robot(_) => None,
-                    })
-                    .take(2)
-                    .collect();
-                if let [a, b] = before.as_slice() {
-                    self.mark(i, j + 1);
-                    let targets = vec![b.clone(), a.clone()];
-                    if let Some(s) = self.subject.clone() {
-                        self.apply(&s, cue, targets);
-                    }
-                    return Some(j + 1);
-                }
-            }
-            // "between the two conveyors": one group, both ends.
-            let mut twin = false;
-            if cue == Cue::Between && matches!(self.word(j), "two" | "pair") {
-                twin = true;
-                j += 1;
-            }
-            while targets.len() < wanted {
-                let (target, next) = self.target_at(j, &cue)?;
-                targets.push(target);
-                j = next;
-                if twin {
-                    let t = targets[0].clone();
-                    targets.push(t);
-                    break;
-                }
-                if targets.len() < wanted {
-                    if !matches!(self.word(j), "and" | "&") {
-                        if cue == Cue::Between && targets.len() == 1 {
-                            // "between the shelves": both ends in one plural group.
-                            let t = targets[0].clone();
-                            targets.push(t);
-                            break;
-                        }
-                        return None;
-                    }
-                    j = target_start(&self.toks, j + 1);
-                }
-            }
-            end = j;
-        }
-        self.mark(i, end);
-        match self.subject.clone() {
-            Some(s) => {
-                self.apply(&s, cue.clone(), targets.clone());
-                // "three mugs and a bowl on the table": small things listed together rest
-                // on the same thing.
-                if cue == Cue::On && targets.iter().all(|t| !t.starts_with('@')) {
-                    let others: Vec<String> = self
-                        .list
-                        .iter()
-                        .filter(|m| **m != s)
-                        .filter_map(|m| match m {
-                            Subject::Group(g) => Some(g.clone()),
-                            Subject::Robot(_) => None,
-                        })
-                        .collect();
-                    for g in others {
-                        let has_on =
-                            self.draft.relations.iter().any(|(x, k)| x == &g && matches!(k, RelationKind::On { .. }));
-                        if self.group_is_small(&g) && !has_on && !targets.contains(&g) {
-                            self.apply(&Subject::Group(g), cue.clone(), targets.clone());
-                        }
-                    }
-                }
-                self.list.clear();
-                self.pending.clear();
-            }
-            None => self.pending.push((cue, targets)),
-        }
-        Some(end)
-    }
-
-    /// The object group a relation points at: an earlier group of that kind, a new
-    /// group, or the previous group for "it"/"them".
-    fn target_at(&mut self, j: usize, cue: &Cue) -> Option<(String, usize)> {
-        let w = self.word(j);
-        if matches!(w, "it" | "them" | "this" | "that" | "these" | "those" | "one") {
-            if let Some(host) = &self.with_host
-                && self.subject != Some(Subject::Group(host.clone()))
-            {
-                return Some((host.clone(), j + 1));
-            }
-            let current = self.subject.clone();
-            let previous = self.mentions.iter().rev().find(|m| Some(*m) != current.as_ref())?;
-            return Some((
-                match previous {
-                    Subject::Group(g) => g.clone(),
-                    Subject::Robot(r) => format!("@robot:{r}"),
-                },
-                j + 1,
-            ));
-        }
-        // Robot mounts name things that are not scene objects: pedestals, carts, the floor.
-        if let Some(Subject::Robot(_)) = &self.subject
-            && *cue == Cue::On
-        {
-            let mount_words: &[(&str, &str)] = &[
-                ("pedestal", "pedestal"),
-                ("stand", "pedestal"),
-                ("post", "pedestal"),
-                ("column", "pedestal"),
-                ("base", "pedestal"),
-                ("mobile cart", "mobile"),
-                ("mobile base", "mobile"),
-                ("mobile platform", "mobile"),
-                ("cart", "mobile"),
-                ("agv", "mobile"),
-                ("amr", "mobile"),
-                ("floor", "floor"),
-                ("ground", "floor"),
-            ];
-            let mut k = j;
-            while matches!(
-                self.word(k),
-                "steel"
-                    | "metal"
-                    | "small"
-                    | "large"
-                    | "low"
-                    | "high"
-                    | "tall"
-                    | "short"
-                    | "sturdy"
-                    | "fixed"
-                    | "wheeled"
-            ) {
-                k += 1;
-            }
-            for (phrase, kind) in mount_words {
-                let n = phrase.split(' ').count();
-                let got: Vec<String> = (k..k + n).map(|x| singular(self.word(x))).collect();
-                if got.join(" ") == *phrase {
-                    return Some((format!("@mount:{kind}"), k + n));
-                }
-            }
-        }
-        let p = self.phrase_at(j, true, Bare::Target).ok().flatten()?;
-        let end = p.end;
-        let id = match &p.head {
-            Head::Known(Meaning::Category(cat)) => {
-                match self.draft.groups.iter().rev().find(|g| g.category == Some(*cat)) {
-                    Some(g) => g.id.clone(),
-                    None => {
-                        let mut p2 = p.clone();
-                        if p2.count.is_none() && p2.plural {
-                            p2.count = Some(2.0);
-                        }
-                        self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit)
-                    }
-                }
-            }
-            Head::Unknown(label) if self.group_by_head(label).is_some() => {
-                self.group_by_head(label).unwrap_or_default()
-            }
-            Head::Unknown(label) if self.category_by_head(label).is_some() => {
-                let cat = self.category_by_head(label).unwrap_or("proxy");
-                self.draft.approximated.push(Approximation {
-                    text: label.clone(),
-                    became: cat.to_string(),
-                    reason: format!("read '{label}' as {}", cat.replace('_', " ")),
-                });
-                let mut p2 = p.clone();
-                if p2.count.is_none() && p2.plural {
-                    p2.count = Some(2.0);
-                }
-                self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit)
-            }
-            Head::Unknown(label) => {
-                match self.draft.groups.iter().rev().find(|g| g.category.is_none() && &g.label == label) {
-                    Some(g) => g.id.clone(),
-                    None => {
-                        let mut p2 = p.clone();
-                        if p2.count.is_none() && p2.plural {
-                            p2.count = Some(2.0);
-                        }
-                        self.new_group(None, label.clone(), &p2, p.explicit)
-                    }
-                }
-            }
-            _ => return None,
-        };
-        self.mark(j, end);
-        Some((id, end))
-    }
-
-    /// A catalog category a one-word noun names by the last word of its name: "bench" for
-    /// a workbench. "rack" depends on the room: pallet racks in warehouses, shelves elsewhere.
-    fn category_by_head(&self, label: &str) -> Option<&'static str> {
-        if label.contains(' ') || label.len() < 4 {
-            return None;
-        }
-        if label == "rack" {
-            let industrial = self.draft.room.as_ref().is_some_and(|(k, _)| {
-                matches!(k, RoomKind::Warehouse | RoomKind::LoadingDock | RoomKind::Factory | RoomKind::StorageRoom)
-            });
-            return Some(if industrial { "pallet_rack" } else { "shelf" });
-        }
-        sw_catalog::categories().iter().find_map(|c| {
-            let last = c.display.split_whitespace().last()?;
-            (last != label && last.ends_with(label) && label.len() >= 5).then_some(c.name)
-        })
-    }
-
-    /// An earlier group that a bare head noun refers to: "the racks" for pallet racks,
-    /// "the bench" for a workbench.
-    fn group_by_head(&self, label: &str) -> Option<String> {
-        let head = label.split_whitespace().last()?;
-        if head.len() < 3 {
-            return None;
-        }
-        self.draft.groups.iter().rev().find_map(|g| {
-            let names: Vec<String> = match g.category.and_then(sw_catalog::find) {
-                Some(c) => std::iter::once(c.display).chain(c.synonyms.iter().copied()).map(str::to_string).collect(),
-                None => vec![g.label.clone()],
-            };
-            let hit = names
-                .iter()
-                .any(|n| n.split_whitespace().last().is_some_and(|last| last == head || last.ends_with(head)));
-            hit.then(|| g.id.clone())
-        })
-    }
-
-    fn apply_pending(&mut self) {
-        let Some(s) = self.subject.clone() else {
-            return;
-        };
-        // A leading relation ("On the bench, a UR5e and two bins") covers the whole list.
-        for (cue, targets) in self.pending.clone() {
-            self.apply(&s, cue, targets);
-        }
-    }
-
-    fn apply(&mut self, subject: &Subject, cue: Cue, targets: Vec<String>) {
-        match subject {
-            Subject::Robot(idx) => self.apply_to_robot(*idx, cue, targets),
-            Subject::Group(g) if targets.iter().any(|t| t.starts_with("@robot:")) => {
-                // "a table next to it" where "it" is a robot: the robot works at the table.
-                let Some(r) =
-                    targets.iter().find_map(|t| t.strip_prefix("@robot:")).and_then(|r| r.parse::<usize>().ok())
-                else {
-                    return;
-                };
-                if matches!(cue, Cue::NextTo | Cue::InFront | Cue::Around)
-                    && let Some(robot) = self.draft.robots.get_mut(r)
-                {
-                    robot.near = Some(g.clone());
-                }
-            }
-            Subject::Group(g) => {
-                // "a mug on the table next to the door": placement words after an "on"
-                // describe where the table stands.
-                let floor_level =
-                    matches!(cue, Cue::Wall(_) | Cue::Door | Cue::Corner(_) | Cue::End(_) | Cue::Center | Cue::NextTo);
-                let host = self.on_host.iter().rev().find(|(s, _)| s == g).map(|(_, h)| h.clone());
-                let subject = match host {
-                    Some(h) if floor_level && !targets.contains(&h) => h,
-                    _ => g.clone(),
-                };
-                let kind = match (cue, targets.as_slice()) {
-                    (Cue::On, [t]) => {
-                        self.on_host.push((subject.clone(), t.clone()));
-                        RelationKind::On { target: t.clone() }
-                    }
-                    (Cue::Under, [t]) => RelationKind::Under { target: t.clone() },
-                    (Cue::NextTo, [t]) => RelationKind::NextTo { target: t.clone() },
-                    (Cue::InFront, [t]) => RelationKind::InFrontOf { target: t.clone() },
-                    (Cue::Around, [t]) => RelationKind::Around { target: t.clone() },
-                    (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
-                    (Cue::Row, _) => RelationKind::InRow,
-                    (Cue::Facing, _) => RelationKind::FacingEachOther,
-                    (Cue::End(w), _) => RelationKind::AtEnd { wall: w },
-                    (Cue::Corner(c), _) => RelationKind::InCorner { corner: c },
-                    (Cue::Center, _) => RelationKind::InCenter,
-                    (Cue::Door, _) => RelationKind::NearDoor,
-                    (Cue::Wall(w), _) => RelationKind::AgainstWall { wall: w },
-                    (Cue::Floor, _) => return,
-                    _ => return,
-                };
-                if kind.targets().contains(&subject.as_str()) {
-                    return;
-                }
-                self.relate(&subject, kind);
-            }
-        }
-    }
-
-    fn apply_to_robot(&mut self, idx: usize, cue: Cue, targets: Vec<String>) {
-        let Some(robot) = self.draft.robots.get_mut(idx) else {
-            return;
-        };
-        if targets.iter().any(|t| t.starts_with("@robot:")) {
-            return;
-        }
-        match (cue, targets.as_slice()) {
-            (Cue::On, [t]) if t == "@mount:pedestal" => robot.mount = Mount::Pedestal,
-            (Cue::On, [t]) if t == "@mount:mobile" => robot.mount = Mount::MobileBase,
-            (Cue::On, [t]) if t == "@mount:floor" => robot.mount = Mount::Floor,
-            (Cue::Floor, _) => robot.mount = Mount::Floor,
-            (Cue::On, [t]) => robot.mount = Mount::OnSurface { target: t.clone() },
-            (Cue::NextTo | Cue::InFront | Cue::Around | Cue::Between, [t, ..]) => robot.near = Some(t.clone()),
-            (cue, _) => {
-                let phrase = robot.phrase.clone();
-                self.draft.approximated.push(Approximation {
-                    text: phrase,
-                    became: "placed by the layout".into(),
-                    reason: format!(
-                        "robot placement '{}' is not supported yet; robots are placed near their work",
-                        cue_name(&cue)
-                    ),
-                });
-            }
-        }
-    }
-}
-
-fn cue_name(c: &Cue) -> &'static str {
-    match c {
-        Cue::On => "on",
-        Cue::Under => "under",
-        Cue::NextTo => "next to",
-        Cue::InFront => "in front of",
-        Cue::Between => "between",
-        Cue::Around => "around",
-        Cue::Row => "in a row",
-        Cue::Facing => "facing each other",
-        Cue::End(_) => "at one end",
-        Cue::Corner(_) => "in the corner",
-        Cue::Center => "in the middle",
-        Cue::Door => "near the door",
-        Cue::Wall(_) => "against the wall",
-        Cue::Floor => "on the floor",
     }
 }
 
