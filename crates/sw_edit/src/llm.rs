@@ -14,6 +14,58 @@ pub const EDIT_SCHEMA_NAME: &str = "scene_edit";
 /// The most operations one command may hold.
 pub const MAX_OPS: usize = 20;
 
+/// The edit schema as the model is asked to follow it: [`crate::edit_schema`] with the
+/// reader's limits written in — one to [`MAX_OPS`] operations (an empty list is not an
+/// edit), nouns of 80 characters, colours of 40, descriptions of 200 — and references
+/// nested at most once ("the chair next to the conveyor"): the contract's `Reference`
+/// holds an `Anchor` holding a `Reference`, which a grammar would let a model nest
+/// forever. The client adds what every converter needs (`sw_llm::schema::for_model`).
+pub fn model_schema() -> Value {
+    let mut s = crate::edit_schema();
+    let set = |s: &mut Value, pointer: &str, key: &str, value: Value| {
+        if let Some(Value::Object(o)) = s.pointer_mut(pointer) {
+            o.insert(key.to_string(), value);
+        }
+    };
+    set(&mut s, "/properties/ops", "minItems", json!(1));
+    set(&mut s, "/properties/ops", "maxItems", json!(MAX_OPS));
+    set(&mut s, "/$defs/Reference/properties/noun", "maxLength", json!(80));
+    set(&mut s, "/$defs/Reference/properties/color", "maxLength", json!(40));
+    set(&mut s, "/$defs/Reference/properties/ordinal", "maximum", json!(1000));
+    // Descriptions of what to add or put instead.
+    if let Some(Value::Array(ops)) = s.pointer_mut("/$defs/EditOp/oneOf") {
+        for op in ops.iter_mut() {
+            for field in ["what", "with"] {
+                if let Some(Value::Object(f)) = op.pointer_mut(&format!("/properties/{field}")) {
+                    f.insert("maxLength".into(), json!(200));
+                }
+            }
+        }
+    }
+    // One level of anchors: the anchor's reference is a reference without an anchor.
+    if let Some(defs) = s.get_mut("$defs").and_then(Value::as_object_mut)
+        && let (Some(reference), Some(anchor)) = (defs.get("Reference").cloned(), defs.get("Anchor").cloned())
+    {
+        let mut leaf = reference;
+        if let Some(props) = leaf.get_mut("properties").and_then(Value::as_object_mut) {
+            props.remove("anchor");
+        }
+        let mut leaf_anchor = anchor;
+        if let Some(Value::Object(of)) = leaf_anchor.pointer_mut("/properties/of") {
+            of.insert("$ref".into(), json!("#/$defs/ReferenceWithoutAnchor"));
+        }
+        defs.insert("ReferenceWithoutAnchor".into(), leaf);
+        defs.insert("AnchorOfReference".into(), leaf_anchor);
+        if let Some(Value::Object(a)) = defs.get_mut("Reference").and_then(|r| r.pointer_mut("/properties/anchor")) {
+            let text = Value::Object(a.clone()).to_string().replace("#/$defs/Anchor\"", "#/$defs/AnchorOfReference\"");
+            if let Ok(Value::Object(new)) = serde_json::from_str::<Value>(&text) {
+                *a = new;
+            }
+        }
+    }
+    s
+}
+
 /// System and user messages asking for the command as JSON.
 pub fn edit_messages(command: &str, view: &SceneView<'_>) -> (String, String) {
     let system = "You turn an edit command for a robot workspace scene into JSON operations for a program. \
@@ -127,4 +179,26 @@ fn serde_path_to_error_free(
 ) -> Result<EditCommand, String> {
     use serde::Deserialize;
     EditCommand::deserialize(de).map_err(|e| format!("the answer is not an edit: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_model_schema_asks_for_one_to_twenty_operations_and_one_level_of_anchors() {
+        let s = model_schema();
+        assert_eq!(
+            (s["properties"]["ops"]["minItems"].clone(), s["properties"]["ops"]["maxItems"].clone()),
+            (json!(1), json!(MAX_OPS))
+        );
+        let anchor = s["$defs"]["Reference"]["properties"]["anchor"].to_string();
+        assert!(anchor.contains("AnchorOfReference") && !anchor.contains("#/$defs/Anchor\""), "{anchor}");
+        assert_eq!(s["$defs"]["AnchorOfReference"]["properties"]["of"]["$ref"], "#/$defs/ReferenceWithoutAnchor");
+        assert!(s["$defs"]["ReferenceWithoutAnchor"]["properties"].get("anchor").is_none());
+        // What the model writes under it is still an edit.
+        let answer = json!({"ops": [{"op": "remove", "target": {"noun": "chair", "anchor": {"relation": "next_to", "of": {"noun": "conveyor"}}}}]});
+        assert!(read_edit(&answer).is_ok());
+        assert!(read_edit(&json!({"ops": []})).is_err());
+    }
 }

@@ -267,7 +267,7 @@ impl Client {
                     let (tokens_in, tokens_out, estimated) = match a.usage {
                         Some((i, o)) => (i, o, false),
                         // llama.cpp servers send a token per streamed piece.
-                        None if a.pieces > 0 => (estimate_in, a.pieces, true),
+                        None if a.pieces > 0 => (estimate_in, a.pieces.max(a.content.len().div_ceil(4) as u64), true),
                         None => (estimate_in, a.content.len().div_ceil(4) as u64, true),
                     };
                     if a.finish_reason.as_deref() == Some("length") {

@@ -96,7 +96,7 @@ pub fn default_max_tokens(stage: LlmStage) -> Option<u32> {
         LlmStage::Relations => Some(512),
         LlmStage::Cad => Some(1536),
         LlmStage::Edit => Some(384),
-        LlmStage::Refine => Some(256),
+        LlmStage::Refine => Some(512),
         LlmStage::Embeddings => None,
     }
 }

@@ -16,6 +16,7 @@ use sw_llm::{ChatRequest, Client, LlmStage, Message, extract_json};
 use sw_plan::{EditLog, EditRecord, LaidOutScene, Report, ScenePlan, Stage, Timings, Warning};
 use tracing::info_span;
 
+use crate::edit_pose::StructuredEdit;
 use crate::edit_work::Work;
 use crate::{Event, OutputError, PipelineError, package, report, stage_finished, stage_started};
 
@@ -85,12 +86,13 @@ fn read_with_llm(command: &str, view: &SceneView<'_>, client: &Client) -> Result
     let mut messages = vec![Message::system(system), Message::user(user)];
     let mut problem = String::new();
     for round in 0..2 {
-        let req =
-            ChatRequest::new(messages.clone()).with_schema(sw_edit::llm::EDIT_SCHEMA_NAME, sw_edit::edit_schema());
+        let req = ChatRequest::new(messages.clone())
+            .with_schema(sw_edit::llm::EDIT_SCHEMA_NAME, sw_edit::llm::model_schema());
         let purpose = if round == 0 { "edit" } else { "edit (repair)" };
-        let answer = client
-            .complete(LlmStage::Edit, &req, purpose)
-            .map_err(|e| PipelineError::Internal(format!("the edit LLM could not be reached ({e})")))?;
+        let answer = client.complete(LlmStage::Edit, &req, purpose).map_err(|e| {
+            let how = if e.unreachable() { "could not be reached" } else { "failed" };
+            PipelineError::Internal(format!("the edit LLM {how} ({e})"))
+        })?;
         match extract_json(&answer.content).map_err(|e| e.to_string()).and_then(|v| sw_edit::llm::read_edit(&v)) {
             Ok(c) => return Ok(c),
             Err(p) => problem = p,
@@ -116,7 +118,6 @@ pub fn edit_package(
     let started = Instant::now();
     let _span = info_span!("edit", dir = %dir.display()).entered();
     let pkg = load(dir)?;
-    let seed = pkg.layout.seed;
     let mut timings = Timings::default();
     let client = client.map(Client::fresh);
 
@@ -147,10 +148,68 @@ pub fn edit_package(
         &mut timings,
         on_event,
     );
+    let change = Change { command, understood_by };
+    let calls = || client.as_ref().map(|c| c.telemetry().calls()).unwrap_or_default();
+    let mut apply = |work: &mut Work| -> Result<(), String> {
+        for op in &cmd.ops {
+            work.apply(op)?;
+        }
+        Ok(())
+    };
+    run_edit(dir, pkg, &change, &mut apply, &calls, timings, started, on_event)
+}
 
+/// Applies a structured edit from the viewer (an object put at a pose, a part placed) to
+/// the package in `dir`, as `edit_package` applies a sentence: re-solved around the change,
+/// re-verified in MuJoCo, all or nothing. `command` is how the edit history names it.
+pub fn edit_structured(
+    dir: &Path,
+    edit: &StructuredEdit,
+    command: &str,
+    on_event: &mut dyn FnMut(&Event),
+) -> Result<EditOutcome, PipelineError> {
+    let started = Instant::now();
+    let _span = info_span!("edit", dir = %dir.display()).entered();
+    let pkg = load(dir)?;
+    let mut timings = Timings::default();
+    let t = stage_started(Stage::Plan, on_event);
+    stage_finished(Stage::Plan, t, format!("from the viewer: {command}"), &mut timings, on_event);
+    let change = Change { command, understood_by: "viewer" };
+    let mut apply = |work: &mut Work| work.apply_structured(edit);
+    run_edit(dir, pkg, &change, &mut apply, &Vec::new, timings, started, on_event)
+}
+
+/// What an edit is called and who read it.
+struct Change<'a> {
+    command: &'a str,
+    understood_by: &'static str,
+}
+
+/// The part every edit shares: the package's assets made again, the change applied with
+/// everything else pinned, the layout re-solved around the pins, the package written and
+/// verified beside the old one and swapped in only when it verified.
+#[allow(clippy::too_many_arguments)]
+fn run_edit(
+    dir: &Path,
+    pkg: Package,
+    change: &Change<'_>,
+    apply: &mut dyn FnMut(&mut Work) -> Result<(), String>,
+    calls: &dyn Fn() -> Vec<sw_plan::LlmCall>,
+    mut timings: Timings,
+    started: Instant,
+    on_event: &mut dyn FnMut(&Event),
+) -> Result<EditOutcome, PipelineError> {
+    let seed = pkg.layout.seed;
     // Apply it to the scene in memory.
     let t = stage_started(Stage::Forge, on_event);
-    let forged = crate::rebuild::rebuild(&pkg.plan, &pkg.layout).map_err(PipelineError::Internal)?;
+    let mut forged = crate::rebuild::rebuild(&pkg.plan, &pkg.layout).map_err(PipelineError::Internal)?;
+    // Placed parts come back from their meshes, not as their stand-ins.
+    let parts = crate::parts::load(dir)?;
+    for p in &parts {
+        if let Some(f) = forged.objects.iter_mut().find(|o| o.name == p.entry.object) {
+            f.asset = p.asset();
+        }
+    }
     let mut work = Work {
         plan: pkg.plan.clone(),
         layout: pkg.layout.clone(),
@@ -164,10 +223,9 @@ pub fn edit_package(
         moved: Vec::new(),
         modified: Vec::new(),
         warnings: Vec::new(),
+        parts,
     };
-    for op in &cmd.ops {
-        work.apply(op).map_err(|e| input(format!("{e}; the package is unchanged")))?;
-    }
+    apply(&mut work).map_err(|e| input(format!("{e}; the package is unchanged")))?;
     work.plan.validate().map_err(|e| PipelineError::Internal(format!("the edited plan is invalid: {e}")))?;
     stage_finished(Stage::Forge, t, work.ops.join("; "), &mut timings, on_event);
 
@@ -224,14 +282,15 @@ pub fn edit_package(
         }
     };
     let mut record = record;
-    record.command = command.to_string();
-    record.understood_by = understood_by.to_string();
-    record.llm_calls = client.map(|c| c.telemetry().calls()).unwrap_or_default();
+    record.command = change.command.to_string();
+    record.understood_by = change.understood_by.to_string();
+    record.llm_calls = calls();
     let mut edits = pkg.edits.clone();
     record.number = edits.edits.last().map_or(1, |e| e.number + 1);
     edits.edits.push(record.clone());
     let finish = (|| -> Result<(), PipelineError> {
         write_json(&tmp.join("edits.json"), &edits)?;
+        crate::parts::write(&tmp, &work.parts, |name| layout.object(name).is_some())?;
         copy_extras(dir, &tmp)?;
         swap(dir, &tmp)
     })();
@@ -321,8 +380,16 @@ fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), PipelineError>
 
 /// Files of the package that the pipeline does not write (a user's notes) come along.
 fn copy_extras(from: &Path, to: &Path) -> Result<(), PipelineError> {
-    const OURS: &[&str] =
-        &["scene.xml", "scene_only.xml", "plan.json", "layout.json", "report.json", "timings.json", "edits.json"];
+    const OURS: &[&str] = &[
+        "scene.xml",
+        "scene_only.xml",
+        "plan.json",
+        "layout.json",
+        "report.json",
+        "timings.json",
+        "edits.json",
+        crate::parts::FILE,
+    ];
     let entries = std::fs::read_dir(from).map_err(|e| PipelineError::Internal(format!("{}: {e}", from.display())))?;
     for e in entries.flatten() {
         let name = e.file_name();

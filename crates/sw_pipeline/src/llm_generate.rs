@@ -12,8 +12,15 @@
 //! assets all come from the cache or the catalog costs one LLM round trip; one with
 //! misses costs two in sequence (the plan, then the slowest asset that started during
 //! it). A plan that fails validation is sent back once with the errors (a repair round);
-//! an endpoint that fails, or a second unusable answer, falls back to the offline
-//! planner with a warning in the report (unless fallback is off).
+//! an endpoint that fails, an answer cut off at its token limit (never asked again), or a
+//! second unusable answer, falls back to the offline planner with a warning in the report
+//! (unless fallback is off). A plan the model wrote is grounded in the prompt's own words
+//! (`sw_planner::llm::ground`): where it contradicts what the offline reader read
+//! explicitly, the prompt wins and the report says so.
+//!
+//! Part jobs started from a plan that is then thrown away (a retried stream, a repair
+//! round, the fallback, or groups the final plan no longer has) are cancelled: queued ones
+//! never start, running ones end their model calls at once (`sw_llm::cancel`).
 //!
 //! [`Structure::Sequential`] runs the paper's arrangement instead (L1, then L2 in batches,
 //! then an L3 call), for the latency benchmark.
@@ -26,11 +33,14 @@ use std::thread::JoinHandle;
 use std::time::Instant;
 
 use serde_json::Value;
-use sw_llm::{ArrayScanner, ChatRequest, Client, LlmError, LlmStage, Message, StreamEvent, Telemetry, extract_json};
+use sw_llm::{
+    ArrayScanner, CancelToken, ChatRequest, Client, LlmError, LlmOutcome, LlmStage, Message, StreamEvent, Telemetry,
+    extract_json,
+};
 use sw_plan::{ObjectPlan, ScenePlan, Stage, Timings, Warning};
 use sw_planner::llm::{
-    PLAN_SCHEMA_NAME, RELATIONS_SCHEMA_NAME, plan_messages, plan_schema, read_object, read_plan, read_relations,
-    relations_messages, relations_schema, repair_message,
+    PLAN_SCHEMA_NAME, RELATIONS_SCHEMA_NAME, ground, plan_messages, plan_schema, read_object, read_plan,
+    read_relations, relations_messages, relations_schema, repair_message,
 };
 use tracing::info_span;
 
@@ -84,17 +94,28 @@ enum L1Error {
     Unusable(String),
 }
 
+/// What L1 reports while the plan streams.
+enum PlanEvent {
+    /// An object group the stream completed.
+    Object(ObjectPlan),
+    /// Everything streamed so far is thrown away (a retry, a repair round, the fallback).
+    Discard,
+}
+
 /// The longest part of an unusable answer sent back in the repair round, bytes.
 const MAX_ECHO: usize = 16 * 1024;
 
-/// L1: the streamed plan, with one repair round. `on_object` sees each object group as
-/// soon as the stream completes it.
-fn l1(prompt: &str, client: &Client, on_object: &mut dyn FnMut(ObjectPlan)) -> Result<ScenePlan, L1Error> {
+/// L1: the streamed plan, with one repair round. `on` sees each object group as soon as
+/// the stream completes it, and each time what was streamed is thrown away.
+fn l1(prompt: &str, client: &Client, on: &mut dyn FnMut(PlanEvent)) -> Result<ScenePlan, L1Error> {
     let m = plan_messages(prompt);
     let schema = plan_schema();
     let mut messages = vec![Message::system(m.system), Message::user(m.user)];
     let mut problem = String::new();
     for round in 0..2 {
+        if round > 0 {
+            on(PlanEvent::Discard);
+        }
         let req = ChatRequest::new(messages.clone()).with_schema(PLAN_SCHEMA_NAME, schema.clone());
         let mut scanner = ArrayScanner::new("objects");
         let mut index = 0usize;
@@ -106,7 +127,7 @@ fn l1(prompt: &str, client: &Client, on_object: &mut dyn FnMut(ObjectPlan)) -> R
                         if let Ok(v) = serde_json::from_str::<Value>(&element)
                             && let Some((o, _)) = read_object(&v, index)
                         {
-                            on_object(o);
+                            on(PlanEvent::Object(o));
                         }
                         index += 1;
                     }
@@ -114,6 +135,7 @@ fn l1(prompt: &str, client: &Client, on_object: &mut dyn FnMut(ObjectPlan)) -> R
                 StreamEvent::Restart => {
                     scanner.reset();
                     index = 0;
+                    on(PlanEvent::Discard);
                 }
             })
             .map_err(L1Error::Endpoint)?;
@@ -153,18 +175,55 @@ fn check_prompt(prompt: &str) -> Result<(), PipelineError> {
     Ok(())
 }
 
+/// The model's plan grounded in the offline reader's reading of the prompt, with a
+/// warning when the two disagreed.
+fn grounded(prompt: &str, plan: ScenePlan) -> (ScenePlan, Vec<Warning>) {
+    let Ok(reading) = sw_planner::plan(prompt) else {
+        return (plan, Vec::new());
+    };
+    let (plan, g) = ground(plan, &reading);
+    if g.notes.is_empty() {
+        return (plan, Vec::new());
+    }
+    let what: Vec<String> = g.notes.iter().take(4).map(|n| format!("\"{}\" → {}", n.text, n.became)).collect();
+    let more = if g.notes.len() > 4 { format!(" and {} more", g.notes.len() - 4) } else { String::new() };
+    let w = Warning::new(
+        Stage::Plan,
+        "llm_plan_grounded",
+        format!(
+            "the model's plan contradicted or left out what the prompt says in {} place(s); the prompt's words won \
+             ({}{more}; see understanding.approximated)",
+            g.notes.len(),
+            what.join(", ")
+        ),
+    );
+    (plan, vec![w])
+}
+
+/// Why the model gave no plan, in words that say what happened.
+fn endpoint_failure(e: &LlmError) -> (&'static str, String) {
+    if e.outcome() == LlmOutcome::Length {
+        ("llm_answer_cut_off", format!("wrote past its token limit ({e})"))
+    } else if e.unreachable() {
+        ("llm_unavailable", format!("could not be reached ({e})"))
+    } else {
+        ("llm_unavailable", format!("failed ({e})"))
+    }
+}
+
 fn plan_inner(
     prompt: &str,
     client: &Client,
     fallback: bool,
-    on_object: &mut dyn FnMut(ObjectPlan),
-) -> Result<(ScenePlan, Vec<Warning>), PipelineError> {
+    on: &mut dyn FnMut(PlanEvent),
+) -> Result<(ScenePlan, Vec<Warning>, bool), PipelineError> {
     check_prompt(prompt)?;
-    let (code, why) = match l1(prompt, client, on_object) {
-        Ok(plan) => return Ok((plan, Vec::new())),
-        Err(L1Error::Endpoint(e)) => ("llm_unavailable", format!("could not be reached ({e})")),
+    let (code, why) = match l1(prompt, client, on) {
+        Ok(plan) => return Ok((plan, Vec::new(), true)),
+        Err(L1Error::Endpoint(e)) => endpoint_failure(&e),
         Err(L1Error::Unusable(p)) => ("llm_answer_unusable", format!("answered unusably twice (last: {p})")),
     };
+    on(PlanEvent::Discard);
     if !fallback {
         return Err(PipelineError::Internal(format!("the LLM planner {why}")));
     }
@@ -172,6 +231,7 @@ fn plan_inner(
         Ok(plan) => Ok((
             plan,
             vec![Warning::new(Stage::Plan, code, format!("the LLM planner {why}; the offline planner made this plan"))],
+            false,
         )),
         Err(e) => Err(PipelineError::Input(format!("{e} (and the LLM planner {why})"))),
     }
@@ -184,19 +244,41 @@ pub fn plan_with_llm(
     client: &Client,
     fallback: bool,
 ) -> Result<(ScenePlan, Vec<Warning>), PipelineError> {
-    plan_inner(prompt, client, fallback, &mut |_| {})
+    let (plan, mut warnings, from_model) = plan_inner(prompt, client, fallback, &mut |_| {})?;
+    if !from_model {
+        return Ok((plan, warnings));
+    }
+    let (plan, w) = grounded(prompt, plan);
+    warnings.extend(w);
+    Ok((plan, warnings))
+}
+
+/// One submitted group's job: its cancel token, and whether it was made.
+#[derive(Debug, Clone, Default)]
+struct Job {
+    token: CancelToken,
 }
 
 /// Asset work on worker threads: groups are submitted as they become known; results are
 /// kept by the group's exact content, so a streamed group that the final plan changed is
 /// simply made again.
 struct Workers {
-    tx: Option<Sender<ObjectPlan>>,
-    submitted: BTreeSet<String>,
+    tx: Option<Sender<(ObjectPlan, CancelToken)>>,
+    /// Submitted groups (by content) and their jobs' tokens.
+    submitted: BTreeMap<String, Job>,
     results: Arc<Mutex<BTreeMap<String, GroupAssets>>>,
     pending: Arc<(Mutex<usize>, Condvar)>,
     handles: Vec<JoinHandle<()>>,
     seed: u64,
+}
+
+impl Drop for Workers {
+    /// A run that ends early (an error) cancels what is still being made.
+    fn drop(&mut self) {
+        for job in self.submitted.values() {
+            job.token.cancel();
+        }
+    }
 }
 
 fn key(o: &ObjectPlan) -> String {
@@ -205,8 +287,8 @@ fn key(o: &ObjectPlan) -> String {
 
 impl Workers {
     fn start(source: Arc<dyn AssetSource>, seed: u64, threads: usize, telemetry: Telemetry) -> Self {
-        let (tx, rx) = channel::<ObjectPlan>();
-        let rx: Arc<Mutex<Receiver<ObjectPlan>>> = Arc::new(Mutex::new(rx));
+        let (tx, rx) = channel::<(ObjectPlan, CancelToken)>();
+        let rx: Arc<Mutex<Receiver<(ObjectPlan, CancelToken)>>> = Arc::new(Mutex::new(rx));
         let results: Arc<Mutex<BTreeMap<String, GroupAssets>>> = Arc::new(Mutex::new(BTreeMap::new()));
         let pending = Arc::new((Mutex::new(0usize), Condvar::new()));
         let handles = (0..threads.max(1))
@@ -226,12 +308,17 @@ impl Workers {
                                 Ok(r) => r.recv(),
                                 Err(_) => break,
                             };
-                            let Ok(group) = job else { break };
-                            let _s = info_span!("assets", group = %group.id).entered();
-                            let mut made = source.make(&group, seed);
-                            telemetry.extend(std::mem::take(&mut made.llm_calls));
-                            if let Ok(mut r) = results.lock() {
-                                r.insert(key(&group), made);
+                            let Ok((group, token)) = job else { break };
+                            if !token.is_cancelled() {
+                                let _s = info_span!("assets", group = %group.id).entered();
+                                let mut made = sw_llm::cancel::scope(&token, || source.make(&group, seed));
+                                // The calls happened (cancelled ones too): they are reported.
+                                telemetry.extend(std::mem::take(&mut made.llm_calls));
+                                if !token.is_cancelled()
+                                    && let Ok(mut r) = results.lock()
+                                {
+                                    r.insert(key(&group), made);
+                                }
                             }
                             let (lock, cv) = &*pending;
                             if let Ok(mut n) = lock.lock() {
@@ -243,23 +330,45 @@ impl Workers {
                     .ok()
             })
             .collect();
-        Self { tx: Some(tx), submitted: BTreeSet::new(), results, pending, handles, seed }
+        Self { tx: Some(tx), submitted: BTreeMap::new(), results, pending, handles, seed }
     }
 
     fn submit(&mut self, group: &ObjectPlan) {
-        if !self.submitted.insert(key(group)) {
+        let k = key(group);
+        if self.submitted.contains_key(&k) {
             return;
         }
+        let job = Job::default();
+        let token = job.token.clone();
+        self.submitted.insert(k, job);
         if let Some(tx) = &self.tx {
             if let Ok(mut n) = self.pending.0.lock() {
                 *n += 1;
             }
-            if tx.send(group.clone()).is_err()
+            if tx.send((group.clone(), token)).is_err()
                 && let Ok(mut n) = self.pending.0.lock()
             {
                 *n = n.saturating_sub(1);
             }
         }
+    }
+
+    /// Cancels the jobs of submitted groups that `keep` does not hold (all of them when
+    /// `keep` is `None`); groups already made stay made. A cancelled group submitted again
+    /// is made again.
+    fn discard(&mut self, keep: Option<&ScenePlan>) {
+        let wanted: BTreeSet<String> = keep.map(|p| p.objects.iter().map(key).collect()).unwrap_or_default();
+        let made: BTreeSet<String> = match self.results.lock() {
+            Ok(r) => r.keys().cloned().collect(),
+            Err(p) => p.into_inner().keys().cloned().collect(),
+        };
+        self.submitted.retain(|k, job| {
+            if wanted.contains(k) || made.contains(k) {
+                return true;
+            }
+            job.token.cancel();
+            false
+        });
     }
 
     /// Waits until every submitted group is made.
@@ -358,15 +467,14 @@ pub fn generate_with_llm(
     let mut workers = Workers::start(Arc::clone(&run.assets), opts.seed, threads, client.telemetry().clone());
 
     let t = stage_started(Stage::Plan, on_event);
-    let (mut plan, mut warnings) = {
+    let (mut plan, mut warnings, from_model) = {
         let _s = info_span!("stage", stage = "plan", llm = true).entered();
-        plan_inner(prompt, &client, run.fallback, &mut |o| {
-            if overlapped {
-                workers.submit(&o);
-            }
+        plan_inner(prompt, &client, run.fallback, &mut |ev| match ev {
+            PlanEvent::Object(o) if overlapped => workers.submit(&o),
+            PlanEvent::Object(_) => {}
+            PlanEvent::Discard => workers.discard(None),
         })?
     };
-    apply_options(&mut plan, opts)?;
     if overlapped {
         for g in &plan.objects {
             workers.submit(g);
@@ -385,10 +493,19 @@ pub fn generate_with_llm(
             Stage::Plan,
             "llm_relations_unavailable",
             format!(
-                "the plan came without relations and the relations stage failed ({e}); the solver used its defaults"
+                "the plan came without relations and the relations stage failed ({e}); the relations the prompt \
+                 states were kept"
             ),
         ));
     }
+    if from_model {
+        let (g, w) = grounded(prompt, plan);
+        plan = g;
+        warnings.extend(w);
+    }
+    apply_options(&mut plan, opts)?;
+    // Part jobs of groups the final plan does not hold are cancelled.
+    workers.discard(Some(&plan));
     stage_finished(Stage::Plan, t, report::plan_summary(&plan), &mut timings, on_event);
 
     let structure = run.structure;

@@ -63,8 +63,8 @@ fn refine_schema() -> Value {
         "type": "object",
         "properties": {
             "done": { "type": "boolean" },
-            "question": { "type": "string" },
-            "final_prompt": { "type": "string" }
+            "question": { "type": "string", "maxLength": 300 },
+            "final_prompt": { "type": "string", "maxLength": 4000 }
         },
         "required": ["done"]
     })
@@ -92,6 +92,48 @@ impl Refiner {
             llm_done: None,
             warnings: Vec::new(),
         }
+    }
+
+    /// Resumes a conversation from its turns so far (for a stateless service, which is sent
+    /// the whole transcript on every turn). Offline, the questions are asked again and the
+    /// answers folded in as before (the questions are a function of the prompt so far);
+    /// with the model, its questions are taken as they were asked, so resuming calls it
+    /// only for the next turn.
+    pub fn resume(prompt: &str, turns: &[Turn], client: Option<Client>) -> Self {
+        let mut r = Self::new(prompt, client);
+        for t in turns.iter().take(MAX_TURNS) {
+            if r.llm_done.is_some() {
+                break;
+            }
+            if r.client.is_some() && !r.prompt.is_empty() {
+                let text: String = t.question.chars().filter(|c| !c.is_control()).take(300).collect();
+                r.pending = Some(Question { topic: Topic::Task, text, default: String::new() });
+            } else if r.next_question().is_none() {
+                break;
+            }
+            r.answer(&t.answer);
+        }
+        r
+    }
+
+    /// The prompt as the answers so far have shaped it.
+    pub fn prompt(&self) -> &str {
+        self.llm_done.as_deref().unwrap_or(&self.prompt)
+    }
+
+    /// The exchanges so far.
+    pub fn transcript(&self) -> &[Turn] {
+        &self.transcript
+    }
+
+    /// What went wrong so far (the model failing, and the offline questions taking over).
+    pub fn warnings(&self) -> &[Warning] {
+        &self.warnings
+    }
+
+    /// `llm` when the model asks the questions, else `offline`.
+    pub fn asked_by(&self) -> &'static str {
+        if self.client.is_some() { "llm" } else { "offline" }
     }
 
     /// The next question, or `None` when the prompt is specified enough.
