@@ -42,6 +42,10 @@ pub(crate) struct GenerateArgs {
     /// Write N structurally different layouts of the prompt into DIR/variation_1 … N.
     #[arg(long)]
     variations: Option<u32>,
+    /// The simulator to write for: `native` (MuJoCo, MuJoCo Warp) or `mjx` (MuJoCo XLA's
+    /// collision pairs: no cylinder–box; see ARCHITECTURE.md).
+    #[arg(long, default_value = "native", value_parser = crate::cmd_dataset::parse_physics)]
+    physics: sw_pipeline::PhysicsTarget,
     /// Print one JSON document instead of progress and a summary.
     #[arg(long)]
     json: bool,
@@ -119,6 +123,7 @@ pub(crate) fn run(a: GenerateArgs) -> Result<u8, Failure> {
         rules_profile: a.rules.clone(),
         anomaly,
         cancel: None,
+        physics: a.physics,
     };
     if let Some(n) = a.variations {
         return run_variations(&prompt, &a.out, n, &opts, a.json);
@@ -147,7 +152,7 @@ pub(crate) fn run(a: GenerateArgs) -> Result<u8, Failure> {
     Ok(code)
 }
 
-fn parse_anomalies(words: &[String]) -> Result<Vec<AnomalyKind>, Failure> {
+pub(crate) fn parse_anomalies(words: &[String]) -> Result<Vec<AnomalyKind>, Failure> {
     let mut out = Vec::new();
     for w in words {
         let kinds: &[AnomalyKind] = match w.trim().to_lowercase().replace('_', "-").as_str() {

@@ -9,7 +9,9 @@ mod bench_llm;
 mod bench_server;
 mod cmd_assets;
 mod cmd_bench;
+mod cmd_dataset;
 mod cmd_edit;
+mod cmd_export;
 mod cmd_forge;
 mod cmd_generate;
 mod cmd_llm;
@@ -78,6 +80,11 @@ enum Command {
     Serve(cmd_serve::ServeArgs),
     /// Run job runners only, on the same database and blob store as a `serve`.
     Worker(cmd_serve::WorkerArgs),
+    /// N verified, structurally different scenes per prompt into a directory with
+    /// manifest.jsonl (resumable; every core, or the service's queue with --database).
+    Dataset(cmd_dataset::DatasetArgs),
+    /// Convert a package to another format (`--format usd`: OpenUSD via mujoco-usd-converter).
+    Export(cmd_export::ExportArgs),
     /// Write the JSON Schemas of plan.json, layout.json, report.json and timings.json.
     Schema {
         /// Directory to write into (default: print the plan schema).
@@ -136,6 +143,10 @@ fn main() -> ExitCode {
     let service = matches!(cli.command, Command::Serve(_) | Command::Worker(_));
     let _ = (!service).then(|| {
         ctrlc::set_handler(|| {
+            // A dataset stops by itself at the first Ctrl-C, keeping every finished scene.
+            if cmd_dataset::interrupt() {
+                return;
+            }
             sw_pipeline::discard_staged_packages();
             eprintln!("error: interrupted; no package was written");
             std::process::exit(130);
@@ -159,6 +170,8 @@ fn main() -> ExitCode {
         Command::Llm(c) => cmd_llm::run(c),
         Command::Edit(a) => cmd_edit::edit(a),
         Command::Refine(a) => cmd_edit::refine(a),
+        Command::Dataset(a) => cmd_dataset::run(a),
+        Command::Export(a) => cmd_export::run(a),
     };
     match result {
         Ok(code) => ExitCode::from(code),

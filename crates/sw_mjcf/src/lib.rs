@@ -9,12 +9,14 @@
 mod files;
 mod merge;
 mod normalize;
+pub mod physics;
 mod robot;
 mod scene;
 mod urdf;
 pub mod xml;
 
 pub use merge::prepare_robot;
+pub use physics::PhysicsTarget;
 pub use robot::{MergeError, PartFixes, PreparedRobot, RobotFile, RobotPart, RobotSource, ServoGains};
 pub use scene::{BridgeError, MeshFile, RobotInput, SceneFiles, SceneInput, TIMESTEP, robot_document, write_scene};
 pub use urdf::{UrdfError, UrdfImport, urdf_to_mjcf};

@@ -7,12 +7,14 @@
 //! only when complete, so an interrupted or failed run never leaves half a package.
 
 mod asset_source;
+pub mod dataset;
 mod edit;
 mod edit_ops;
 mod edit_work;
 mod forge;
 mod forge_source;
 mod llm_generate;
+pub mod manifest;
 mod package;
 mod rebuild;
 mod refine;
@@ -40,6 +42,7 @@ pub use llm_generate::{LlmRun, Structure, generate_with_llm, plan_with_llm};
 pub use package::{OutputError, discard_staged_packages, validate_dir};
 pub use refine::{Refined, Refiner, Turn};
 pub use robot_facts::measure as measure_robot;
+pub use sw_mjcf::PhysicsTarget;
 pub use variations::{generate_variations, structural_difference};
 
 /// How to run the pipeline.
@@ -58,11 +61,22 @@ pub struct Options {
     /// Set by another thread to stop the run between stages (a cancelled or timed-out
     /// job): the run ends with [`PipelineError::Cancelled`] and writes nothing.
     pub cancel: Option<Arc<AtomicBool>>,
+    /// The simulator the package is written for (`--physics`): native MuJoCo, or MuJoCo
+    /// XLA's collision pairs (`sw_mjcf::physics`).
+    pub physics: PhysicsTarget,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Self { seed: 0, verify: true, robots: None, rules_profile: None, anomaly: None, cancel: None }
+        Self {
+            seed: 0,
+            verify: true,
+            robots: None,
+            rules_profile: None,
+            anomaly: None,
+            cancel: None,
+            physics: PhysicsTarget::Native,
+        }
     }
 }
 
@@ -345,11 +359,18 @@ pub(crate) fn run_from_plan(
         let t = stage(Stage::Bridge, on_event);
         let files = {
             let _s = info_span!("stage", stage = "bridge").entered();
-            package::bridge(prompt, &layout, &forged)?
+            let mut files = package::bridge(prompt, &layout, &forged)?;
+            let adapted = sw_mjcf::physics::adapt(&mut files, opts.physics)
+                .map_err(|e| PipelineError::Internal(format!("physics target {}: {e}", opts.physics.name())))?;
+            (files, adapted)
         };
+        let (files, adapted) = files;
         if round == 0 {
             for n in &files.notes {
                 warnings.push(Warning::new(Stage::Bridge, "robot_model_adjusted", n.clone()));
+            }
+            for n in adapted {
+                warnings.push(Warning::new(Stage::Bridge, "physics_target", n));
             }
         }
         staging.write_scene(&files, &plan, &layout)?;

@@ -380,6 +380,7 @@ fn options(o: &Value, seed: u64) -> Options {
         rules_profile: o["rules"].as_str().map(str::to_string),
         anomaly: None,
         cancel: None,
+        physics: o["physics"].as_str().and_then(sw_pipeline::PhysicsTarget::parse).unwrap_or_default(),
     }
 }
 
