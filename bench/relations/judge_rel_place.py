@@ -55,13 +55,15 @@ def wall_contact(room: Room, t: Thing, side: str | None = None) -> tuple[str, fl
     and, for an oriented fixture, its front points into the room within 30 degrees (its back
     is to the wall).
     """
-    sides = [side] if side else list(SIDES)
-    best = min(sides, key=lambda s: room.wall_gap(t.footprint, s))
-    gap = room.wall_gap(t.footprint, best)
-    front = t.front
-    ang = angle_deg(front, Room.inward(best)) if front is not None and t.oriented else None
-    ok = gap <= WALL_GAP_M and (ang is None or ang <= FRONT_TOL_DEG)
-    return best, gap, ang, ok
+    rows = []
+    for s in [side] if side else list(SIDES):
+        gap = room.wall_gap(t.footprint, s)
+        front = t.front
+        ang = angle_deg(front, Room.inward(s)) if front is not None and t.oriented else None
+        ok = gap <= WALL_GAP_M and (ang is None or ang <= FRONT_TOL_DEG)
+        rows.append((s, gap, ang, ok))
+    # In a corner two walls are near: the one its back is to.
+    return min(rows, key=lambda r: (not r[3], r[1]))
 
 
 def against_wall(rel: Relation, scene: Scene) -> Verdict:
