@@ -58,6 +58,7 @@ fn judge(cases: &[(PathBuf, Value)]) -> Vec<Value> {
         cases.iter().map(|(p, l)| json!({"package": p.to_string_lossy(), "line": l}).to_string()).collect();
     std::fs::write(&batch, text.join("\n")).unwrap();
     let out = Command::new(python())
+        .arg("-B") // no __pycache__ in the checkout
         .arg(bench().join("judge.py"))
         .arg("--batch")
         .arg(&batch)
@@ -128,8 +129,13 @@ fn the_judge_tells_holding_from_failing_fixtures() {
 fn the_judge_refuses_bad_input_with_one_line() {
     let dir = tempfile::tempdir().unwrap();
     let run = |args: &[&str]| {
-        let out =
-            Command::new(python()).arg(bench().join("judge.py")).args(args).stdin(Stdio::null()).output().unwrap();
+        let out = Command::new(python())
+            .arg("-B")
+            .arg(bench().join("judge.py"))
+            .args(args)
+            .stdin(Stdio::null())
+            .output()
+            .unwrap();
         (out.status.code(), String::from_utf8_lossy(&out.stderr).to_string())
     };
     let missing = dir.path().join("nothing");
