@@ -8,6 +8,8 @@ fn main() {
         std::process::exit(2);
     };
     let code = args.iter().any(|a| a == "--code");
+    // Write each part's code to DIR/ID.py.
+    let emit = args.iter().position(|a| a == "--emit").and_then(|i| args.get(i + 1)).cloned();
     // Reference extents and volumes, to compare with (a development aid: `bench cad` runs the code).
     let refs: std::collections::BTreeMap<String, ([f64; 3], Option<f64>)> = args
         .iter()
@@ -96,6 +98,10 @@ fn main() {
                 );
                 if code {
                     println!("{}", s.code);
+                }
+                if let Some(dir) = &emit {
+                    let _ = std::fs::create_dir_all(dir);
+                    let _ = std::fs::write(format!("{dir}/{id}.py"), &s.code);
                 }
             }
             Err(e) => println!("{id}\tERROR {e}"),

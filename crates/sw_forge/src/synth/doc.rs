@@ -83,6 +83,9 @@ pub struct Dim {
     pub list: Option<(usize, usize)>,
     /// The tokens of its phrase (for marking them read).
     pub phrase: (usize, usize),
+    /// In parentheses right after another length, restating it ("40mm tip diameter
+    /// (20mm radius)"): never used to build, only checked.
+    pub restates: Option<usize>,
 }
 
 impl Dim {
@@ -261,8 +264,26 @@ impl Doc {
         let n = self.toks.len();
         let mut coords = Vec::new();
         for i in 0..n.saturating_sub(2) {
-            if let (Some(a), true, Some((v, Some(f), _))) = (self.word(i).and_then(axis_word), self.sym(i + 1, '='), self.num(i + 2)) {
+            if let (Some(a), true, Some((v, Some(f), _))) = (self.axis_at(i), self.sym(i + 1, '='), self.num(i + 2)) {
                 coords.push(Coord { axis: a, v: v * f, tok: i });
+                // "X = -24, -12, 0, 12, 24mm": more of the same axis. Each is read as if
+                // written "X=v" (its token is the number's, minus two).
+                let mut j = i + 3;
+                while self.sym(j, ',') || self.is(j, "and") {
+                    let mut k = j + 1;
+                    if self.is(k, "and") {
+                        k += 1;
+                    }
+                    // Items without a unit, or a last one with it ("24mm)").
+                    let last_ok = |k: usize| self.sym(k + 1, ')') || self.sym(k + 1, '.') || k + 1 >= n;
+                    match self.num(k) {
+                        Some((w, u, _)) if !self.sym(k + 1, '=') && (u.is_none() || last_ok(k)) => {
+                            coords.push(Coord { axis: a, v: w * u.unwrap_or(f), tok: k - 2 });
+                            j = k + 1;
+                        }
+                        _ => break,
+                    }
+                }
             }
         }
         // Ranges: two coordinates of one axis joined by "to" (or "-"), optionally "up".
@@ -272,10 +293,17 @@ impl Doc {
                 continue;
             }
             if let Some(l) = (k + 1..coords.len()).find(|l| coords[*l].axis == coords[k].axis && !used[*l]) {
+                if coords[k].tok + 3 > coords[l].tok {
+                    continue;
+                }
                 let between = &self.toks[coords[k].tok + 3..coords[l].tok];
+                // "Z=0 to Z=10", "from the inner floor (Z=2) to the rim height (Z=30)".
                 let joined = !between.is_empty()
-                    && between.len() <= 3
-                    && between.iter().all(|t| matches!(t.word(), Some("to" | "up" | "down" | "through")) || t.is_sym('-'));
+                    && (between.len() <= 3
+                        && between.iter().all(|t| matches!(t.word(), Some("to" | "up" | "down" | "through")) || t.is_sym('-'))
+                        || between.len() <= 9
+                            && between.iter().any(|t| t.is_word("to"))
+                            && between.iter().all(|t| t.word().is_some() || t.is_sym('(') || t.is_sym(')')));
                 if joined {
                     used[k] = true;
                     used[l] = true;
@@ -305,7 +333,7 @@ impl Doc {
             let mut ok = true;
             while j < close {
                 let mut axis = None;
-                if let (Some(a), true) = (self.word(j).and_then(axis_word), self.sym(j + 1, '=')) {
+                if let (Some(a), true) = (self.axis_at(j), self.sym(j + 1, '=')) {
                     axis = Some(a);
                     j += 2;
                 }
@@ -399,7 +427,7 @@ impl Doc {
             while j > floor {
                 j -= 1;
                 match &self.toks[j].kind {
-                    Tk::Word(w) if w == "and" || w == "with" || w == "is" || w == "are" || w == "has" => break,
+                    Tk::Word(w) if w == "and" || w == "with" || w == "has" || w == "have" => break,
                     Tk::Word(w) => before.push((j, w.clone())),
                     Tk::Sym('x') => {}
                     _ => break,
@@ -429,12 +457,25 @@ impl Doc {
                     }
                 }
             }
-            let quals: Vec<String> = before
+            let mut quals: Vec<String> = before
                 .iter()
                 .chain(after.iter())
                 .map(|(_, w)| w.clone())
                 .filter(|w| QUALS.contains(&w.as_str()))
                 .collect();
+            // "(22.5mm radius from center)": a distance from the centre, not a size.
+            let mut q = after_end;
+            if after.len() <= 1 && self.is(q, "from") {
+                q += 1;
+                if self.is(q, "the") {
+                    q += 1;
+                }
+                if self.is(q, "center") || self.is(q, "origin") || self.is(q, "axis") {
+                    quals.push("from-center".into());
+                }
+            }
+            // "M4 clearance holes": the screw's clearance diameter.
+            let role = if quals.iter().any(|w| w == "metric") { Role::Diameter } else { role };
             dims.push(Dim {
                 tok: i,
                 mm: v * f,
@@ -445,7 +486,32 @@ impl Doc {
                 pm,
                 list: None,
                 phrase: (before_start, after_end),
+                restates: None,
             });
+        }
+        // A length in parentheses just after another restates it.
+        for k in 1..dims.len() {
+            let (p, d) = (&dims[k - 1], &dims[k]);
+            let opens = (p.tok + 1..d.tok).any(|i| self.sym(i, '('));
+            if d.paren && opens && d.tok <= p.tok + 6 && !p.has("metric") && !d.has("metric") {
+                dims[k].restates = Some(k - 1);
+            }
+        }
+        // "Four M4 clearance holes (4.2mm diameter)": the stated diameter wins over the table's.
+        let mut k = 0;
+        while k < dims.len() {
+            let stated = dims[k].has("metric")
+                && dims.iter().any(|d| !d.has("metric") && d.role == Role::Diameter && d.tok + 10 >= dims[k].tok && d.tok <= dims[k].tok + 10);
+            if stated {
+                let t = dims[k].tok;
+                self.used.borrow_mut()[t] = true;
+                if t > 0 {
+                    self.used.borrow_mut()[t - 1] = true;
+                }
+                dims.remove(k);
+            } else {
+                k += 1;
+            }
         }
         // "A x B (x C)" lists: lengths joined by x / by, with at most an "(X)"-style tag between.
         let mut list_id = 0;

@@ -68,14 +68,14 @@ pub fn noun(w: &str) -> Option<Noun> {
     Some(match w {
         "block" | "box" | "cuboid" | "brick" | "slab" | "bar" | "plate" | "panel" | "board" | "sheet" | "tile" | "base"
         | "wall" | "web" | "rail" | "arm" | "fin" | "rib" | "strip" | "tab" | "ear" | "leg" | "platform" | "pad"
-        | "foot" | "spoke" | "floor" | "cube" | "prism" | "beam" | "bracket" | "lug" | "blank" | "step" | "riser" => {
+        | "foot" | "spoke" | "floor" | "prong" | "cube" | "prism" | "beam" | "bracket" | "lug" | "blank" | "step" | "riser" => {
             Noun::Body(Rect)
         }
         "cylinder" | "rod" | "shaft" | "pin" | "dowel" | "axle" | "journal" | "shank" | "stem" | "disc" | "puck"
         | "coin" | "hub" | "boss" | "flange" | "neck" | "head" | "cap" | "knob" | "post" | "pillar" | "column"
         | "standoff" | "seat" | "shoulder" | "mount" | "section" | "body" | "wheel" | "roller" | "plug" | "spindle"
         | "stud" | "button" | "trunnion" | "spigot" => Noun::Body(Round),
-        "ring" | "washer" | "tube" | "pipe" | "sleeve" | "collar" | "bushing" | "spacer" | "rim" | "grommet"
+        "ring" | "washer" | "tube" | "pipe" | "branch" | "sleeve" | "collar" | "bushing" | "spacer" | "rim" | "grommet"
         | "ferrule" | "bush" => Noun::Body(Ring),
         "cone" | "frustum" => Noun::Body(Cone),
         "sphere" | "ball" | "globe" | "orb" => Noun::Body(Sphere),
@@ -84,7 +84,7 @@ pub fn noun(w: &str) -> Option<Noun> {
         "capsule" | "pill" => Noun::Body(Capsule),
         "pyramid" => Noun::Body(Pyramid),
         "wedge" | "ramp" => Noun::Body(Wedge),
-        "gear" | "cog" | "sprocket" | "star" => Noun::Body(Star),
+        "gear" | "cog" | "sprocket" => Noun::Body(Star),
         "stadium" | "oblong" | "obround" => Noun::Body(Stadium),
         "ellipse" => Noun::Body(Ellipse),
         "i-beam" | "h-beam" => Noun::Body(Section(self::Section::I)),
@@ -109,7 +109,7 @@ pub fn noun(w: &str) -> Option<Noun> {
         "part" | "assembly" | "piece" | "object" | "component" | "chassis" | "frame" | "fitting"
         | "adapter" | "bolt" | "screw" | "clevis" | "elbow" | "bend" | "tee" | "cross" | "coupling" | "flywheel"
         | "handwheel" | "pulley" | "vase" | "duct" | "transition" | "heatsink" | "drone" | "quadcopter" | "fork"
-        | "idler" => Noun::Whole,
+        | "idler" | "bottle" | "sink" => Noun::Whole,
         _ => return None,
     })
 }
@@ -148,7 +148,7 @@ pub fn is_filler(w: &str) -> bool {
         "who", "is", "are", "be", "being", "been", "was", "were", "has", "have", "having", "with", "and", "or", "of",
         "to", "in", "on", "at", "by", "for", "from", "as", "so", "such", "also", "then", "finally", "first", "next",
         "all", "each", "every", "both", "one", "solid", "simple", "simplified", "plain", "basic", "standard", "small",
-        "large", "big", "little", "tiny", "huge", "regular", "straight", "smooth", "shape", "shaped", "centroid", "vertex", "i.e", "mm", "millimeter", "make", "made", "create",
+        "large", "big", "little", "tiny", "huge", "regular", "straight", "smooth", "interior", "bridging", "bridge", "bridges", "joining", "straight-line", "segment", "spoked", "edge", "four-way", "three-way", "two-way", "rotated", "workplane", "nearest", "diagonally", "diagonal", "pushpoint", "distance", "rectangular-to-round", "exits", "exit", "perpendicular", "perpendicularly", "endpoint", "configuration", "layout", "arrangement", "intersection", "intersects", "intersect", "shared", "common", "circumference", "line", "different", "decreasing", "increasing", "centerline", "quadrant", "curving", "curve", "curves", "heading", "path", "arcing", "returning", "return", "apex", "face", "surface", "part", "alternating", "alternate", "shape", "shaped", "centroid", "vertex", "i.e", "mm", "millimeter", "make", "made", "create",
         "created", "creating", "build", "built", "model", "modelled", "modeled", "design", "designed", "form",
         "formed", "forming", "forms", "give", "giving", "gives", "resembling", "similar",
         "sort", "kind", "type", "use", "uses", "using", "used", "via", "into", "onto", "upon", "it's", "i.e",

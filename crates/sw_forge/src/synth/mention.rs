@@ -13,7 +13,7 @@ use super::text::Tk;
 const LABELS: &[&str] = &[
     "motor", "mounting", "flight-controller", "controller", "gasket", "lightening", "cooling", "set", "screw", "pilot",
     "clearance", "retaining", "bearing", "cable", "wire", "drain", "vent", "access", "locating", "alignment", "fixing",
-    "tool", "spring", "lock", "electronics", "heat", "sink", "spur", "idler", "drive", "driven", "pinion", "support",
+    "tool", "spring", "lock", "electronics", "electronic", "internal", "external", "heat", "sink", "spur", "idler", "drive", "driven", "pinion", "support",
     "guide", "center", "central", "main", "run", "branch", "outer", "inner", "upper", "lower", "top", "bottom",
     "front", "back", "rear", "left", "right", "side", "end", "first", "second", "third", "large", "small", "big",
     "larger", "smaller", "narrower", "wider", "thinner", "thicker", "shorter", "longer", "taller", "raised",
@@ -23,7 +23,7 @@ const LABELS: &[&str] = &[
     "allen", "cap", "socket", "hex", "machine", "wood", "metal", "steel", "aluminium", "aluminum", "brass",
     "plastic", "nylon", "rubber", "tooth", "belt", "v-belt", "timing", "pitch", "bolt", "stepped", "flanged",
     "threaded", "smooth", "full", "half", "quarter", "semicircular", "continuous", "through", "blind",
-    "counterbored", "countersunk", "rounded", "filleted", "chamfered", "equal", "identical", "matching",
+    "counterbored", "countersunk", "rounded", "filleted", "chamfered", "drilled", "machined", "bored", "cut", "equal", "identical", "matching",
     "protruding", "extended", "integral", "single", "double", "twin", "triple", "compound", "coaxial",
     "concentric", "base", "mount", "shaft", "gear", "hub", "journal", "neck", "shoulder", "head", "body",
     "wall", "floor", "rim", "platform", "post", "plate", "standoff", "arm", "fin", "rib", "rail", "seat",
@@ -52,6 +52,8 @@ pub struct Mention {
     pub prep: Option<String>,
     /// It has a determiner ("a", "the", "each" …).
     pub det: bool,
+    /// Written in the plural ("rails").
+    pub plural: bool,
     pub sent: usize,
     pub elem: usize,
 }
@@ -75,6 +77,8 @@ pub struct Element {
     pub teeth: Option<u32>,
     /// The first element of the prompt: the part itself.
     pub title: bool,
+    /// Named in the plural, or counted more than one.
+    pub plural: bool,
 }
 
 impl Element {
@@ -92,7 +96,7 @@ fn is_prep(w: &str) -> bool {
         w,
         "through" | "on" | "onto" | "from" | "of" | "to" | "at" | "in" | "into" | "above" | "below" | "inside" | "around"
             | "past" | "between" | "along" | "over" | "under" | "beneath" | "across" | "within" | "toward" | "towards"
-            | "bridging" | "connecting" | "via" | "by" | "per"
+            | "bridging" | "connecting" | "via" | "per" | "matching" | "like" | "as"
     )
 }
 
@@ -106,12 +110,16 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
         // A noun directly followed by another noun of the phrase is a modifier ("bolt
         // holes", "base plate", "motor mount platform").
         if let Some(next) = doc.word(i + 1)
-            && (noun(next).is_some_and(|k| !matches!(k, Noun::Pattern | Noun::Whole)) || next == "through-hole")
+            && (noun(next).is_some_and(|k| !matches!(k, Noun::Pattern)) || next == "through-hole")
             && !matches!(kind, Noun::Pattern)
         {
             continue;
         }
         if matches!(kind, Noun::Pattern) {
+            continue;
+        }
+        // "base at Z=0": a place on the part, not a body.
+        if matches!(w, "base" | "top" | "bottom") && doc.is(i + 1, "at") && doc.axis_at(i + 2).is_some() && doc.sym(i + 3, '=') {
             continue;
         }
         // A noun qualifying a length ("base diameter", "wall thickness", "flange width",
@@ -209,6 +217,11 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
         let first = det_at.map_or(start, |d| d + 1).min(i);
         let before = det_at.unwrap_or(start);
         let prep = if before > 0 { doc.word(before - 1).filter(|p| is_prep(p)).map(str::to_string) } else { None };
+        // "a 3x2 array of posts", "a row of fins": the thing, not a reference.
+        let prep = match prep.as_deref() {
+            Some("of") if before >= 2 && doc.word(before - 2).is_some_and(|w| matches!(w, "array" | "row" | "grid" | "pattern" | "set" | "pair" | "series" | "ring" | "circle")) => None,
+            _ => prep,
+        };
         let prep = prep.or_else(|| {
             // "one in each flange ear": the preposition before the determiner's phrase.
             if before >= 2 && doc.word(before - 1).is_some_and(|w| w == "one") { doc.word(before - 2).filter(|p| is_prep(p)).map(str::to_string) } else { None }
@@ -225,6 +238,11 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
             definite,
             prep,
             det: det_at.is_some(),
+            plural: {
+                let t = &doc.toks[i];
+                let raw = doc.text.get(t.start..t.end).unwrap_or("").to_lowercase();
+                raw != w && raw.ends_with('s')
+            },
             sent: doc.sent[i],
             elem: usize::MAX,
         });
@@ -234,10 +252,26 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
 }
 
 /// Whether a later mention refers to an element already met.
+/// Words that tell two things of one noun apart ("the bottom plate", "the top plate").
+const DISTINCT: &[&str] = &["top", "bottom", "upper", "lower", "left", "right", "front", "back", "rear", "first", "second", "third", "inner", "outer", "large", "small", "larger", "smaller", "center", "central"];
+
 fn same_thing(m: &Mention, e: &Element) -> bool {
+    let pos = |mods: &[String]| mods.iter().filter(|x| DISTINCT.contains(&x.as_str())).cloned().collect::<Vec<_>>();
+    let (pm, pe) = (pos(&m.mods), pos(&e.mods));
+    if !pm.is_empty() && !pe.is_empty() && pm.iter().all(|x| !pe.contains(x)) {
+        return false;
+    }
+    // "The first pipe" of "two pipes" is a thing of its own (it may differ from the second).
+    if e.plural && m.mods.iter().any(|x| matches!(x.as_str(), "first" | "second" | "third")) {
+        return false;
+    }
     // A bare plural or heading ("Side rails: each rail is …") also refers back.
     let bare = m.count.is_none() && !m.det;
     if !(m.definite || m.each || m.prep.is_some() || (bare && m.noun == e.noun)) {
+        return false;
+    }
+    // A piece is not the whole it is a piece of ("the main pipe" of a "pipe tee fitting").
+    if e.kind == Noun::Whole && m.kind != Noun::Whole && m.noun != e.noun {
         return false;
     }
     if m.noun == e.noun || e.noun.ends_with(&format!("-{}", m.noun)) {
@@ -252,7 +286,46 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
     let mut elements: Vec<Element> = Vec::new();
     for mi in 0..mentions.len() {
         let m = mentions[mi].clone();
-        let target = elements.iter().rposition(|e| same_thing(&m, e));
+        // "Motor mounts: four circular platforms …": a heading names what follows it.
+        let heading = mi > 0 && {
+            let h = &mentions[mi - 1];
+            h.sent == m.sent && h.sent > 0 && doc.sym(h.head + 1, ':') && m.start <= h.head + 4 && doc.sentence(h.sent).0 + 3 > h.start
+        };
+        // "The groove is a ring between …", "The central hub is a … square plate": the
+        // predicate is the subject.
+        let predicate = m.start >= 2
+            && matches!(doc.word(m.start - 1), Some("a" | "an"))
+            && matches!(doc.word(m.start - 2), Some("is" | "are"))
+            && mentions[..mi].iter().rev().find(|p| p.sent == m.sent && p.prep.is_none() && p.head < m.start).is_some();
+        let subject = if predicate { mentions[..mi].iter().rposition(|p| p.sent == m.sent && p.prep.is_none() && p.head < m.start) } else { None };
+        if heading || subject.is_some() {
+            let id = mentions[subject.unwrap_or(mi - 1)].elem;
+            mentions[mi].elem = id;
+            let e = &mut elements[id];
+            e.mentions.push(mi);
+            e.shape = e.shape.or(m.shape);
+            e.count = e.count.or(m.count);
+            e.plural |= m.plural || m.count.is_some_and(|c| c > 1);
+            for x in &m.mods {
+                if !e.mods.contains(x) {
+                    e.mods.push(x.clone());
+                }
+            }
+            continue;
+        }
+        // A heading ("Holes: one 5mm …") starts its own thing.
+        let is_heading = doc.sym(m.head + 1, ':') && m.sent > 0 && doc.sentence(m.sent).0 + 3 > m.start;
+        let mut target = if is_heading { None } else { elements.iter().rposition(|e| same_thing(&m, e)) };
+        // "The outer box is 70mm (X) by …": a definite general name with nothing before it
+        // is the part itself.
+        if target.is_none()
+            && m.definite
+            && !m.each
+            && matches!(m.noun.as_str(), "box" | "body" | "block" | "container" | "enclosure" | "outline")
+            && elements.first().is_some_and(|t| matches!(t.kind, Noun::Body(_) | Noun::Whole))
+        {
+            target = Some(0);
+        }
         let id = match target {
             Some(id) => {
                 let e = &mut elements[id];
@@ -260,8 +333,11 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
                 if e.shape.is_none() {
                     e.shape = m.shape;
                 }
+                // "The left rail" of two rails names one of them, not a kind of them.
+                e.plural |= m.plural || m.each || m.count.is_some_and(|c| c > 1);
+                let plural = e.plural;
                 for x in &m.mods {
-                    if !e.mods.contains(x) {
+                    if !e.mods.contains(x) && !(plural && DISTINCT.contains(&x.as_str())) {
                         e.mods.push(x.clone());
                     }
                 }
@@ -285,6 +361,7 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
                     angles: Vec::new(),
                     teeth: None,
                     title: elements.is_empty(),
+                    plural: m.plural || m.count.is_some_and(|c| c > 1) || m.each,
                 });
                 elements.len() - 1
             }
@@ -295,15 +372,22 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
     elements
 }
 
+/// "lying flat on the XY plane (Z=0 to Z=3)": the whole part's span, nobody's own.
+pub fn is_part_range(doc: &Doc, k: usize) -> bool {
+    let r = &doc.ranges[k];
+    (r.toks.0.saturating_sub(8)..r.toks.0).any(|i| matches!(doc.word(i), Some("lying" | "lies" | "lie")))
+}
+
 /// Whether a length of this role can belong to an element of this kind (a bore has no
 /// height: "15mm bore (inner diameter), and 12mm height" — the height is the ring's).
-fn fits(kind: Noun, role: Option<super::doc::Role>) -> bool {
+fn fits(kind: Noun, dim: Option<&super::doc::Dim>) -> bool {
     use super::doc::Role::*;
     use super::lexicon::CutKind;
-    let Some(role) = role else { return true };
+    let Some(dim) = dim else { return true };
+    let role = dim.role;
     match kind {
         Noun::Cut(CutKind::Hole | CutKind::Bore | CutKind::Counterbore | CutKind::Countersink) => {
-            matches!(role, Diameter | Radius | Depth | Bare | Inset | Spacing)
+            matches!(role, Diameter | Radius | Depth | Inset | Spacing) || (role == Bare && dim.axis.is_none() && dim.list.is_none())
         }
         Noun::Fillet | Noun::Chamfer => matches!(role, Bare | Fillet | Chamfer | Radius),
         _ => true,
@@ -315,7 +399,7 @@ fn owner(doc: &Doc, mentions: &[Mention], t: usize) -> Option<usize> {
     owner_fit(doc, mentions, t, None, &[])
 }
 
-fn owner_fit(doc: &Doc, mentions: &[Mention], t: usize, role: Option<super::doc::Role>, kinds: &[Noun]) -> Option<usize> {
+fn owner_fit(doc: &Doc, mentions: &[Mention], t: usize, role: Option<&super::doc::Dim>, kinds: &[Noun]) -> Option<usize> {
     let kind_of = |m: &Mention| kinds.get(m.elem).copied().unwrap_or(m.kind);
     let s = doc.sent[t];
     // Inside a mention's phrase (before its head): that mention.
@@ -327,7 +411,9 @@ fn owner_fit(doc: &Doc, mentions: &[Mention], t: usize, role: Option<super::doc:
     // (a subject or a "with" feature); else the sentence's first mention; else the last
     // subject of an earlier sentence.
     let before: Vec<&Mention> = mentions.iter().filter(|m| m.sent == s && m.head < t).collect();
-    if let Some(m) = before.iter().rev().find(|m| (m.prep.is_none() || m.prep.as_deref() == Some("with")) && fits(kind_of(m), role)) {
+    // A mention inside parentheses owns nothing outside them.
+    let aside = |m: &Mention| doc.depth[m.head] > doc.depth[t];
+    if let Some(m) = before.iter().rev().find(|m| (m.prep.is_none() || m.prep.as_deref() == Some("with")) && fits(kind_of(m), role) && !aside(m)) {
         return Some(m.elem);
     }
     if let Some(m) = mentions.iter().find(|m| m.sent == s && (m.prep.is_none() || m.prep.as_deref() == Some("with"))) {
@@ -346,14 +432,21 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
             owner(doc, mentions, doc.dims[k - 1].tok)
         } else {
             let kinds: Vec<Noun> = elements.iter().map(|e| e.kind).collect();
-            owner_fit(doc, mentions, d.tok, Some(d.role), &kinds)
+            owner_fit(doc, mentions, d.tok, Some(d), &kinds)
         };
+        // "Total height 35mm", "40mm overall length": the part's own.
+        let o = if d.has("total") || d.has("overall") { elements.iter().position(|e| e.title).or(o) } else { o };
         if let Some(o) = o.and_then(|o| elements.get_mut(o)) {
             o.dims.push(k);
         }
     }
     for (k, r) in doc.ranges.iter().enumerate() {
-        if let Some(o) = owner(doc, mentions, r.toks.0).and_then(|o| elements.get_mut(o)) {
+        // "lying flat on the XY plane (Z=0 to Z=3)": the whole part's.
+        if is_part_range(doc, k) {
+            continue;
+        }
+        let o = owner(doc, mentions, r.toks.0);
+        if let Some(o) = o.and_then(|o| elements.get_mut(o)) {
             o.ranges.push(k);
         }
     }
@@ -387,8 +480,8 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
                     && let Some(o) = owner(doc, mentions, i).and_then(|o| elements.get_mut(o))
                 {
                     o.teeth.get_or_insert((v as u32) / per);
-                    doc.mark(i);
-                    doc.mark(i + 1);
+                    let last = if doc.is(i + 1, "tooth") || doc.is(i + 1, "vertex") { i + 1 } else { i + 2 };
+                    doc.mark_range(i, last + 1);
                 }
             }
             _ => {}

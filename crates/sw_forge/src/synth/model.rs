@@ -258,7 +258,10 @@ impl Model {
                 let _ = writeln!(s, "result = result.union({})", b.code());
             }
         }
-        for c in &self.cuts {
+        // Round holes first, then the other cuts: a slot whose sides are tangent to a hole
+        // already cut leaves OCCT a valid solid, the other way round it may not.
+        let round = |c: &&Body| matches!(&c.shape, Shape::Prism { profile: Profile::Circle { .. }, .. });
+        for c in self.cuts.iter().filter(round).chain(self.cuts.iter().filter(|c| !round(c))) {
             let _ = writeln!(s, "# {}", c.label);
             let _ = writeln!(s, "result = result.cut({})", c.code());
         }

@@ -53,8 +53,14 @@ impl Profile {
             }
             Profile::Star { n, tip, root } => (*n as f64 * tip * root * (PI / *n as f64).sin(), [0.0, 0.0]),
             Profile::Stadium { l, w } => ((l - w) * w + PI * w * w / 4.0, [0.0, 0.0]),
-            Profile::Poly(pts) => poly_area_centroid(pts),
-            Profile::Path { start, segs } => path_area_centroid(*start, segs),
+            Profile::Poly(pts) => {
+                let (a, c) = poly_area_centroid(pts);
+                (a.abs(), c)
+            }
+            Profile::Path { start, segs } => {
+                let (a, c) = path_area_centroid(*start, segs);
+                (a.abs(), c)
+            }
         }
     }
 
@@ -338,14 +344,12 @@ pub fn path_area_centroid(start: [f64; 2], segs: &[Seg]) -> (f64, [f64; 2]) {
             }
         }
     }
+    // Signed throughout: an arc turning the path's way bulges out of it, the other way in.
     let (pa, pc) = poly_area_centroid(&verts);
-    // Orientation of the whole path: the segments' signs are relative to counter-clockwise.
-    let orient = if pa >= 0.0 { 1.0 } else { -1.0 };
-    let mut area = pa.abs();
-    let mut mx = pa.abs() * pc[0];
-    let mut my = pa.abs() * pc[1];
+    let mut area = pa;
+    let mut mx = pa * pc[0];
+    let mut my = pa * pc[1];
     for (a, c) in pieces {
-        let a = a * orient;
         area += a;
         mx += a * c[0];
         my += a * c[1];

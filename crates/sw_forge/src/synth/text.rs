@@ -106,6 +106,11 @@ pub fn fold(w: &str) -> String {
     if let Some((_, to)) = SAME.iter().find(|(from, _)| *from == w) {
         return (*to).to_string();
     }
+    for (suffix, keep) in [("sses", 2), ("oes", 1), ("ches", 2), ("shes", 2), ("xes", 1)] {
+        if w.len() > suffix.len() && w.ends_with(suffix) {
+            return w[..w.len() - suffix.len() + keep].to_string();
+        }
+    }
     if w.len() > 4 && w.ends_with("ies") {
         return format!("{}y", &w[..w.len() - 3]);
     }
@@ -297,7 +302,7 @@ fn inherit_units(toks: &mut [Token]) {
     for i in 2..toks.len() {
         if let Tk::Num { v, unit: None, pm, signed } = toks[i].kind
             && toks[i - 1].is_sym('=')
-            && matches!(toks[i - 2].word(), Some("x" | "y" | "z" | "r"))
+            && (matches!(toks[i - 2].word(), Some("x" | "y" | "z" | "r")) || toks[i - 2].is_sym('x'))
         {
             toks[i].kind = Tk::Num { v, unit: Some(unit), pm, signed };
         }

@@ -23,12 +23,16 @@ fn need(v: Option<f64>, what: &str, r: &Reader<'_>, e: usize) -> Res<f64> {
 
 /// Builds every body element not built yet, in the order the prompt gives them.
 pub fn read(r: &mut Reader<'_>) -> Res<()> {
+    merge_faces(r);
     for e in 0..r.els.len() {
         if r.done[e] || !matches!(r.els[e].kind, Noun::Body(_)) {
             continue;
         }
-        // The part's name with no size of its own is only its name ("A hex bolt: …").
-        if r.els[e].title && r.els[e].dims.is_empty() && r.els.len() > 1 {
+        // The part's name with no size of its own is only its name ("A hex bolt: …"); its
+        // overall sizes are restatements of its bodies.
+        let own = r.els[e].dims.iter().any(|k| !r.dim(*k).has("total") && !r.dim(*k).has("overall"));
+        let others = (0..r.els.len()).any(|o| o != e && matches!(r.els[o].kind, Noun::Body(_)) && !r.els[o].dims.is_empty());
+        if r.els[e].title && !own && (r.els.len() > 1 && (r.els[e].dims.is_empty() || others)) {
             r.mark_element(e);
             continue;
         }
@@ -36,6 +40,15 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
         // "(bottom flange)"), not a new body; what it asks is checked when all is read.
         let el = &r.els[e];
         if el.dims.is_empty() && el.ranges.is_empty() && el.tuples.is_empty() && el.coords.is_empty() {
+            // "with hemispherical caps on both ends", "with a domed top": ends of a round body.
+            if r.shape_of(e) == Some(ShapeHint::Hemisphere) {
+                caps(r, e)?;
+            }
+            continue;
+        }
+        // "with the base at Z=0": a place on the part, not a body.
+        let definite = el.mentions.iter().all(|m| r.mentions[*m].definite);
+        if el.dims.is_empty() && el.ranges.is_empty() && el.tuples.is_empty() && definite {
             continue;
         }
         let b = if super::paths::is_radial(r, e) { super::paths::radial(r, e)? } else { build(r, e)? };
@@ -43,6 +56,33 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
         r.mark_element(e);
     }
     Ok(())
+}
+
+/// "A pyramid with a square base of 40mm sides", "the rectangular base is 60mm (X) by
+/// 30mm (Y)" of a wedge, "the right triangle has a 20mm leg along X": a face or edge of
+/// the part named as a noun — its lengths are the part's.
+fn merge_faces(r: &mut Reader<'_>) {
+    let Some(t) = r.els.iter().position(|e| e.title) else { return };
+    let shape = r.shape_of(t);
+    let faces: &[&str] = match shape {
+        Some(ShapeHint::Cone | ShapeHint::Pyramid | ShapeHint::Wedge) => &["base"],
+        Some(ShapeHint::Ngon(3)) => &["leg", "base"],
+        _ => return,
+    };
+    for f in faces {
+        for e in r.elements_named(f) {
+            if e == t || r.els[e].noun != *f {
+                continue;
+            }
+            let (dims, ranges, coords, tuples) = (r.els[e].dims.clone(), r.els[e].ranges.clone(), r.els[e].coords.clone(), r.els[e].tuples.clone());
+            r.els[t].dims.extend(dims);
+            r.els[t].ranges.extend(ranges);
+            r.els[t].coords.extend(coords);
+            r.els[t].tuples.extend(tuples);
+            r.els[t].dims.sort_unstable();
+            r.mark_element(e);
+        }
+    }
 }
 
 /// The axis a body runs along: a length given along an axis, a span on X or Y, else Z.
@@ -64,10 +104,22 @@ fn axis_of(r: &Reader<'_>, e: usize, round: bool) -> Axis {
     }
     // "along the X axis" in its sentence after its noun ("a pipe … along the X axis").
     if round {
-        for (s, t) in r.sentences_of(e) {
-            for i in s..t.saturating_sub(2) {
+        // Only where it is the subject, up to the next thing named.
+        let spans: Vec<(usize, usize)> = el
+            .mentions
+            .iter()
+            .map(|mi| &r.mentions[*mi])
+            .filter(|m| m.prep.is_none())
+            .map(|m| {
+                let (_, end) = r.doc.sentence(m.sent);
+                let next = r.mentions.iter().filter(|n| n.sent == m.sent && n.head > m.head && n.elem != e).map(|n| n.start).min().unwrap_or(end);
+                (m.head, next)
+            })
+            .collect();
+        for (s, t) in spans {
+            for i in s..t.saturating_sub(1) {
                 if r.doc.is(i, "along") {
-                    let a = r.doc.word(i + 1).and_then(axis_name).or_else(|| r.doc.word(i + 2).and_then(axis_name));
+                    let a = r.doc.axis_at(i + 1).or_else(|| r.doc.axis_at(i + 2));
                     if let Some(a) = a {
                         return a;
                     }
@@ -89,6 +141,9 @@ pub fn axis_name(w: &str) -> Option<Axis> {
 
 /// The span of a body along its axis and the length that sized it.
 fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64; 2]> {
+    if std::env::var_os("SW_SYNTH_DEBUG").is_some() {
+        eprintln!("span of {} along {axis:?}: ranges {:?} used {:?}", r.els[e].noun, r.els[e].ranges, r.used_ranges);
+    }
     if let Some(s) = r.take_range(e, axis) {
         if let Some(l) = len
             && ((s[1] - s[0]) - l).abs() > 1e-6 * l.max(1.0)
@@ -105,6 +160,13 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
     if let Some(c) = r.take_coord(e, axis) {
         return Ok([c, c + l]);
     }
+    // As thick as the flat part ("lying flat … (Z=0 to Z=3)"): its span.
+    if axis == Axis::Z
+        && let Some(p) = part_span(r)
+        && (p[1] - p[0] - l).abs() < 1e-9
+    {
+        return Ok(p);
+    }
     // Stacked on the body before it along the same axis, when one is there and the
     // words say on top (or nothing says otherwise); the first body from 0 (or centred).
     let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == axis && !b.cut).map(|b| b.span));
@@ -116,6 +178,15 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
         }
         _ if r.centered && prev.is_none() => Ok([-l / 2.0, l / 2.0]),
         _ => Ok([0.0, l]),
+    }
+}
+
+/// Marks every occurrence of these words read.
+pub fn mark_words(r: &Reader<'_>, words: &[&str]) {
+    for i in 0..r.doc.len() {
+        if r.doc.word(i).is_some_and(|w| words.contains(&w)) {
+            r.doc.mark(i);
+        }
     }
 }
 
@@ -141,10 +212,10 @@ fn positions(r: &mut Reader<'_>, e: usize, axis: Axis) -> Res<Vec<[f64; 2]>> {
     if !pts.is_empty() {
         return Ok(pts);
     }
+    if let Some(g) = place::grid(r, e) {
+        return Ok(g);
+    }
     if count > 1 {
-        if let Some(g) = place::grid(r, e) {
-            return Ok(g);
-        }
         if let Some(c) = place::circle(r, e, count) {
             return Ok(c);
         }
@@ -253,8 +324,18 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
     let (profile, od, id) = match shape {
         ShapeHint::Round | ShapeHint::Ring => {
             let od = r.take_diameter(e, &["outer"], &[]).or_else(|| r.take_diameter(e, &[], NOT_OUTER));
+            // "of the same diameter", "has the same dimensions": as the round body before it.
+            let same = if od.is_none() && (r.says(e, "same") || r.says(e, "identical")) {
+                (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.od.is_some()).map(|b| (b.od, b.id)))
+            } else {
+                None
+            };
+            let od = od.or(same.and_then(|s| s.0));
             let od = need(od, "diameter", r, e)?;
             let mut id = r.take_diameter(e, &["inner"], &[]).or_else(|| r.take_diameter(e, &["bore"], &["pitch"]));
+            if id.is_none() {
+                id = same.and_then(|s| s.1);
+            }
             if id.is_none() && shape == ShapeHint::Ring {
                 id = r.take_diameter(e, &["hole"], &["pitch", "bolt"]);
                 if id.is_none()
@@ -263,13 +344,18 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                     id = Some(od - 2.0 * w);
                 }
             }
+            let half = r.doc.toks.iter().any(|t| matches!(t.word(), Some("semicircular" | "half-pipe" | "half")));
             match id {
+                Some(i) if i > 0.0 && i < od && half => return half_pipe(r, e, od, i),
                 Some(i) if i > 0.0 && i < od => (Profile::Annulus { od, id: i }, od, Some(i)),
                 Some(i) => {
                     return Err(Refusal::new(r.quote_element(e), format!("its inner diameter {i} mm does not fit inside {od} mm")));
                 }
                 None => (Profile::Circle { d: od }, od, None),
             }
+        }
+        ShapeHint::Ngon(3) if r.doc.toks.iter().any(|t| matches!(t.word(), Some("right" | "right-angle" | "right-angled"))) => {
+            return right_triangle(r, e);
         }
         ShapeHint::Ngon(n) => {
             let d = r
@@ -305,6 +391,8 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
             }
             let h = s[2];
             let span = span(r, e, Axis::Z, h)?;
+            // "The shape is a rectangle with semicircular ends along the X axis": a stadium.
+            mark_words(r, &["rectangle", "semicircular", "end", "rounded", "round"]);
             return Ok(add(r, e, Profile::Stadium { l, w }, Axis::Z, span, None, None, None));
         }
     };
@@ -317,6 +405,10 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
         });
         if len.is_none() && shape == ShapeHint::Star {
             len = r.take(e, &[Role::Width], &["face"], &[]);
+        }
+        // A flat part's thickness ("lying flat … (Z=0 to Z=3)") for a disc on it.
+        if len.is_none() && axis == Axis::Z && let Some(p) = part_span(r) {
+            len = Some(p[1] - p[0]);
         }
     }
     let span = span(r, e, axis, len)?;
@@ -367,11 +459,21 @@ fn rect(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         });
     }
     let (x, y, z) = (need(s[0], "length", r, e)?, need(s[1], "width", r, e)?, need(s[2], "height or thickness", r, e)?);
-    let cx = r.take_coord(e, Axis::X);
-    let cy = r.take_coord(e, Axis::Y);
+    // "rising from the Y=0 edge of the base": flush with that edge, on the base.
+    if let Some(b) = on_edge(r, e, [x, y, z])? {
+        return Ok(b);
+    }
+    // A centre coordinate, when it is the only one on its axis (several are copies).
+    let one = |r: &Reader<'_>, a: Axis| r.els[e].coords.iter().filter(|k| r.doc.coords[**k].axis == a).count() == 1;
+    let cx = if one(r, Axis::X) { r.take_coord(e, Axis::X) } else { None };
+    let cy = if one(r, Axis::Y) { r.take_coord(e, Axis::Y) } else { None };
     let zspan = match iv[2] {
         Some(sp) => sp,
-        None => span(r, e, Axis::Z, Some(z))?,
+        None => match part_span(r) {
+            // As thick as the flat part: its span.
+            Some(p) if (p[1] - p[0] - z).abs() < 1e-9 => p,
+            _ => span(r, e, Axis::Z, Some(z))?,
+        },
     };
     let centre = |a: usize, c: Option<f64>| iv[a].map_or(c.unwrap_or(0.0), |sp| (sp[0] + sp[1]) / 2.0);
     let (mx, my) = (centre(0, cx), centre(1, cy));
@@ -390,11 +492,7 @@ fn rect(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 
 /// The Z span the whole part is given ("lying flat on the XY plane (Z=0 to Z=3)").
 pub fn part_span(r: &mut Reader<'_>) -> Option<[f64; 2]> {
-    let t = r.els.iter().position(|e| e.title)?;
-    if !matches!(r.els[t].kind, Noun::Whole) && !r.els[t].dims.is_empty() {
-        return None;
-    }
-    let k = *r.els[t].ranges.iter().find(|k| r.doc.ranges[**k].axis == Axis::Z)?;
+    let k = (0..r.doc.ranges.len()).find(|k| r.doc.ranges[*k].axis == Axis::Z && super::super::mention::is_part_range(r.doc, *k))?;
     r.used_ranges[k] = true;
     let rg = &r.doc.ranges[k];
     r.doc.mark_range(rg.toks.0, rg.toks.1);
@@ -477,6 +575,11 @@ fn torus(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 fn capsule(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let d = need(r.take_diameter(e, &[], &[]), "diameter", r, e)?;
     let l = need(r.take(e, ALONG, &[], &[]), "length", r, e)?;
+    // "with hemispherical caps on both ends".
+    for c in r.elements_named("cap") {
+        r.mark_element(c);
+    }
+    mark_words(r, &["end", "hemispherical", "domed", "rounded"]);
     cylinder_with_caps(r, e, d, l)
 }
 
@@ -494,6 +597,24 @@ pub fn cylinder_with_caps(r: &mut Reader<'_>, e: usize, d: f64, l: f64) -> Res<B
 }
 
 fn pyramid(r: &mut Reader<'_>, e: usize) -> Res<Built> {
+    // A rectangular frustum: two X-by-Y pairs, the base's and the top's.
+    let pairs: Vec<usize> = r.free_dims(e).into_iter().filter(|k| matches!(r.dim(*k).axis, Some(Axis::X | Axis::Y))).collect();
+    if pairs.len() == 4 {
+        let v: Vec<f64> = pairs.iter().map(|k| r.dim(*k).mm).collect();
+        for k in &pairs {
+            r.used_dims[*k] = true;
+        }
+        let h = need(r.take(e, &[Role::Height, Role::Length], &[], &[]), "height", r, e)?;
+        let span = span(r, e, Axis::Z, Some(h))?;
+        let bi = r.model.adds.len();
+        r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Loft { at: [0.0, 0.0], from: span[0], to: span[1], bottom: Profile::Rect { w: v[0], h: v[1] }, top: Profile::Rect { w: v[2], h: v[3] } }));
+        for i in 0..r.doc.len() {
+            if r.doc.is(i, "top") && r.doc.is(i + 1, "face") {
+                r.doc.mark_range(i, i + 2);
+            }
+        }
+        return Ok(Built { axis: Axis::Z, span, at: vec![[0.0, 0.0]], od: None, id: None, size: Some([v[0], v[1]]), bodies: vec![bi], cut: false });
+    }
     let s = box_sizes(r, e);
     let a = s[0].or(s[1]);
     let a = need(a, "base side", r, e)?;
@@ -513,8 +634,146 @@ fn wedge(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let h = s[2].or_else(|| r.take_coord(e, Axis::Z));
     let h = need(h, "height", r, e)?;
     let x0 = if r.centered { -x / 2.0 } else { 0.0 };
+    // "It tapers symmetrically from both Y edges to a thin ridge line at Y=0".
+    mark_words(r, &["tapers", "taper", "tapering", "ridge", "line", "edge", "apex"]);
+    r.known.push(0.0);
     let bi = r.model.adds.len();
     let pts = vec![[-y / 2.0, 0.0], [y / 2.0, 0.0], [0.0, h]];
     r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile: Profile::Poly(pts), axis: Axis::X, at: [0.0, 0.0], rot: 0.0, from: x0, to: x0 + x }));
     Ok(Built { axis: Axis::X, span: [x0, x0 + x], at: vec![[0.0, 0.0]], od: None, id: None, size: Some([y, h]), bodies: vec![bi], cut: false })
+}
+
+/// A right-triangle prism: legs along two axes from the right angle at the origin,
+/// extruded along the third ("a 20mm leg along X and a 30mm leg along Y … Extruded 40mm in +Z").
+fn right_triangle(r: &mut Reader<'_>, e: usize) -> Res<Built> {
+    let mut legs: Vec<(Axis, f64)> = Vec::new();
+    for k in r.free_dims(e) {
+        let d = r.dim(k).clone();
+        if d.has("leg") || r.doc.is(d.tok + 1, "leg") {
+            legs.push((d.axis.unwrap_or(if legs.is_empty() { Axis::X } else { Axis::Y }), d.mm));
+            r.used_dims[k] = true;
+        }
+    }
+    let [(a1, l1), (a2, l2)] = legs.as_slice() else {
+        return Err(Refusal::new(r.quote_element(e), "a right triangle needs its two legs"));
+    };
+    let along = Axis::ALL.into_iter().find(|a| a != a1 && a != a2).unwrap_or(Axis::Z);
+    let h = need(r.take(e, &[Role::Length, Role::Height, Role::Bare], &[], &[]), "extrusion", r, e)?;
+    let (u, _) = along.uv();
+    // In (u, v): the leg along u, the other along v.
+    let (lu, lv) = if *a1 == u { (*l1, *l2) } else { (*l2, *l1) };
+    let bi = r.model.adds.len();
+    r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile: Profile::Poly(vec![[0.0, 0.0], [lu, 0.0], [0.0, lv]]), axis: along, at: [0.0, 0.0], rot: 0.0, from: 0.0, to: h }));
+    for i in 0..r.doc.len() {
+        if matches!(r.doc.word(i), Some("right" | "angle" | "right-angle" | "triangle" | "leg")) {
+            r.doc.mark(i);
+        }
+    }
+    Ok(Built { axis: along, span: [0.0, h], at: vec![[0.0, 0.0]], od: None, id: None, size: Some([lu, lv]), bodies: vec![bi], cut: false })
+}
+
+/// A half pipe: a semicircular ring opening upward (+Z), extruded along its axis.
+fn half_pipe(r: &mut Reader<'_>, e: usize, od: f64, id: f64) -> Res<Built> {
+    let axis = axis_of(r, e, true);
+    let axis = if axis == Axis::Z { Axis::Y } else { axis };
+    let len = need(r.take(e, &[Role::Length], &[], &[]), "length", r, e)?;
+    let (ro, ri) = (od / 2.0, id / 2.0);
+    // In (h, z), h the in-plane horizontal axis: the lower half, its centre at z = ro.
+    let hz = [[-ro, ro], [0.0, 0.0], [ro, ro], [ri, ro], [0.0, ro - ri], [-ri, ro]];
+    let (u, _) = axis.uv();
+    let to_uv = |p: [f64; 2]| if u == Axis::Z { [p[1], p[0]] } else { [p[0], p[1]] };
+    let segs = vec![
+        super::super::profile::Seg::Arc { mid: to_uv(hz[1]), end: to_uv(hz[2]) },
+        super::super::profile::Seg::Line(to_uv(hz[3])),
+        super::super::profile::Seg::Arc { mid: to_uv(hz[4]), end: to_uv(hz[5]) },
+        super::super::profile::Seg::Line(to_uv(hz[0])),
+    ];
+    let profile = Profile::Path { start: to_uv(hz[0]), segs };
+    let from = if r.centered { -len / 2.0 } else { 0.0 };
+    let bi = r.model.adds.len();
+    r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile, axis, at: [0.0, 0.0], rot: 0.0, from, to: from + len }));
+    for i in 0..r.doc.len() {
+        if matches!(r.doc.word(i), Some("semicircular" | "arc" | "opening" | "upward" | "half-pipe" | "trough")) {
+            r.doc.mark(i);
+        }
+    }
+    r.known.push(ro - ri);
+    Ok(Built { axis, span: [from, from + len], at: vec![[0.0, 0.0]], od: Some(od), id: Some(id), size: None, bodies: vec![bi], cut: false })
+}
+
+/// Hemispherical caps on the ends of the round body before them ("on both ends", "on
+/// top", "on the bottom"), as wide as it.
+fn caps(r: &mut Reader<'_>, e: usize) -> Res<()> {
+    let Some(p) = (0..e).rev().find(|p| r.built[*p].as_ref().is_some_and(|b| !b.cut && b.od.is_some() && b.id.is_none())) else {
+        return Ok(());
+    };
+    let Some(b) = r.built[p].clone() else { return Ok(()) };
+    let (Some(d), [at]) = (b.od, b.at.as_slice()) else { return Ok(()) };
+    let both = r.says(e, "both") || r.els[e].count == Some(2);
+    let top = both || r.says(e, "top");
+    let bottom = both || r.says(e, "bottom");
+    if !top && !bottom {
+        return Ok(());
+    }
+    let mut bodies = Vec::new();
+    let mut span = b.span;
+    for (is, z, up) in [(top, b.span[1], true), (bottom, b.span[0], false)] {
+        if !is {
+            continue;
+        }
+        let mut c = super::super::solid::point(b.axis, *at, z);
+        c[b.axis.index()] = z;
+        bodies.push(r.model.adds.len());
+        r.model.adds.push(Body::new("cap", Shape::Hemisphere { c, d, axis: b.axis, up }));
+        if up {
+            span[1] += d / 2.0;
+        } else {
+            span[0] -= d / 2.0;
+        }
+    }
+    mark_words(r, &["end", "both", "top", "bottom"]);
+    r.built[e] = Some(Built { axis: b.axis, span, at: b.at.clone(), od: Some(d), id: None, size: None, bodies, cut: false });
+    r.mark_element(e);
+    Ok(())
+}
+
+/// "… rising from the Y=0 edge of the base": the base is placed with that edge at the
+/// coordinate (it runs from it), and this body stands on the base, flush with the edge.
+fn on_edge(r: &mut Reader<'_>, e: usize, size: [f64; 3]) -> Res<Option<Built>> {
+    let d = r.doc;
+    let hit = r.els[e].coords.iter().copied().find(|k| !r.used_coords[*k] && d.is(d.coords[*k].tok + 3, "edge") && d.is(d.coords[*k].tok + 4, "of"));
+    let Some(k) = hit else { return Ok(None) };
+    let c = d.coords[k].clone();
+    let target = r.mentions.iter().find(|m| m.head > c.tok + 4 && m.head <= c.tok + 8).map(|m| m.elem);
+    let Some(t) = target.filter(|t| r.built[*t].as_ref().is_some_and(|b| b.size.is_some() && b.axis == Axis::Z)) else {
+        return Ok(None);
+    };
+    if c.axis == Axis::Z {
+        return Ok(None);
+    }
+    r.used_coords[k] = true;
+    d.mark_range(c.tok, c.tok + 6);
+    mark_words(r, &["rising", "rises", "standing"]);
+    // Move the target so that it runs from the edge.
+    let Some(tb) = r.built[t].clone() else { return Ok(None) };
+    let Some(tsize) = tb.size else { return Ok(None) };
+    let ai = c.axis.index();
+    let shift = c.v - (tb.at[0][ai] - tsize[ai] / 2.0);
+    let mut moved = tb.clone();
+    for (p, bi) in moved.at.iter_mut().zip(&tb.bodies) {
+        p[ai] += shift;
+        if let Some(Shape::Prism { at, .. }) = r.model.adds.get_mut(*bi).map(|b| &mut b.shape) {
+            *at = *p;
+        }
+    }
+    let centre = moved.at[0];
+    r.built[t] = Some(moved);
+    // This body: from the edge inwards along the axis, centred on the target across it.
+    let mut at = centre;
+    at[ai] = c.v + size[ai] / 2.0;
+    let span = [tb.span[1], tb.span[1] + size[2]];
+    let bi = r.model.adds.len();
+    r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile: Profile::Rect { w: size[0], h: size[1] }, axis: Axis::Z, at, rot: 0.0, from: span[0], to: span[1] }));
+    r.known.push((tsize[1 - ai] - size[1 - ai]) / 2.0);
+    Ok(Some(Built { axis: Axis::Z, span, at: vec![at], od: None, id: None, size: Some([size[0], size[1]]), bodies: vec![bi], cut: false }))
 }

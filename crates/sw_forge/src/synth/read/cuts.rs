@@ -8,7 +8,6 @@ use super::super::lexicon::{CutKind, Noun, ShapeHint};
 use super::super::profile::Profile;
 use super::super::solid::{Axis, Body, Shape};
 use super::super::text::Tk;
-use super::bodies::axis_name;
 use super::{Built, Reader, Refusal, Res, place};
 
 const EXTRA: f64 = 1.0;
@@ -53,8 +52,13 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
 /// something that is not there ("through both prongs in the Y direction", at X=0 in the slot).
 fn check_cuts_something(r: &Reader<'_>, e: usize, bi: usize) -> Res<()> {
     let Some(c) = r.model.cuts.get(bi) else { return Ok(()) };
-    let b = c.bounds();
     let whole = r.model.bounds();
+    // What of it lies within the part.
+    let mut b = c.bounds();
+    for k in 0..3 {
+        b[0][k] = b[0][k].max(whole[0][k]);
+        b[1][k] = b[1][k].min(whole[1][k]);
+    }
     let outside = (0..3).any(|k| b[1][k] <= whole[0][k] + 1e-9 || b[0][k] >= whole[1][k] - 1e-9);
     let swallowed = r.model.cuts[..bi].iter().any(|p| {
         matches!(&p.shape, Shape::Prism { profile: Profile::Rect { .. }, rot, .. } if rot.abs() < 1e-9) && {
@@ -103,11 +107,16 @@ fn cut_axis(r: &Reader<'_>, e: usize) -> Option<Axis> {
     let d = r.doc;
     for &mi in &r.els[e].mentions {
         let m = &r.mentions[mi];
+        // Only where it is said of it, up to the next thing named.
+        if m.prep.is_some() && m.prep.as_deref() != Some("with") {
+            continue;
+        }
         let (_, end) = d.sentence(m.sent);
+        let end = r.mentions.iter().filter(|n| n.sent == m.sent && n.head > m.head && n.elem != e && n.prep.is_none()).map(|n| n.start).min().unwrap_or(end);
         for i in m.head..end.saturating_sub(1) {
             let along = d.is(i, "along") || d.is(i, "oriented");
             if along || d.is(i, "direction") {
-                let pick = |j: usize| d.word(j).and_then(axis_name);
+                let pick = |j: usize| d.axis_at(j);
                 let a = if along { pick(i + 1).or_else(|| pick(i + 2)).or_else(|| pick(i + 3)) } else { pick(i - 1) };
                 if let Some(a) = a {
                     return Some(a);
@@ -140,12 +149,33 @@ fn push_cut(r: &mut Reader<'_>, label: &str, shape: Shape) -> usize {
 }
 
 fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    let d = r.take_diameter(e, &[], &["pitch", "circle", "counterbore", "countersink", "outer", "bolt"]).or_else(|| r.take_diameter(e, &["bolt"], &["pitch", "circle"]));
+    let d = r
+        .take_diameter(e, &[], &["pitch", "circle", "counterbore", "countersink", "outer", "bolt"])
+        .or_else(|| r.take_diameter(e, &["bolt"], &["pitch", "circle"]))
+        // "15mm bore", "a 6mm hole": a bare size before the noun.
+        .or_else(|| r.take(e, &[Role::Bare], &[], &["pitch", "circle", "from-center", "counterbore"]));
     let d = d.ok_or_else(|| Refusal::new(r.quote_element(e), "no diameter is given for it"))?;
     let tg = targets(r, e);
-    let axis = cut_axis(r, e).unwrap_or(Axis::Z);
+    // Its axis: said; else the one its points do not name ("at (X=+12, Z=19)" → Y); else
+    // across the thin side of the plate or wall it goes through; else Z.
+    let named: Vec<Axis> = r.els[e].tuples.iter().flat_map(|k| r.doc.tuples[*k].vals.iter().filter_map(|v| v.0)).collect();
+    let by_points = (named.len() >= 2).then(|| Axis::ALL.into_iter().find(|a| !named.contains(a))).flatten();
+    // A plate or wall: a box at most half as thick as its next size.
+    let thin = tg.iter().find_map(|t| {
+        let b = r.built[*t].as_ref()?;
+        let body = r.model.adds.get(*b.bodies.first()?)?;
+        if !matches!(&body.shape, Shape::Prism { profile: Profile::Rect { .. }, .. }) {
+            return None;
+        }
+        let q = body.bounds();
+        let s = [q[1][0] - q[0][0], q[1][1] - q[0][1], q[1][2] - q[0][2]];
+        let mut order = [0usize, 1, 2];
+        order.sort_by(|a, b| s[*a].total_cmp(&s[*b]));
+        (s[order[0]] <= 0.5 * s[order[1]]).then(|| Axis::ALL[order[0]])
+    });
+    let axis = cut_axis(r, e).or(by_points).or(thin).unwrap_or(Axis::Z);
     let count = place::count_of(r, e);
-    let radial = axis != Axis::Z || r.says(e, "radial") || r.says(e, "radially");
+    let radial = r.says(e, "radial") || r.says(e, "radially") || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
     if radial && axis != Axis::Z {
         return radial_hole(r, e, d, axis, &tg);
     }
@@ -155,8 +185,8 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     if at.is_empty() && count > 1 {
         at = place::grid(r, e)
             .or_else(|| place::circle(r, e, count))
-            .or_else(|| target_size.and_then(|s| place::corners(r, e, s)))
             .or_else(|| place::rect_pattern(r, e))
+            .or_else(|| target_size.and_then(|s| place::corners(r, e, s)))
             .or_else(|| place::row(r, e, count, Axis::X, axis))
             .unwrap_or_default();
     }
@@ -311,9 +341,12 @@ fn keyway(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     for (a, b) in r.sentences_of(e) {
         for i in a..b.saturating_sub(1) {
             let sign = if d.sym(i, '+') { 1.0 } else if d.sym(i, '-') { -1.0 } else { continue };
-            if let Some(ax) = d.word(i + 1).and_then(axis_name).filter(|ax| *ax != Axis::Z) {
+            if let Some(ax) = d.axis_at(i + 1).filter(|ax| *ax != Axis::Z) {
                 side = (ax, sign);
                 d.mark_range(i, i + 2);
+                if d.is(i + 2, "side") {
+                    d.mark(i + 2);
+                }
                 break;
             }
         }
@@ -335,6 +368,7 @@ fn keyway(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         (od / 2.0 - depth, od / 2.0 + EXTRA)
     };
     r.known.extend([lo, hi, lo + 0.5, (lo + hi) / 2.0]);
+    super::bodies::mark_words(r, &["radially", "radial", "outward", "surface"]);
     let rad = (hi - lo) / 2.0 + lo;
     let (u, _) = Axis::Z.uv();
     let at = if side.0 == u { [side.1 * rad, 0.0] } else { [0.0, side.1 * rad] };
@@ -368,7 +402,7 @@ fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             r.known.push((span[0] + b[0][2]) / 2.0);
             r.known.push((span[0] + span[1]) / 2.0);
             for i in 0..r.doc.len() {
-                if r.doc.is(i, "width") && r.doc.word(i.wrapping_sub(1)).and_then(axis_name).is_some() {
+                if r.doc.is(i, "width") && r.doc.axis_at(i.wrapping_sub(1)).is_some() {
                     r.doc.mark_range(i.saturating_sub(3), i + 1);
                 }
             }

@@ -107,10 +107,30 @@ pub fn read(doc: &Doc) -> Res<Model> {
         let title = r.els.first().map_or(String::new(), |e| e.noun.clone());
         return Err(Refusal::new(title, "no body of it is given its size"));
     }
+    join_pipes(&mut r);
     cuts::read(&mut r)?;
     treat::read(&mut r)?;
     verify::check(&mut r)?;
     Ok(r.model)
+}
+
+/// Pipes that meet (a tee, a cross) share one hollow interior: each becomes its outer
+/// cylinder, joined, and its bore, cut after the joining.
+fn join_pipes(r: &mut Reader<'_>) {
+    use super::profile::Profile;
+    use super::solid::{Body, Shape};
+    let rings: Vec<usize> = (0..r.model.adds.len()).filter(|i| matches!(&r.model.adds[*i].shape, Shape::Prism { profile: Profile::Annulus { .. }, .. })).collect();
+    let meets = |a: usize, b: usize| {
+        let (p, q) = (r.model.adds[a].bounds(), r.model.adds[b].bounds());
+        (0..3).all(|k| p[0][k] < q[1][k] - 1e-9 && q[0][k] < p[1][k] - 1e-9)
+    };
+    let crossing: Vec<usize> = rings.iter().copied().filter(|a| rings.iter().any(|b| b != a && meets(*a, *b) && r.model.adds[*a].shape.axis() != r.model.adds[*b].shape.axis())).collect();
+    for i in crossing {
+        let Shape::Prism { profile: Profile::Annulus { od, id }, axis, at, rot, from, to } = r.model.adds[i].shape.clone() else { continue };
+        r.model.adds[i].shape = Shape::Prism { profile: Profile::Circle { d: od }, axis, at, rot, from, to };
+        let label = format!("{} bore", r.model.adds[i].label);
+        r.model.cuts.push(Body::new(label, Shape::Prism { profile: Profile::Circle { d: id }, axis, at, rot, from, to }));
+    }
 }
 
 impl Reader<'_> {
@@ -135,6 +155,7 @@ impl Reader<'_> {
         let ok = |k: &usize, paren: bool| {
             let d = &self.doc.dims[*k];
             !self.used_dims[*k]
+                && d.restates.is_none()
                 && d.paren == paren
                 && roles.contains(&d.role)
                 && with.iter().all(|w| d.has(w))
@@ -146,11 +167,17 @@ impl Reader<'_> {
 
     /// A diameter, or twice a radius, qualified the same way.
     pub fn take_diameter(&mut self, e: usize, with: &[&str], without: &[&str]) -> Option<f64> {
+        let mut without = without.to_vec();
+        without.push("from-center");
+        let without = without.as_slice();
         let d = self.find(e, &[Role::Diameter], with, without);
         let r = self.find(e, &[Role::Radius], with, without);
+        // Outside parentheses first; a diameter before a radius.
+        let paren = |k: Option<usize>| k.is_some_and(|k| self.doc.dims[k].paren);
         let pick = match (d, r) {
-            (Some(a), Some(b)) => Some(a.min(b)),
-            (a, b) => a.or(b),
+            (Some(a), Some(b)) if paren(Some(a)) && !paren(Some(b)) => Some(b),
+            (Some(a), _) => Some(a),
+            (None, b) => b,
         }?;
         self.used_dims[pick] = true;
         let d = &self.doc.dims[pick];
@@ -190,8 +217,16 @@ impl Reader<'_> {
             Noun::Body(h) => Some(h),
             _ => None,
         };
+        // Teeth make a star ("the gear disc … with 16 teeth").
+        if el.teeth.is_some() {
+            return Some(ShapeHint::Star);
+        }
+        // A tapered or truncated rectangular block is a rectangular frustum.
+        if (el.has_mod("tapered") || el.has_mod("truncated")) && (el.has_mod("rectangular") || el.has_mod("square")) {
+            return Some(ShapeHint::Pyramid);
+        }
         // A rectangular or square tube or pipe is a hollow box section.
-        if matches!(from_noun, Some(ShapeHint::Ring)) && (el.has_mod("rectangular") || el.has_mod("square")) {
+        if matches!(el.noun.as_str(), "tube" | "pipe" | "sleeve") && (el.has_mod("rectangular") || el.has_mod("square")) {
             return Some(ShapeHint::Section(super::lexicon::Section::RectTube));
         }
         // A named solid ("cone", "sphere", "gear") keeps its kind; "hollow cylinder" is a ring.

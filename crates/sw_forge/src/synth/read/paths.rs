@@ -8,7 +8,7 @@ use super::super::lexicon::Noun;
 use super::super::profile::Profile;
 use super::super::solid::{Axis, Body, Shape};
 use super::super::text::Tk;
-use super::bodies::{axis_name, part_span};
+use super::bodies::part_span;
 use super::{Built, Reader, Refusal, Res, place};
 
 /// Revolved profiles, lofts and bends, when the prompt describes one.
@@ -48,15 +48,35 @@ fn revolve(r: &mut Reader<'_>) -> Res<()> {
     };
     let (a, _) = d.sentence(first);
     let (_, b) = d.sentence(rev.max(first));
-    // Chunks at "to": each gives X (radius) and/or Z; missing ones carry over.
+    // "revolved 360 degrees": a full turn (a part turn is not made).
+    let (ra, rb) = d.sentence(rev);
+    for i in ra..rb {
+        if let Tk::Deg(v) = d.toks[i].kind {
+            if (v - 360.0).abs() > 1e-9 {
+                return Err(Refusal::new(d.quote(i, i), "only a full 360-degree revolve is made"));
+            }
+            r.used_angles.insert(i);
+            d.mark(i);
+        }
+    }
+    // Chunks at "to": each gives X (radius) and/or Z; missing ones carry over. The
+    // sentence that puts the axis ("The axis of revolution is at X=0") is not a point.
     let mut pts: Vec<(Option<f64>, Option<f64>)> = vec![(None, None)];
     let mut i = a;
     let mut started = false;
+    let axis_sentence = |i: usize| {
+        let (s0, s1) = d.sentence(d.sent[i]);
+        (s0..s1).any(|j| d.is(j, "axis")) && (s0..s1).any(|j| d.is(j, "revolution"))
+    };
     while i < b {
+        if axis_sentence(i) {
+            i += 1;
+            continue;
+        }
         if d.is(i, "to") && started {
             pts.push((None, None));
         }
-        if let (Some(ax), true) = (d.word(i).and_then(axis_name), d.sym(i + 1, '='))
+        if let (Some(ax), true) = (d.axis_at(i), d.sym(i + 1, '='))
             && let Some(Tk::Num { v, unit, .. }) = d.toks.get(i + 2).map(|t| &t.kind)
         {
             let v = v * unit.unwrap_or(1.0);
@@ -153,14 +173,21 @@ fn revolve(r: &mut Reader<'_>) -> Res<()> {
         cut: false,
     });
     r.mark_element(t);
-    // The profile's words are read: its reference nouns ("from the bore", "(bottom flange)").
+    for i in ra..rb {
+        if matches!(d.word(i), Some("revolved" | "revolve" | "revolution" | "around" | "about")) {
+            d.mark(i);
+        }
+    }
+    super::bodies::mark_words(r, &["revolution"]);
+    // The profile's words are read: its reference nouns ("from the bore", "(bottom flange)",
+    // "the V-groove root") and the words naming the points.
     for i in a..b {
-        if matches!(d.toks[i].kind, Tk::Word(_)) && d.word(i).is_some_and(|w| super::super::lexicon::noun(w).is_some()) {
+        if d.word(i).is_some_and(|w| super::super::lexicon::noun(w).is_some() || super::super::doc::QUALS.contains(&w) || matches!(w, "v-groove" | "back" | "closed" | "inward" | "outward" | "further" | "straight")) {
             d.mark(i);
         }
     }
     for (e, el) in r.els.iter().enumerate() {
-        if el.mentions.iter().all(|m| {
+        if el.mentions.first().is_some_and(|m| {
             let h = r.mentions[*m].head;
             h >= a && h < b
         }) && matches!(el.kind, Noun::Body(_))
@@ -210,7 +237,8 @@ fn loft(r: &mut Reader<'_>) -> Res<()> {
         Some((p, zv))
     };
     let s0 = section(r, from, to);
-    let s1 = section(r, to, b);
+    let stop = (to..b).find(|i| d.sym(*i, ';') || d.sym(*i, ')')).unwrap_or(b);
+    let s1 = section(r, to, stop);
     let (Some((p0, z0)), Some((p1, z1))) = (s0, s1) else {
         return Err(Refusal::new(d.quote(from, b.saturating_sub(1)), "a loft's sections must each be a rectangle (A x B) or a circle, at a Z"));
     };
@@ -267,16 +295,34 @@ fn bend(r: &mut Reader<'_>) -> Res<()> {
         }
     }
     let angle = angle.ok_or_else(|| Refusal::new(r.quote_element(t), "the bend's angle is not given"))?;
+    // The same angle said again ("curving 45 degrees toward the +X direction").
+    for i in 0..d.len() {
+        if let Tk::Deg(a) = d.toks[i].kind
+            && (a - angle).abs() < 1e-9
+        {
+            r.used_angles.insert(i);
+            d.mark(i);
+        }
+    }
+    super::bodies::mark_words(r, &["quarter-circle", "semicircular", "arc", "u-bend", "elbow", "bend", "swept", "sweeping", "first", "quadrant", "leg", "parallel"]);
     // Start heading and the way it turns: "heading in the +Z direction", "toward the +X".
     let mut dirs: Vec<(usize, Axis, f64)> = Vec::new();
     for i in 0..d.len().saturating_sub(1) {
         let sign = if d.sym(i, '+') { 1.0 } else if d.sym(i, '-') { -1.0 } else { continue };
-        if let Some(a) = d.word(i + 1).and_then(axis_name) {
+        if let Some(a) = d.axis_at(i + 1) {
             dirs.push((i, a, sign));
         }
     }
     let heading = dirs.first().copied().ok_or_else(|| Refusal::new(r.quote_element(t), "the bend's start heading (+X, +Z …) is not given"))?;
-    let turn = dirs.iter().copied().find(|x| x.1 != heading.1).ok_or_else(|| Refusal::new(r.quote_element(t), "the way the bend turns (toward +X …) is not given"))?;
+    // The way it turns: a direction on another axis, else toward the end point given
+    // ("returning down to (X=70, Z=0)").
+    let toward_end = || {
+        d.tuples.iter().find_map(|tu| {
+            let v = tu.vals.iter().find(|(a, v, _)| a.is_some_and(|a| a != heading.1) && v.abs() > 1e-9)?;
+            Some((tu.toks.0, v.0.unwrap_or(Axis::X), v.1.signum()))
+        })
+    };
+    let turn = dirs.iter().copied().find(|x| x.1 != heading.1).or_else(toward_end).ok_or_else(|| Refusal::new(r.quote_element(t), "the way the bend turns (toward +X …) is not given"))?;
     for x in &dirs {
         d.mark_range(x.0, x.0 + 2);
     }
@@ -373,6 +419,7 @@ pub fn radial(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         }
     };
     r.known.extend([r0, r1, r1 - r0, (r0 + r1) / 2.0]);
+    super::bodies::mark_words(r, &["edge", "tip", "outward", "radially", "enough", "bridge", "bridging"]);
     let thick = r.take(e, &[Role::Height, Role::Thickness], &[], &[]);
     let span = match thick {
         Some(t) => [0.0, t],

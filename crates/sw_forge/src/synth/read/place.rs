@@ -13,7 +13,8 @@ use super::{Reader, Refusal, Res};
 const SECTION_WORDS: &[&str] = &[
     "triangle", "rectangle", "square", "circle", "hexagon", "octagon", "pentagon", "polygon", "star", "u-shaped",
     "t-shaped", "l-shaped", "z-shaped", "i-shaped", "semicircular", "circular", "rectangular", "hexagonal",
-    "triangular", "annular", "equilateral", "right", "rounded-rectangle", "star-polygon", "tooth", "v-shaped",
+    "triangular", "annular", "equilateral", "right", "rounded-rectangle", "star-polygon", "tooth", "v-shaped", "t", "i",
+    "l", "u", "z", "c", "h", "shaped", "outer", "inner",
 ];
 
 /// Reads the words that orient the whole part, describe its section in words, or
@@ -22,7 +23,7 @@ pub fn read_frame(r: &mut Reader<'_>) {
     let d = r.doc;
     for i in 0..d.len() {
         // "… cross-section", "… profile": the section's name words before it.
-        if matches!(d.word(i), Some("cross-section" | "profile" | "outline")) {
+        if matches!(d.word(i), Some("cross-section" | "profile" | "outline" | "polygon")) {
             d.mark(i);
             let mut j = i;
             while j > 0 && d.word(j - 1).is_some_and(|w| SECTION_WORDS.contains(&w)) {
@@ -43,6 +44,33 @@ pub fn read_frame(r: &mut Reader<'_>) {
             let end = (i + 1..(i + 6).min(d.len())).find(|j| d.is(*j, "direction") || d.is(*j, "axis"));
             if let Some(end) = end {
                 d.mark_range(i, end + 1);
+            }
+        }
+        // "viewed from the side in the XZ plane": a point of view.
+        if d.is(i, "viewed") || d.is(i, "seen") {
+            let end = (i + 1..(i + 4).min(d.len())).find(|j| matches!(d.word(*j), Some("side" | "front" | "top" | "above" | "end")));
+            if let Some(end) = end {
+                d.mark_range(i, end + 1);
+            }
+        }
+        // "creating two parallel prongs", "giving the container a smooth rounded-rectangle
+        // cross-section", "forming flange ears": what the words before make, restated (their
+        // numbers are still checked against the part).
+        if matches!(d.word(i), Some("creating" | "forming" | "giving" | "producing" | "leaving" | "resulting")) {
+            let mut j = i;
+            while j < d.len() && !(d.sym(j, ',') || d.sym(j, '.') || d.sym(j, ';') || d.sym(j, ')')) {
+                if !matches!(d.toks[j].kind, super::super::text::Tk::Num { .. }) {
+                    d.mark(j);
+                }
+                j += 1;
+            }
+        }
+        // "in a plus (+) configuration", "an H-frame configuration": the layout's name.
+        if d.is(i, "configuration") || d.is(i, "layout") {
+            let mut j = i;
+            while j > 0 && (d.word(j - 1).is_some_and(|w| matches!(w, "plus" | "x" | "h" | "h-frame" | "cross" | "star" | "y" | "t")) || d.sym(j - 1, '(') || d.sym(j - 1, ')') || d.sym(j - 1, '+') || d.sym(j - 1, 'x')) {
+                j -= 1;
+                d.mark(j);
             }
         }
         // "centroid at the origin".
@@ -127,12 +155,32 @@ pub fn points(r: &mut Reader<'_>, e: usize, axis: Axis) -> Res<Vec<[f64; 2]>> {
             }
         }
     }
-    // "at X=20": a coordinate alone (the other in-plane one 0).
+    // "at X=20", "centered at Y=-30 mm … at Y=+30 mm", "at X = -24, -12, 0, 12, 24mm":
+    // coordinates (the other in-plane one 0, or the one given once).
     if out.is_empty() {
-        let cu = r.take_coord(e, u);
-        let cv = r.take_coord(e, v);
-        if cu.is_some() || cv.is_some() {
-            out.push([cu.unwrap_or(0.0), cv.unwrap_or(0.0)]);
+        let mut us = Vec::new();
+        while let Some(c) = r.take_coord(e, u) {
+            us.push(c);
+        }
+        let mut vs = Vec::new();
+        while let Some(c) = r.take_coord(e, v) {
+            vs.push(c);
+        }
+        match (us.len(), vs.len()) {
+            (0, 0) => {}
+            (_, 0 | 1) => {
+                let y = vs.first().copied().unwrap_or(0.0);
+                let us = if us.is_empty() { vec![0.0] } else { us };
+                out.extend(us.iter().map(|x| [*x, y]));
+            }
+            (0 | 1, _) => {
+                let x = us.first().copied().unwrap_or(0.0);
+                out.extend(vs.iter().map(|y| [x, *y]));
+            }
+            (a, b) if a == b => out.extend(us.iter().zip(&vs).map(|(x, y)| [*x, *y])),
+            _ => {
+                return Err(Refusal::new(r.quote_element(e), "its coordinates do not pair up into points"));
+            }
         }
     }
     // Coordinate lists "centered at X = -24, -12, 0, 12, 24mm".
@@ -162,6 +210,13 @@ pub fn corners(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64;
     let i = r.doc.dims[k].mm;
     r.used_dims[k] = true;
     let (x, y) = (size[0] / 2.0 - i, size[1] / 2.0 - i);
+    for (a, b) in r.sentences_of(e) {
+        for j in a..b {
+            if matches!(r.doc.word(j), Some("corner" | "edge" | "nearest" | "inset")) {
+                r.doc.mark(j);
+            }
+        }
+    }
     Some(vec![[-x, -y], [x, -y], [x, y], [-x, y]])
 }
 

@@ -91,6 +91,13 @@ fn beam(r: &mut Reader<'_>, t: usize, s: Section) -> Res<()> {
     } else {
         vec![[-a, 0.0], [a, 0.0], [a, h - tf], [y, h - tf], [y, h], [-y, h], [-y, h - tf], [-a, h - tf]]
     };
+    // The web's height and the flanges' faces, as a restatement may give them.
+    if s == Section::I {
+        r.known.extend([h - 2.0 * tf, h / 2.0 - tf]);
+    } else {
+        r.known.extend([h - tf]);
+        r.known_points.push([0.0, 0.0, h - tf]);
+    }
     let b = extrude(r, t, pts, len, axis);
     r.built[t] = Some(b);
     r.mark_element(t);
@@ -169,7 +176,8 @@ fn l_bracket(r: &mut Reader<'_>, t: usize) -> Res<()> {
         return Ok(());
     };
     // The pieces must be plain boxes given by their sizes (not coordinates of their own).
-    if !r.els[wl].ranges.is_empty() || !r.els[bs].ranges.is_empty() || r.els[bs].has_mod("plate") {
+    let plain = |r: &Reader<'_>, e: usize| r.els[e].ranges.is_empty() && r.els[e].coords.is_empty() && r.els[e].noun != "plate";
+    if !plain(r, wl) || !plain(r, bs) {
         r.mark_element(t);
         return Ok(());
     }

@@ -94,6 +94,12 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Edges {
     let round = matches!(&r.model.adds[bi].shape, Shape::Prism { profile: super::super::profile::Profile::Circle { .. }, .. });
     if has("vertical") {
         mark("vertical");
+        // "with rounded vertical corners" anywhere.
+        for i in 0..d.len() {
+            if d.is(i, "corner") && d.word(i.wrapping_sub(1)).is_some_and(|w| w == "vertical" || w == "rounded") {
+                d.mark_range(i.saturating_sub(2), i + 1);
+            }
+        }
         return Edges::Parallel(Axis::Z);
     }
     if has("long") {
@@ -142,6 +148,16 @@ fn shell(r: &mut Reader<'_>) -> Res<()> {
     }
     r.model.adds[bi].shell = Some(Shell { axis: Axis::Z, max: open_top, t });
     d.mark(at);
+    super::bodies::mark_words(r, &["hollow", "shelled", "shell"]);
+    // "at the neck opening".
+    for i in a..b {
+        if d.is(i, "opening") {
+            d.mark(i);
+            if d.word(i - 1).is_some_and(|w| super::super::lexicon::noun(w).is_some()) {
+                d.mark(i - 1);
+            }
+        }
+    }
     for i in 0..d.len() {
         let w = d.word(i).unwrap_or("");
         if matches!(w, "top" | "face" | "removed" | "open" | "open-top" | "inward" | "wall" | "opening" | "neck") && d.sent[i] <= s {

@@ -48,6 +48,22 @@ fn lengths(r: &Reader<'_>) -> Vec<f64> {
             }
         }
     }
+    // Steps between bodies' ends ("protruding 12mm above the gear face").
+    let spans: Vec<[f64; 2]> = r.built.iter().flatten().filter(|b| !b.cut).map(|b| b.span).collect();
+    for (i, a) in spans.iter().enumerate() {
+        for b in spans.iter().skip(i + 1) {
+            v.extend([(a[1] - b[1]).abs(), (a[0] - b[0]).abs()]);
+        }
+    }
+    // Overhangs: half the difference of two bodies' sizes ("extends 10mm past the wall on each side").
+    let sizes: Vec<[f64; 2]> = r.built.iter().flatten().filter_map(|b| b.size).collect();
+    for (i, a) in sizes.iter().enumerate() {
+        for b in sizes.iter().skip(i + 1) {
+            for k in 0..2 {
+                v.extend([(a[k] - b[k]).abs() / 2.0, (a[k] - b[k]).abs()]);
+            }
+        }
+    }
     // Distances from a copy to the edges of the part (an inset restated).
     for built in r.built.iter().flatten() {
         for p in &built.at {
@@ -57,6 +73,12 @@ fn lengths(r: &Reader<'_>) -> Vec<f64> {
     for (k, d) in r.doc.dims.iter().enumerate() {
         if r.used_dims[k] {
             v.push(d.mm);
+        }
+    }
+    // Stars' tip and root circles.
+    for b in r.model.adds.iter() {
+        if let super::super::solid::Shape::Prism { profile: super::super::profile::Profile::Star { tip, root, .. }, .. } = &b.shape {
+            v.extend([*tip, *root, 2.0 * tip, 2.0 * root]);
         }
     }
     // Polygons' width across flats and their sides.
@@ -95,12 +117,20 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
         if !r.used_dims[k] {
             let tol = if approx_near(r, dm.tok) { 0.02 } else { 0.005 };
             if !lens.iter().any(|c| close(dm.mm, *c, tol)) {
+                if std::env::var_os("SW_SYNTH_DEBUG").is_some() {
+                    eprintln!("unplaced length {} ({:?}); candidates {lens:?}", dm.mm, dm.role);
+                }
                 return Err(Refusal::new(r.quote_dim(k), "a length the part does not have, or one the synthesizer could not place"));
             }
             r.used_dims[k] = true;
         }
-        // Its number and its role and qualifier words are read.
+        // Its number and its role and qualifier words are read, and "on each side" after it.
         d.mark(dm.tok);
+        for i in dm.phrase.1..(dm.phrase.1 + 8).min(d.len()) {
+            if d.is(i, "side") && d.word(i - 1).is_some_and(|w| w == "each" || w == "both") {
+                d.mark_range(i - 2, i + 1);
+            }
+        }
         for i in dm.phrase.0..dm.phrase.1.min(d.len()) {
             if let Some(w) = d.word(i)
                 && (role_of(w).is_some() || QUALS.contains(&w) || is_filler(w) || matches!(w, "x" | "y" | "z"))
@@ -156,10 +186,12 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
         r.used_tuples[k] = true;
         d.mark_range(t.toks.0, t.toks.1);
     }
-    // Angles.
+    // Angles: used, or the same as one used ("the spokes at 0 and 180 degrees are …").
+    let used: Vec<f64> = r.used_angles.iter().filter_map(|i| if let Tk::Deg(a) = d.toks[*i].kind { Some(a) } else { None }).collect();
     for (i, t) in d.toks.iter().enumerate() {
-        if let Tk::Deg(_) = t.kind
+        if let Tk::Deg(a) = t.kind
             && !r.used_angles.contains(&i)
+            && !used.iter().any(|u| (u - a).abs() < 1e-9)
         {
             return Err(Refusal::new(d.quote(i, i), "an angle the synthesizer could not place"));
         }
@@ -180,7 +212,7 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                 if !all_read {
                     // A reference to a made thing ("through the plate") or a restating name.
                     let referenced = m.iter().all(|mi| r.mentions[*mi].prep.is_some() || r.mentions[*mi].definite);
-                    let same_noun_made = (0..r.els.len()).any(|o| o != e && r.done[o] && r.els[o].noun == r.els[e].noun);
+                    let same_noun_made = (0..r.els.len()).any(|o| o != e && r.done[o] && (r.els[o].noun == r.els[e].noun || r.els[o].has_mod(&r.els[e].noun)));
                     if referenced || same_noun_made || r.built.iter().flatten().count() > 0 && is_place_noun(&r.els[e].noun) {
                         r.mark_element(e);
                         continue;
@@ -190,8 +222,53 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
             }
         }
     }
+    // "the base at Z=0", "the top at Z=30": the part's bottom and top.
+    let pb = r.model.bounds();
+    for i in 0..d.len().saturating_sub(4) {
+        if matches!(d.word(i), Some("base" | "bottom" | "top")) && d.is(i + 1, "at") && d.axis_at(i + 2) == Some(super::super::solid::Axis::Z) {
+            if let Some(c) = d.coords.iter().find(|c| c.tok == i + 2) {
+                let z = if d.is(i, "top") { pb[1][2] } else { pb[0][2] };
+                if (c.v - z).abs() < 1e-6 {
+                    d.mark(i);
+                }
+            }
+        }
+    }
+    // "on top of the web", "sitting on top of the shaft": of a made thing.
+    for i in 0..d.len().saturating_sub(2) {
+        if d.is(i, "top") && d.is(i + 1, "of") && !d.is_used(i) {
+            let of_made = r.mentions.iter().any(|m| m.start <= i + 3 && m.head > i + 1 && m.head <= i + 5 && r.done[m.elem]);
+            if of_made {
+                d.mark_range(i, i + 2);
+            }
+        }
+    }
+    // "at the bottom", "on top": a body whose span is at the part's bottom or top says so.
+    let b = r.model.bounds();
+    for (e, built) in r.built.iter().enumerate() {
+        let Some(built) = built else { continue };
+        for (a, z) in r.sentences_of(e) {
+            for i in a..z {
+                let ok = match d.word(i) {
+                    Some("bottom" | "base") => (built.span[0] - b[0][2]).abs() < 1e-6,
+                    Some("top") => (built.span[1] - b[1][2]).abs() < 1e-6 || built.cut,
+                    _ => false,
+                };
+                if ok && !d.is_used(i) {
+                    d.mark(i);
+                }
+            }
+        }
+    }
+    for (i, t) in d.toks.iter().enumerate() {
+        if let Tk::Deg(_) = t.kind {
+            d.mark(i);
+        }
+    }
     // Words.
     let runs = d.unread_runs(|i| match &d.toks[i].kind {
+        // A qualifier naming a length with no number ("(inner diameter)").
+        Tk::Word(w) if QUALS.contains(&w.as_str()) && d.word(i + 1).is_some_and(|n| role_of(n).is_some() || matches!(n, "surface" | "face" | "dimension" | "size" | "edge")) => true,
         Tk::Word(w) => is_filler(w) || (role_of(w).is_some() && w != "side" && w != "sided") || matches!(w.as_str(), "x" | "y" | "z" | "xy" | "xz" | "yz" | "degree" | "mm"),
         Tk::Sym(_) => true,
         Tk::Num { unit: None, .. } => true,
@@ -205,5 +282,5 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
 
 /// Nouns that, said of a made part, name a place on it rather than a new body.
 fn is_place_noun(w: &str) -> bool {
-    matches!(w, "base" | "body" | "head" | "floor" | "wall" | "rim" | "section" | "seat" | "shoulder" | "neck" | "hub")
+    matches!(w, "base" | "body" | "head" | "floor" | "wall" | "rim" | "section" | "seat" | "shoulder" | "neck" | "hub" | "prong" | "ear" | "tip" | "leg")
 }
