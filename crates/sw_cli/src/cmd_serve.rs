@@ -109,9 +109,10 @@ pub(crate) struct ServeArgs {
     addr: SocketAddr,
     #[command(flatten)]
     queue: QueueArgs,
-    /// The browser app's files, served at / when the directory exists.
-    #[arg(long, default_value = "web")]
-    web: PathBuf,
+    /// The browser app's built files, served at / (default: web/dist of the checkout,
+    /// built by scripts/setup.sh --web).
+    #[arg(long, value_name = "DIR")]
+    web: Option<PathBuf>,
 }
 
 impl ServeArgs {
@@ -146,7 +147,7 @@ pub(crate) fn serve(a: ServeArgs) -> Result<u8, Failure> {
     config.workers = a.queue.workers;
     config.limits = a.queue.limits();
     config.runner = a.queue.runner();
-    config.web_dir = Some(a.web);
+    config.web_dir = a.web.or_else(sw_server::web::default_dir);
     // With JSON logs every stderr line is JSON: the address is the `serving` event's `addr`.
     config.listen_line = format == LogFormat::Text;
     runtime()?.block_on(sw_server::serve(config)).map_err(|e| Failure::input(e.to_string()))?;

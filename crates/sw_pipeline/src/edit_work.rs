@@ -45,6 +45,8 @@ pub(crate) struct Work {
     pub moved: Vec<String>,
     pub modified: Vec<String>,
     pub warnings: Vec<Warning>,
+    /// Generated parts placed in the package, with their meshes (see `parts`).
+    pub parts: Vec<crate::parts::Part>,
 }
 
 const FIT_GAP: f64 = 0.02;

@@ -9,7 +9,10 @@ use std::sync::{Arc, OnceLock};
 use std::time::Duration;
 
 use serde_json::{Value, json};
-use sw_forge::generate::{CodeWriter, ForgeOutcome, LlmWriter, LoopConfig, PartRequest, TemplateWriter, forge};
+use sw_forge::failure::Failure;
+use sw_forge::generate::{
+    Attempt, CodeWriter, ForgeOutcome, LlmWriter, LoopConfig, PartRequest, TemplateWriter, forge,
+};
 use sw_forge::library::AssetLibrary;
 use sw_forge::runner::{CadRunner, RunnerConfig};
 use sw_forge::store::{AssetId, AssetRecord, StoreError};
@@ -111,6 +114,20 @@ impl AssetForge {
 
     /// Reuses or makes the asset for `description` (blocking: seconds when generated).
     pub fn make(&self, description: &str, size_m: Option<[f64; 3]>) -> Result<Made, ForgeError> {
+        self.make_reporting(description, size_m, &|_| {})
+    }
+
+    /// [`Self::make`], telling `report` what happens as it happens: one JSON object per
+    /// step (`{"event": "progress", "message"}`) and per failed attempt (`{"event":
+    /// "failure", "attempt", "kind", "message"}`).
+    pub fn make_reporting(
+        &self,
+        description: &str,
+        size_m: Option<[f64; 3]>,
+        report: &(dyn Fn(Value) + Send + Sync),
+    ) -> Result<Made, ForgeError> {
+        let say = |m: &str| report(json!({ "event": "progress", "message": m }));
+        say("looking in the asset library for a part that means the same and fits the size");
         let library = self.library()?;
         // Another process may have stored it since this one synced.
         if let Err(e) = library.sync_if_older(SYNC_AGE) {
@@ -132,12 +149,16 @@ impl AssetForge {
             Ok(None) => {}
             Err(e) => return Err(ForgeError::Unavailable(e.to_string())),
         }
+        say("none fits: generating it (starting the CAD runner when it is cold)");
         let runner = self.runner()?;
-        let writer = self.writer();
+        let writer = Reporting { inner: self.writer(), report, reported: std::sync::atomic::AtomicUsize::new(0) };
         let request = PartRequest { description: description.to_string(), size_m };
         let t = std::time::Instant::now();
-        match forge(runner, writer.as_ref(), &request, LoopConfig::default()) {
+        let outcome = forge(runner, &writer, &request, LoopConfig::default());
+        writer.failures_since(outcome.attempts());
+        match outcome {
             ForgeOutcome::Made(part) => {
+                say(&format!("made and validated in {} attempt(s); storing and indexing it", part.attempts.len()));
                 let (stl, record) = part.stored(description, description, json!({}));
                 let record = library.add(&stl, record).map_err(|e| ForgeError::Unavailable(e.to_string()))?;
                 let meta = json!({
@@ -167,7 +188,52 @@ impl AssetForge {
             }
         }
     }
+}
 
+/// A code writer that reports each attempt and each failure of the one it wraps.
+struct Reporting<'a> {
+    inner: Arc<dyn CodeWriter>,
+    report: &'a (dyn Fn(Value) + Send + Sync),
+    /// Failed attempts already reported.
+    reported: std::sync::atomic::AtomicUsize,
+}
+
+impl Reporting<'_> {
+    /// Reports the failures among `attempts` not reported yet.
+    fn failures_since(&self, attempts: &[Attempt]) {
+        use std::sync::atomic::Ordering;
+        let from = self.reported.swap(attempts.len(), Ordering::Relaxed);
+        for (i, a) in attempts.iter().enumerate().skip(from) {
+            if let Some(f) = &a.failure {
+                (self.report)(json!({
+                    "event": "failure", "attempt": i + 1, "kind": f.kind.name(),
+                    "message": f.message.lines().next().unwrap_or(""),
+                }));
+            }
+        }
+    }
+}
+
+impl CodeWriter for Reporting<'_> {
+    fn name(&self) -> String {
+        self.inner.name()
+    }
+
+    fn write(&self, request: &PartRequest, history: &[Attempt]) -> Result<String, Failure> {
+        self.failures_since(history);
+        (self.report)(json!({
+            "event": "progress",
+            "message": format!("attempt {}: the {} writer writes CadQuery; the runner builds it and the validator checks it", history.len() + 1, self.inner.name()),
+        }));
+        self.inner.write(request, history)
+    }
+
+    fn take_calls(&self) -> Vec<sw_llm::LlmCall> {
+        self.inner.take_calls()
+    }
+}
+
+impl AssetForge {
     /// L2 for one generation job whose CAD stage has a model: the generation loop with the
     /// model as writer, in the shared runner, reusing and keeping assets in the shared
     /// library (a fresh source per job, so each job's report holds its own calls).

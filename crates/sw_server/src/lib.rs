@@ -8,15 +8,21 @@
 
 mod auth;
 mod body;
+mod compress;
+mod edit_jobs;
 mod error;
 pub mod forge;
 mod metrics;
 mod openapi;
 mod routes_auth;
+mod routes_edits;
 mod routes_jobs;
 mod routes_misc;
+mod routes_refine;
 mod routes_scenes;
 mod scratch;
+mod thumbnail;
+pub mod web;
 mod worker;
 mod ws;
 mod zip;
@@ -55,7 +61,8 @@ pub struct ServerConfig {
     pub runner: RunnerConfig,
     /// Access tokens live this long, s.
     pub token_ttl_s: i64,
-    /// The browser app's files, served at `/` when the directory exists.
+    /// The browser app's built files (`web/dist`), served at `/` when the directory
+    /// holds an `index.html`; without them `/` says how to build the app.
     pub web_dir: Option<PathBuf>,
     /// Print `listening on http://ADDR` on stderr, for scripts (off when every stderr line
     /// must be a JSON log record; the `serving` event carries `addr` too).
@@ -72,7 +79,7 @@ impl ServerConfig {
             limits: QueueLimits::default(),
             runner: RunnerConfig::default(),
             token_ttl_s: 3600,
-            web_dir: Some(PathBuf::from("web")),
+            web_dir: web::default_dir(),
             listen_line: true,
         }
     }
@@ -96,6 +103,8 @@ pub struct AppState {
     pub web_dir: Option<PathBuf>,
     /// Makes and serves the assets `POST /api/assets` asks for.
     pub forge: Arc<forge::AssetForge>,
+    /// Compressed bodies of immutable answers (scene files), shared by every request.
+    pub gzip: Arc<compress::GzipCache>,
 }
 
 /// A problem starting the service.
@@ -167,6 +176,7 @@ impl AppState {
             metrics: Arc::new(metrics::Counters::default()),
             web_dir: None,
             forge,
+            gzip: Arc::new(compress::GzipCache::default()),
             wake: Arc::new(tokio::sync::Notify::new()),
         })
     }
@@ -180,8 +190,10 @@ pub fn router(state: AppState) -> Router {
         .route("/api/openapi.json", get(openapi::document))
         .route("/api/auth/register", post(routes_auth::register))
         .route("/api/auth/login", post(routes_auth::login))
-        .route("/api/auth/keys", post(routes_auth::create_key))
+        .route("/api/auth/keys", post(routes_auth::create_key).get(routes_auth::list_keys))
         .route("/api/me", get(routes_auth::me))
+        .route("/api/options", get(routes_misc::options))
+        .route("/api/refine", post(routes_refine::refine))
         .route("/api/jobs", post(routes_jobs::create).get(routes_jobs::list))
         .route("/api/jobs/{id}", get(routes_jobs::show).delete(routes_jobs::cancel))
         .route("/api/jobs/{id}/events", get(ws::events))
@@ -189,13 +201,16 @@ pub fn router(state: AppState) -> Router {
         .route("/api/scenes/{id}", get(routes_scenes::show))
         .route("/api/scenes/{id}/files/{*path}", get(routes_scenes::file))
         .route("/api/scenes/{id}/package.zip", get(routes_scenes::package_zip))
-        .route("/api/scenes/{id}/edits", post(routes_scenes::edit))
+        .route("/api/scenes/{id}/edits", post(routes_edits::edit))
+        .route("/api/scenes/{id}/versions", get(routes_edits::versions))
+        .route("/api/scenes/{id}/thumbnail.png", get(thumbnail::thumbnail))
         .route("/api/assets", get(routes_misc::assets).post(routes_misc::create_asset))
         .route("/api/assets/{id}", get(routes_misc::asset))
         .route("/api/assets/{id}/mesh.stl", get(routes_misc::asset_mesh))
         .route("/api/robots", get(routes_misc::robots))
         .route("/api/admin/jobs", get(routes_jobs::admin_overview))
         .fallback(routes_misc::not_found)
+        .layer(axum::middleware::from_fn_with_state(Arc::clone(&state.gzip), compress::layer))
         .layer(axum::middleware::from_fn_with_state(state.clone(), metrics::track))
         .layer(DefaultBodyLimit::max(BODY_LIMIT))
         .with_state(state)
@@ -208,7 +223,11 @@ pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
     let mut state = AppState::new(store, blobs, config.limits, config.runner.clone(), config.token_ttl_s)
         .await?
         .with_asset_store(forge::store_location(&config.data_dir));
-    state.web_dir = config.web_dir.clone().filter(|d| d.is_dir());
+    state.web_dir = config.web_dir.clone().filter(|d| d.join("index.html").is_file());
+    match &state.web_dir {
+        Some(d) => tracing::info!(dir = %d.display(), "serving the web app"),
+        None => tracing::warn!("the web app is not built (scripts/setup.sh --web); / says how"),
+    }
     let recovered = state.store.recover().await?;
     if !recovered.requeued.is_empty() || !recovered.failed.is_empty() {
         tracing::warn!(requeued = ?recovered.requeued, failed = ?recovered.failed, "recovered jobs of lost runners");

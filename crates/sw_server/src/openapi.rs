@@ -34,9 +34,12 @@ pub fn spec() -> Value {
         "seed": { "type": "integer", "minimum": 0 },
         "robots": { "type": "array", "items": { "type": "string" }, "description": "registry robots instead of the prompt's" },
         "options": { "type": "object", "additionalProperties": false, "properties": {
-            "verify": { "type": "boolean", "default": true }, "rules": { "type": "string" } } } } });
+            "verify": { "type": "boolean", "default": true }, "rules": { "type": "string" },
+            "anomaly": { "type": "object", "required": ["kinds", "rate"], "properties": {
+                "kinds": { "type": "array", "minItems": 1, "items": { "enum": ["overlap", "scale", "misplacement", "floating", "rule_violation"] } },
+                "rate": { "type": "number", "exclusiveMinimum": 0, "maximum": 1 } } } } } } });
     let jobs_auth = ["400", "401", "404", "422"];
-    json!({
+    let mut doc = json!({
         "openapi": "3.1.0",
         "info": { "title": "scenewright", "version": env!("CARGO_PKG_VERSION"),
                   "description": "Plain-English descriptions in, verified MuJoCo scenes out. Another user's job, scene or asset answers 404 exactly as a missing one." },
@@ -93,7 +96,50 @@ pub fn spec() -> Value {
                 (format!("E{c}"), json!({ "description": c, "content": { "application/json": { "schema": { "$ref": "#/components/schemas/Error" } } } }))
             }).collect()),
         },
-    })
+    });
+    app_paths(&mut doc);
+    doc
+}
+
+/// The routes the browser app added: refinement, options, key listing, versions,
+/// thumbnails, structured edits, search by meaning and the forge's progress stream.
+fn app_paths(doc: &mut Value) {
+    let auth = ["401", "404"];
+    let pos = json!({ "type": "array", "items": { "type": "number" }, "minItems": 2, "maxItems": 2, "description": "x, y in the room, metres" });
+    let edit = json!({ "oneOf": [
+        { "type": "object", "required": ["command"], "properties": { "command": { "type": "string", "maxLength": crate::PROMPT_LIMIT } } },
+        { "type": "object", "required": ["move"], "properties": { "move": { "type": "object", "required": ["object", "pos"], "properties": {
+            "object": { "type": "string" }, "pos": pos, "yaw_deg": { "type": "number" } } } } },
+        { "type": "object", "required": ["place"], "properties": { "place": { "type": "object", "required": ["asset", "pos"], "properties": {
+            "asset": { "type": "string", "description": "catalog:<category> or one of the caller's asset ids" }, "pos": pos, "yaw_deg": { "type": "number" } } } } } ] });
+    let refine = json!({ "type": "object", "properties": { "prompt": { "type": "string" }, "turns": { "type": "array", "items": {
+        "type": "object", "required": ["question", "answer"], "properties": { "question": { "type": "string" }, "answer": { "type": "string" } } } } } });
+    let paths = &mut doc["paths"];
+    paths["/api/auth/keys"]["get"] =
+        op("The caller's API keys (id, name, created; never the key)", true, None, ("200", "{keys}"), &["401"]);
+    paths["/api/options"] = json!({ "get": op("What a job may ask for: rules profiles, anomaly kinds", true, None, ("200", "{rules_profiles, anomaly_kinds}"), &["401"]) });
+    paths["/api/refine"] = json!({ "post": op("One turn of the refinement chat (send the transcript so far): the next question, or the final prompt", true, Some(refine),
+        ("200", "{done, question, prompt, asked_by, turns, summary?, warnings}"), &["400", "401", "413", "422"]) });
+    paths["/api/scenes/{id}/edits"]["post"] = op(
+        "Queue an edit: a sentence, an object moved or turned to a pose, or a library part placed at a point; the job re-solves around it, keeps it in the room, re-verifies and makes the next version or fails with the reason",
+        true,
+        Some(edit),
+        ("202", "{job_id, state, scene_id}"),
+        &["400", "401", "404", "413", "422", "429"],
+    );
+    paths["/api/scenes/{id}/versions"] = json!({ "parameters": [id_param("id")],
+        "get": op("Every version of the scene's lineage, oldest first, with the edit that made each", true, None, ("200", "{scene_id, versions}"), &auth) });
+    paths["/api/scenes/{id}/thumbnail.png"] = json!({ "parameters": [id_param("id")],
+        "get": op("A 480 × 300 picture of the scene (drawn once, then kept)", true, None, ("200", "image/png"), &auth) });
+    paths["/api/assets"]["get"] = op(
+        "Catalog categories and the caller's assets matching ?q= by words, and (similar) the caller's generated parts nearest in meaning, with scores",
+        true,
+        None,
+        ("200", "{catalog, mine, similar, note}"),
+        &["400", "401"],
+    );
+    paths["/api/assets"]["post"]["parameters"] = json!([{ "name": "stream", "in": "query", "required": false, "schema": { "enum": [1] },
+        "description": "1: answer application/x-ndjson — progress and each failed attempt with its failure kind, then the asset or the error" }]);
 }
 
 pub async fn document() -> Json<Value> {

@@ -93,6 +93,15 @@ pub async fn create_key(
     Ok((StatusCode::CREATED, Json(json!({ "id": id, "name": k.name, "key": key }))))
 }
 
+/// `GET /api/auth/keys` → the caller's keys: id, name, created (the keys themselves were
+/// shown once, when made).
+pub async fn list_keys(State(s): State<AppState>, caller: Caller) -> ApiResult<Json<Value>> {
+    let keys = s.store.api_keys_of(&caller.user.id).await?;
+    let keys: Vec<Value> =
+        keys.into_iter().map(|(id, name, at)| json!({ "id": id, "name": name, "created_at": at })).collect();
+    Ok(Json(json!({ "keys": keys })))
+}
+
 /// `GET /api/me` → the caller.
 pub async fn me(caller: Caller) -> Json<Value> {
     Json(json!(caller.user))

@@ -36,6 +36,9 @@ pub struct JobOptions {
     /// An industrial rules profile instead of the room kind's.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rules: Option<String>,
+    /// Labelled anomalies to inject (as `--anomaly KINDS --anomaly-rate R`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub anomaly: Option<sw_plan::AnomalyRequest>,
 }
 
 /// Checks a prompt or command: not blank, at most [`crate::PROMPT_LIMIT`] bytes.
@@ -76,6 +79,14 @@ pub async fn create(
         return Err(ApiError::new(
             StatusCode::UNPROCESSABLE_ENTITY,
             format!("unknown rules profile '{p}' (known: {})", sw_layout_profiles().join(", ")),
+        ));
+    }
+    if let Some(a) = &opts.anomaly
+        && (a.kinds.is_empty() || !(a.rate > 0.0 && a.rate <= 1.0))
+    {
+        return Err(ApiError::new(
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "anomaly: at least one kind, and a rate above 0 and at most 1",
         ));
     }
     if let Some(robots) = &r.robots {

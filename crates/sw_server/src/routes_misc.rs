@@ -78,13 +78,51 @@ fn match_category(description: &str) -> Option<&'static sw_catalog::Category> {
     best.map(|b| b.0)
 }
 
-/// `GET /api/assets?q=` → catalog categories and the caller's own assets that match.
+/// The caller's generated assets nearest in meaning to `q` (the asset library's
+/// embedder), best first, each with its `score`; or why that search is unavailable.
+async fn similar(s: &AppState, user_id: &str, q: &str) -> Result<Vec<Value>, String> {
+    let forge = Arc::clone(&s.forge);
+    let query = q.to_string();
+    let hits = tokio::task::spawn_blocking(move || -> Result<Vec<(String, f32)>, String> {
+        let library = forge.library().map_err(|e| e.to_string())?;
+        let hits = library.search(&query, 64).map_err(|e| e.to_string())?;
+        Ok(hits.into_iter().map(|h| (h.id.to_string(), h.score)).collect())
+    })
+    .await
+    .map_err(|e| e.to_string())??;
+    let mine = s.store.assets_of(user_id, "").await.map_err(|e| e.to_string())?;
+    let mut out: Vec<(f32, Value)> = mine
+        .iter()
+        .filter_map(|a| {
+            let stored = a.meta.get("asset_id").and_then(Value::as_str)?;
+            let score = hits.iter().find(|h| h.0 == stored)?.1;
+            let mut v = json!(a);
+            v["score"] = json!(score);
+            Some((score, v))
+        })
+        .collect();
+    out.sort_by(|a, b| b.0.total_cmp(&a.0));
+    Ok(out.into_iter().take(20).map(|x| x.1).collect())
+}
+
+/// `GET /api/assets?q=` → catalog categories and the caller's own assets whose words
+/// match, and (`similar`) the caller's generated parts nearest in meaning.
 pub async fn assets(State(s): State<AppState>, caller: Caller, Query(q): Query<AssetQuery>) -> ApiResult<Json<Value>> {
     if q.q.len() > 1024 {
         return Err(ApiError::bad_request("the query is longer than 1024 bytes"));
     }
     let mine = s.store.assets_of(&caller.user.id, &q.q).await?;
-    Ok(Json(json!({ "catalog": catalog_matches(&q.q), "mine": mine })))
+    let (similar, note) = if q.q.trim().is_empty() {
+        (Vec::new(), None)
+    } else {
+        match similar(&s, &caller.user.id, q.q.trim()).await {
+            Ok(v) => (v, None),
+            Err(e) => {
+                (Vec::new(), Some(format!("search by meaning is unavailable ({e}); parts are matched by their words")))
+            }
+        }
+    };
+    Ok(Json(json!({ "catalog": catalog_matches(&q.q), "mine": mine, "similar": similar, "note": note })))
 }
 
 #[derive(Debug, Deserialize)]
@@ -96,32 +134,30 @@ pub struct AssetRequest {
     size_m: Option<[f64; 3]>,
 }
 
-/// `POST /api/assets {description, size_m?}` → 201 the asset. A catalog category the
-/// offline planner reads the description as is recorded as such; anything else goes to
-/// the asset forge: reused from the asset library by meaning (and size), else generated
-/// (the CAD stage's model, or the offline template synthesizer for dimensioned parts),
-/// validated, stored and indexed. 422 when it cannot be made, with why.
-pub async fn create_asset(
-    State(s): State<AppState>,
-    caller: Caller,
-    Body(r): Body<AssetRequest>,
-) -> ApiResult<(StatusCode, Json<Value>)> {
-    crate::routes_jobs::check_text("description", &r.description)?;
-    if r.description.len() > 4096 {
-        return Err(ApiError::new(StatusCode::PAYLOAD_TOO_LARGE, "an asset description is at most 4096 bytes"));
-    }
-    if let Some(size) = r.size_m
-        && !size.iter().all(|v| v.is_finite() && (0.0005..=50.0).contains(v))
-    {
-        return Err(ApiError::bad_request("size_m: each side must be between 0.0005 and 50 metres"));
-    }
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CreateQuery {
+    /// `1`: answer with the forge's progress as it comes, one JSON object per line.
+    #[serde(default)]
+    stream: Option<u8>,
+}
+
+type Report = Arc<dyn Fn(Value) + Send + Sync>;
+
+/// The asset for a request: a catalog category the offline planner reads the description
+/// as, else the asset forge's (reused by meaning and size, or generated, validated,
+/// stored and indexed).
+async fn make_asset(s: &AppState, user_id: &str, r: AssetRequest, report: Report) -> ApiResult<Value> {
     let category = match_category(&r.description).map(|c| c.name);
     let meta = match category.and_then(sw_catalog::find) {
-        Some(c) => json!({ "source": "catalog", "size": c.default_size(), "movable": c.movable, "tags": c.tags }),
+        Some(c) => {
+            report(json!({ "event": "progress", "message": format!("a catalog category: {}", c.display) }));
+            json!({ "source": "catalog", "size": c.default_size(), "movable": c.movable, "tags": c.tags })
+        }
         None => {
             let forge = Arc::clone(&s.forge);
             let (description, size) = (r.description.trim().to_string(), r.size_m);
-            let work = tokio::task::spawn_blocking(move || forge.make(&description, size));
+            let work = tokio::task::spawn_blocking(move || forge.make_reporting(&description, size, &*report));
             let made = match tokio::time::timeout(crate::forge::ASSET_TIMEOUT, work).await {
                 Ok(Ok(made)) => made,
                 Ok(Err(e)) => return Err(ApiError::internal(format!("the asset forge stopped: {e}"))),
@@ -144,8 +180,68 @@ pub async fn create_asset(
             }
         }
     };
-    let a = s.store.create_asset(&caller.user.id, r.description.trim(), category, &meta).await?;
-    Ok((StatusCode::CREATED, Json(json!(a))))
+    let a = s.store.create_asset(user_id, r.description.trim(), category, &meta).await?;
+    Ok(json!(a))
+}
+
+/// `POST /api/assets {description, size_m?}` → 201 the asset. A catalog category the
+/// offline planner reads the description as is recorded as such; anything else goes to
+/// the asset forge: reused from the asset library by meaning (and size), else generated
+/// (the CAD stage's model, or the offline template synthesizer for dimensioned parts),
+/// validated, stored and indexed. 422 when it cannot be made, with why. With `?stream=1`
+/// the answer is `application/x-ndjson`: progress and failed attempts (with their failure
+/// kinds) as they happen, then `{"event": "asset", "asset"}` or `{"event": "error",
+/// "status", "error", "kinds"}`.
+pub async fn create_asset(
+    State(s): State<AppState>,
+    caller: Caller,
+    Query(q): Query<CreateQuery>,
+    Body(r): Body<AssetRequest>,
+) -> ApiResult<Response> {
+    crate::routes_jobs::check_text("description", &r.description)?;
+    if r.description.len() > 4096 {
+        return Err(ApiError::new(StatusCode::PAYLOAD_TOO_LARGE, "an asset description is at most 4096 bytes"));
+    }
+    if let Some(size) = r.size_m
+        && !size.iter().all(|v| v.is_finite() && (0.0005..=50.0).contains(v))
+    {
+        return Err(ApiError::bad_request("size_m: each side must be between 0.0005 and 50 metres"));
+    }
+    if q.stream != Some(1) {
+        let a = make_asset(&s, &caller.user.id, r, Arc::new(|_| {})).await?;
+        return Ok((StatusCode::CREATED, Json(a)).into_response());
+    }
+    let (tx, rx) = tokio::sync::mpsc::unbounded_channel::<Value>();
+    let kinds = Arc::new(std::sync::Mutex::new(Vec::<String>::new()));
+    let report: Report = {
+        let (tx, kinds) = (tx.clone(), Arc::clone(&kinds));
+        Arc::new(move |v: Value| {
+            if let (Some(k), Ok(mut all)) = (v.get("kind").and_then(Value::as_str), kinds.lock()) {
+                all.push(k.to_string());
+            }
+            let _ = tx.send(v);
+        })
+    };
+    let user = caller.user.id.clone();
+    tokio::spawn(async move {
+        let last = match make_asset(&s, &user, r, report).await {
+            Ok(a) => json!({ "event": "asset", "asset": a }),
+            Err(e) => {
+                let kinds = kinds.lock().map(|k| k.clone()).unwrap_or_default();
+                json!({ "event": "error", "status": e.status.as_u16(), "error": e.message, "kinds": kinds })
+            }
+        };
+        let _ = tx.send(last);
+    });
+    let lines = futures_util::stream::unfold(rx, |mut rx| async move {
+        let v = rx.recv().await?;
+        Some((Ok::<_, std::convert::Infallible>(axum::body::Bytes::from(format!("{v}\n"))), rx))
+    });
+    Ok((
+        [(header::CONTENT_TYPE, "application/x-ndjson"), (header::CACHE_CONTROL, "no-store")],
+        axum::body::Body::from_stream(lines),
+    )
+        .into_response())
 }
 
 /// `GET /api/assets/{id}` → one of the caller's assets.
@@ -176,32 +272,28 @@ pub async fn asset_mesh(State(s): State<AppState>, caller: Caller, Path(id): Pat
     Ok(([(header::CONTENT_TYPE, "model/stl")], mesh).into_response())
 }
 
-/// Anything else: the web app's files when there is one, else a JSON 404.
-pub async fn not_found(State(s): State<AppState>, uri: Uri) -> Response {
+/// Anything else: the web app's files (and `index.html` for its routes) when it is built,
+/// a page saying how to build it when not, and a JSON 404 under `/api/`.
+pub async fn not_found(State(s): State<AppState>, uri: Uri, headers: axum::http::HeaderMap) -> Response {
     let path = uri.path();
-    if let Some(web) = s.web_dir.as_ref().filter(|_| !path.starts_with("/api/"))
-        && let Some(r) = static_file(web, path).await
-    {
-        return r;
+    if !path.starts_with("/api/") {
+        match s.web_dir.as_ref() {
+            Some(web) => {
+                if let Some(r) = crate::web::file(web, path, &headers).await {
+                    return r;
+                }
+            }
+            None if !path.rsplit('/').next().unwrap_or("").contains('.') => return crate::web::not_built(),
+            None => {}
+        }
     }
     ApiError::new(StatusCode::NOT_FOUND, format!("no route for {path}")).into_response()
 }
 
-async fn static_file(web: &std::path::Path, path: &str) -> Option<Response> {
-    let rel = path.trim_start_matches('/');
-    let rel = if rel.is_empty() || rel.ends_with('/') { format!("{rel}index.html") } else { rel.to_string() };
-    sw_store::check_key(&rel).ok()?;
-    let file = web.join(&rel);
-    let data = tokio::fs::read(&file).await.ok()?;
-    let ct = match rel.rsplit('.').next().unwrap_or("") {
-        "html" => "text/html; charset=utf-8",
-        "js" | "mjs" => "text/javascript",
-        "css" => "text/css",
-        "json" => "application/json",
-        "wasm" => "application/wasm",
-        "svg" => "image/svg+xml",
-        "png" => "image/png",
-        _ => "application/octet-stream",
-    };
-    Some(([(header::CONTENT_TYPE, ct)], data).into_response())
+/// `GET /api/options` → what a job may ask for: rules profiles and anomaly kinds.
+pub async fn options(_caller: Caller) -> Json<Value> {
+    Json(json!({
+        "rules_profiles": sw_layout::rules::profile_names(),
+        "anomaly_kinds": ["overlap", "scale", "misplacement", "floating", "rule_violation"],
+    }))
 }

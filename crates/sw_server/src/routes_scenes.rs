@@ -1,31 +1,33 @@
-//! Scenes: list, metadata with report and edit history, files, the package as a zip, edits.
+//! Scenes: list, metadata with report and edit history, files, the package as a zip.
+//! A scene never changes (an edit makes a new one), so its files are sent with an ETag and
+//! cached by the browser for a year.
 
 use axum::Json;
 use axum::extract::{Path, State};
-use axum::http::{StatusCode, header};
+use axum::http::{HeaderMap, StatusCode, header};
 use axum::response::{IntoResponse, Response};
-use serde::Deserialize;
 use serde_json::{Value, json};
-use sw_store::{JobKind, NewJob, Scene, check_key, is_id};
+use sw_store::{Scene, check_key, is_id};
 
 use crate::AppState;
 use crate::auth::Caller;
-use crate::body::Body;
 use crate::error::{ApiError, ApiResult};
-use crate::routes_jobs::check_text;
 
 /// The caller's scene, or 404 (also for another user's scene).
-async fn owned_scene(s: &AppState, caller: &Caller, id: &str) -> ApiResult<Scene> {
+pub(crate) async fn owned_scene(s: &AppState, caller: &Caller, id: &str) -> ApiResult<Scene> {
     if !is_id(id) {
         return Err(ApiError::not_found("scene"));
     }
     s.store.scene_of(id, &caller.user.id).await?.ok_or_else(|| ApiError::not_found("scene"))
 }
 
+/// A scene in lists: `prompt` is what its job was asked (an edit's command for a later
+/// version), `scene_prompt` the description the scene was generated from.
 fn summary(sc: &Scene) -> Value {
     json!({
         "id": sc.id, "job_id": sc.job_id, "parent_id": sc.parent_id, "version": sc.version,
-        "prompt": sc.prompt, "status": sc.status, "created_at": sc.created_at,
+        "prompt": sc.prompt, "scene_prompt": sc.report.get("prompt").and_then(Value::as_str).unwrap_or(&sc.prompt),
+        "status": sc.status, "created_at": sc.created_at,
     })
 }
 
@@ -57,6 +59,7 @@ fn content_type(path: &str) -> &'static str {
         "json" => "application/json",
         "png" => "image/png",
         "obj" | "mtl" | "urdf" => "text/plain; charset=utf-8",
+        "stl" => "model/stl",
         _ => "application/octet-stream",
     }
 }
@@ -66,17 +69,24 @@ pub async fn file(
     State(s): State<AppState>,
     caller: Caller,
     Path((id, path)): Path<(String, String)>,
+    headers: HeaderMap,
 ) -> ApiResult<Response> {
     check_path(&path)?;
     let sc = owned_scene(&s, &caller, &id).await?;
     if !sc.files.iter().any(|f| f == &path) {
         return Err(ApiError::not_found("file in this scene"));
     }
+    // The scene id and path name the bytes for good: no hash of the content is needed.
+    let etag = format!("\"{}/{}\"", sc.id, path.replace('"', ""));
+    let cache = (header::CACHE_CONTROL, "private, max-age=31536000, immutable".to_string());
+    if headers.get(header::IF_NONE_MATCH).and_then(|v| v.to_str().ok()) == Some(etag.as_str()) {
+        return Ok((StatusCode::NOT_MODIFIED, [cache, (header::ETAG, etag)]).into_response());
+    }
     let key = format!("scenes/{}/{path}", sc.id);
     let blobs = s.blobs.clone();
     let data = tokio::task::spawn_blocking(move || blobs.get(&key)).await.map_err(ApiError::internal)??;
     let data = data.ok_or_else(|| ApiError::internal(format!("scene {} lost its file {path}", sc.id)))?;
-    Ok(([(header::CONTENT_TYPE, content_type(&path))], data).into_response())
+    Ok(([(header::CONTENT_TYPE, content_type(&path).to_string()), cache, (header::ETAG, etag)], data).into_response())
 }
 
 /// `GET /api/scenes/{id}/package.zip` → the package as a zip (stored, not compressed).
@@ -100,34 +110,4 @@ pub async fn package_zip(State(s): State<AppState>, caller: Caller, Path(id): Pa
     let disposition = format!("attachment; filename=\"scene_{}.zip\"", sc.id);
     Ok(([(header::CONTENT_TYPE, "application/zip".to_string()), (header::CONTENT_DISPOSITION, disposition)], zip)
         .into_response())
-}
-
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct EditRequest {
-    command: String,
-}
-
-/// `POST /api/scenes/{id}/edits {command}` → 202 `{job_id}`: a job that makes the next version.
-pub async fn edit(
-    State(s): State<AppState>,
-    caller: Caller,
-    Path(id): Path<String>,
-    Body(r): Body<EditRequest>,
-) -> ApiResult<(StatusCode, Json<Value>)> {
-    check_text("command", &r.command)?;
-    let sc = owned_scene(&s, &caller, &id).await?;
-    let new = NewJob {
-        user_id: caller.user.id.clone(),
-        kind: JobKind::Edit,
-        prompt: r.command,
-        seed: 0,
-        options: json!({}),
-        parent_scene_id: Some(sc.id.clone()),
-        timeout_ms: s.runner.job_timeout_ms,
-        max_attempts: s.runner.max_attempts,
-    };
-    let job = s.store.enqueue(&new, s.limits).await?;
-    s.wake.notify_one();
-    Ok((StatusCode::ACCEPTED, Json(json!({ "job_id": job.id, "state": job.state, "scene_id": sc.id }))))
 }

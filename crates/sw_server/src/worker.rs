@@ -330,8 +330,12 @@ async fn run_pipeline(
                 // model when one is configured (as `scenewright edit`).
                 let client = llm.filter(|c| c.endpoint(LlmStage::Edit).is_some()).map(sw_llm::Client::new);
                 let reader = if client.is_some() { EditReader::GrammarThenLlm } else { EditReader::Grammar };
-                let o = sw_pipeline::edit_package(&out, &job.prompt, reader, client.as_ref(), &mut on_event)
-                    .map_err(describe)?;
+                // A structured edit from the viewer (a move, a placed part), or a sentence.
+                let o = match crate::edit_jobs::spec(&job.options) {
+                    Some(spec) => crate::edit_jobs::run(&out, spec?, &job.prompt, &forge, &mut on_event),
+                    None => sw_pipeline::edit_package(&out, &job.prompt, reader, client.as_ref(), &mut on_event),
+                }
+                .map_err(describe)?;
                 let record = serde_json::to_value(&o.record).unwrap_or(Value::Null);
                 Ok(Made { report: o.report, timings: o.timings, dir: o.dir, edit: Some(record) })
             }
@@ -378,7 +382,7 @@ fn options(o: &Value, seed: u64) -> Options {
         verify: o["verify"].as_bool().unwrap_or(true),
         robots: o["robots"].as_array().map(|a| a.iter().filter_map(|x| x.as_str().map(str::to_string)).collect()),
         rules_profile: o["rules"].as_str().map(str::to_string),
-        anomaly: None,
+        anomaly: o.get("anomaly").and_then(|a| serde_json::from_value(a.clone()).ok()),
         cancel: None,
         physics: o["physics"].as_str().and_then(sw_pipeline::PhysicsTarget::parse).unwrap_or_default(),
     }

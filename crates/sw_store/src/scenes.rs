@@ -25,6 +25,8 @@ pub struct Scene {
 }
 
 type SceneRow = (String, String, String, Option<String>, i64, String, String, String, String, i64);
+/// A scene row and the command of the edit that made it.
+type VersionRow = (String, String, String, Option<String>, i64, String, String, String, String, i64, Option<String>);
 
 fn scene(r: SceneRow) -> Result<Scene> {
     Ok(Scene {
@@ -221,6 +223,45 @@ impl Store {
         .fetch_all(&self.pool)
         .await?;
         rows.into_iter().map(scene).collect()
+    }
+
+    /// Every version in a scene's lineage (its first version, every edit of it and of its
+    /// edits, branches included), oldest first, each with the command that made it (none
+    /// for the first); empty when `user_id` does not own the scene.
+    pub async fn scene_versions(&self, id: &str, user_id: &str) -> Result<Vec<(Scene, Option<String>)>> {
+        // Up to the first version (each step is one owned row; lineages are short).
+        let Some(mut first) = self.scene_of(id, user_id).await? else { return Ok(Vec::new()) };
+        let mut seen = std::collections::BTreeSet::new();
+        while let Some(parent) = first.parent_id.clone() {
+            if !seen.insert(parent.clone()) {
+                return Err(StoreError::Corrupt(format!("scene {parent} is its own ancestor")));
+            }
+            match self.scene_of(&parent, user_id).await? {
+                Some(p) => first = p,
+                None => break,
+            }
+        }
+        let rows: Vec<VersionRow> =
+            sqlx::query_as(
+                "WITH RECURSIVE lineage(id) AS (
+                     SELECT id FROM scenes WHERE id = $1 AND user_id = $2
+                     UNION ALL
+                     SELECT s.id FROM scenes s JOIN lineage l ON s.parent_id = l.id WHERE s.user_id = $3)
+                 SELECT s.id, s.user_id, s.job_id, s.parent_id, s.version, s.prompt, s.status, s.report, s.files, s.created_at,
+                        (SELECT e.command FROM edits e WHERE e.new_scene_id = s.id ORDER BY e.created_at LIMIT 1)
+                 FROM scenes s WHERE s.id IN (SELECT id FROM lineage) ORDER BY s.version, s.created_at, s.id",
+            )
+            .bind(&first.id)
+            .bind(user_id)
+            .bind(user_id)
+            .fetch_all(&self.pool)
+            .await?;
+        rows.into_iter()
+            .map(|r| {
+                let command = r.10.clone();
+                Ok((scene((r.0, r.1, r.2, r.3, r.4, r.5, r.6, r.7, r.8, r.9))?, command))
+            })
+            .collect()
     }
 
     /// The edits made from a scene or leading to it.

@@ -114,6 +114,14 @@ impl Store {
         Ok(id)
     }
 
+    /// A user's API keys (id, name, created at; never the key), oldest first.
+    pub async fn api_keys_of(&self, user_id: &str) -> Result<Vec<(String, String, i64)>> {
+        Ok(sqlx::query_as("SELECT id, name, created_at FROM api_keys WHERE user_id = $1 ORDER BY created_at, id")
+            .bind(user_id)
+            .fetch_all(&self.pool)
+            .await?)
+    }
+
     /// The user an API key (by its hash) belongs to.
     pub async fn user_by_api_key(&self, key_hash: &str) -> Result<Option<User>> {
         let r: Option<UserRow> = sqlx::query_as(

@@ -1,0 +1,150 @@
+// Watch it build: the job's WebSocket drives a stage timeline (plan, forge, layout,
+// bridge, verify) with each stage's time and summary, the per-object steps and warnings
+// as they come. A dropped socket is reopened and catches up from the job's events; the job
+// can be cancelled.
+
+import * as api from '../api';
+import { fill, fmtMs, h, notice } from '../dom';
+import type { View } from '../router';
+import type { Job, JobEvent } from '../types';
+
+const STAGES = ['plan', 'forge', 'layout', 'bridge', 'verify'] as const;
+const STAGE_TITLES: Record<string, string> = {
+  plan: 'Plan — reading the prompt',
+  forge: 'Forge — making the assets',
+  layout: 'Layout — placing objects and robots',
+  bridge: 'Bridge — writing MJCF and meshes',
+  verify: 'Verify — compiling and settling in MuJoCo',
+};
+
+interface StageRow {
+  el: HTMLElement;
+  state: HTMLElement;
+  time: HTMLElement;
+  summary: HTMLElement;
+  steps: HTMLElement;
+  nsteps: number;
+}
+
+export const jobView: View = (root, params, query) => {
+  const id = params.id ?? '';
+  const head = h('div', { class: 'job-head' }, h('h1', { text: 'Building the scene' }));
+  const promptLine = h('p', { class: 'prompt-line' });
+  const conn = h('div', { class: 'status', id: 'conn' });
+  const result = h('div', { class: 'status', id: 'result' });
+  const warnings = h('ul', { class: 'warnings', id: 'warnings' });
+  const cancel = h('button', { id: 'cancel', text: 'Cancel' });
+  const rows = new Map<string, StageRow>();
+  const timeline = h('ol', { class: 'timeline', id: 'timeline' });
+  for (const s of STAGES) {
+    const row: StageRow = {
+      el: h('li', { class: 'stage pending', data: { stage: s } }),
+      state: h('span', { class: 'dot' }),
+      time: h('span', { class: 'time' }),
+      summary: h('div', { class: 'summary' }),
+      steps: h('ul', { class: 'steps' }),
+      nsteps: 0,
+    };
+    row.el.append(
+      h('div', { class: 'stage-head' }, row.state, h('span', { class: 'title', text: STAGE_TITLES[s] ?? s }), row.time),
+      row.summary,
+      row.steps,
+    );
+    rows.set(s, row);
+    timeline.append(row.el);
+  }
+  const also = (query.get('also') ?? '').split(',').filter(Boolean);
+  const others = also.length
+    ? h(
+        'div',
+        { class: 'muted' },
+        'Other variations: ',
+        ...also.map((j, i) => h('a', { href: `/jobs/${j}`, text: ` #${i + 2}` })),
+      )
+    : null;
+
+  let finishedJob: Job | null = null;
+  const show = (job: Job) => {
+    promptLine.textContent = job.prompt;
+    cancel.disabled = job.state !== 'queued' && job.state !== 'running';
+    if (job.state === 'queued') fill(result, notice('info', 'Waiting in the queue…'));
+  };
+  const onEvent = (e: JobEvent) => {
+    switch (e.event) {
+      case 'stage_started': {
+        const r = rows.get(e.stage);
+        if (r) r.el.className = 'stage running';
+        fill(result);
+        return;
+      }
+      case 'stage_finished': {
+        const r = rows.get(e.stage);
+        if (!r) return;
+        r.el.className = 'stage done';
+        r.time.textContent = fmtMs(e.ms);
+        r.summary.textContent = e.summary;
+        return;
+      }
+      case 'object': {
+        const r = rows.get(e.stage);
+        if (!r) return;
+        r.nsteps++;
+        const cls = /left out|not placed|removed|failed/i.test(e.step) ? 'step bad' : 'step';
+        r.steps.append(h('li', { class: cls }, h('b', { text: e.object }), ` ${e.step}`));
+        return;
+      }
+      case 'note':
+        rows.get(e.stage)?.steps.append(h('li', { class: 'step note', text: e.message }));
+        return;
+      case 'warning':
+        warnings.append(h('li', {}, h('span', { class: 'tag', text: e.stage }), ` ${e.message}`));
+        return;
+      case 'result':
+        finishedJob = e.job;
+        show(e.job);
+        fill(conn);
+        if (e.job.state === 'succeeded' && e.scene_id) {
+          fill(
+            result,
+            notice('ok', 'The scene is ready and verified in MuJoCo.'),
+            h('a', { id: 'open-scene', class: 'button primary', href: `/scenes/${e.scene_id}`, text: 'Open the scene' }),
+          );
+        } else if (e.job.state === 'cancelled') {
+          fill(result, notice('info', 'The job was cancelled; nothing was stored.'));
+        } else {
+          fill(result, notice('error', `The job failed: ${e.job.error ?? 'no reason given'}.`));
+        }
+        for (const r of rows.values()) if (r.el.classList.contains('running')) r.el.className = 'stage stopped';
+        return;
+      case 'other':
+        if (e.name === 'requeued') warnings.append(h('li', { text: `The runner was lost; the job runs again (${e.text}).` }));
+        if (e.name === 'started') for (const r of rows.values()) r.el.className = 'stage pending';
+        return;
+    }
+  };
+
+  const stop = api.watchJob(id, {
+    onEvent,
+    onDrop: (attempt, why) => {
+      if (finishedJob) return;
+      fill(conn, notice('error', `Lost the live connection (${why}); reconnecting, attempt ${attempt}…`));
+    },
+    onReconnect: () => fill(conn, notice('ok', 'Reconnected; caught up with the job’s events.')),
+    onFatal: (why) => fill(conn, notice('error', `This job cannot be followed: ${why}.`)),
+  });
+  api
+    .job(id)
+    .then(show)
+    .catch((e: unknown) => fill(result, notice('error', `No such job here: ${api.describe(e)}.`)));
+  cancel.addEventListener('click', () => {
+    cancel.disabled = true;
+    api
+      .cancelJob(id)
+      .then(show)
+      .catch((e: unknown) => fill(result, notice('error', `Cancelling failed: ${api.describe(e)}.`)));
+  });
+
+  head.append(cancel);
+  root.append(h('div', { class: 'page job' }, head, promptLine, others, conn, timeline, result, h('h2', { text: 'Warnings' }), warnings));
+  return stop;
+};

@@ -1,0 +1,432 @@
+#!/usr/bin/env node
+// The web app end to end, in headless Chromium (Debian's, through playwright-core) against
+// a real `scenewright serve` on a free loopback port with a fresh data directory:
+// register → refine → generate with a robot → the stage timeline completes → the canvas
+// is not blank and bodies are drawn where the package puts them → click an object and
+// read its panel → a sentence removes it → drag an object and see it moved → make a part
+// in the studio and drag it in → versions and the way back → download the zip and load it
+// with MuJoCo (WASM). Bad input: a dropped socket, a refused edit, a part that cannot be
+// made, an expired token, another user's scene — each a clear message, never a blank page.
+// Screenshots of every page go to docs/web/ (SCREENSHOTS=0 skips writing them).
+//
+//   node tests/e2e.mjs          (SCENEWRIGHT_BIN picks the binary; CHROMIUM the browser)
+
+import { execFileSync } from 'node:child_process';
+import crypto from 'node:crypto';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+import loadMujoco from '@mujoco/mujoco';
+import { check, readZip } from '../scripts/load-packages.mjs';
+import { CHROMIUM, ROOT, startServer } from './lib/server.mjs';
+
+const SHOTS = path.join(ROOT, 'docs', 'web');
+const WRITE_SHOTS = process.env.SCREENSHOTS !== '0';
+const VIEWPORT = { width: 1180, height: 760 };
+const PASSWORD = 'correct horse battery';
+const started = Date.now();
+let failures = 0;
+
+function log(msg) {
+  console.log(`[${((Date.now() - started) / 1000).toFixed(1).padStart(6)} s] ${msg}`);
+}
+
+function assert(cond, msg) {
+  if (!cond) throw new Error(`assertion failed: ${msg}`);
+}
+
+async function shot(page, name) {
+  if (!WRITE_SHOTS) return;
+  fs.mkdirSync(SHOTS, { recursive: true });
+  await page.screenshot({ path: path.join(SHOTS, `${name}.png`) });
+}
+
+/** The page is never blank: its main area holds visible text. */
+async function notBlank(page, where) {
+  const text = await page.locator('#main').innerText();
+  assert(text.trim().length > 20, `${where}: the page is blank`);
+}
+
+async function api(server, token, method, url, body) {
+  const r = await fetch(`${server.url}${url}`, {
+    method,
+    headers: { authorization: `Bearer ${token}`, ...(body ? { 'content-type': 'application/json' } : {}) },
+    body: body ? JSON.stringify(body) : undefined,
+  });
+  const text = await r.text();
+  let json;
+  try {
+    json = JSON.parse(text);
+  } catch {
+    json = text;
+  }
+  return { status: r.status, json };
+}
+
+/** Pixel statistics of a PNG, computed by decoding it in the page (no image library here). */
+async function pixelStats(page, png, probes = []) {
+  return page.evaluate(
+    async ({ b64, probes }) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.width;
+      c.height = img.height;
+      const g = c.getContext('2d');
+      g.drawImage(img, 0, 0);
+      const d = g.getImageData(0, 0, c.width, c.height).data;
+      const colours = new Set();
+      let sum = 0;
+      let sum2 = 0;
+      const n = d.length / 4;
+      for (let i = 0; i < d.length; i += 4) {
+        const l = 0.299 * d[i] + 0.587 * d[i + 1] + 0.114 * d[i + 2];
+        sum += l;
+        sum2 += l * l;
+        if (colours.size < 5000) colours.add((d[i] >> 3) * 1024 + (d[i + 1] >> 3) * 32 + (d[i + 2] >> 3));
+      }
+      const at = probes.map(([x, y]) => Array.from(g.getImageData(Math.round(x), Math.round(y), 1, 1).data.slice(0, 3)));
+      return { colours: colours.size, std: Math.sqrt(sum2 / n - (sum / n) ** 2), at };
+    },
+    { b64: png.toString('base64'), probes },
+  );
+}
+
+async function waitReady(page) {
+  await page.waitForFunction(() => {
+    const v = document.getElementById('viewer');
+    return v && (v.dataset.state === 'ready' || v.dataset.state === 'error');
+  }, null, { timeout: 90_000 });
+  const state = await page.locator('#viewer').getAttribute('data-state');
+  if (state !== 'ready') throw new Error(`the viewer failed: ${await page.locator('#viewer-status').innerText()}`);
+}
+
+async function waitForNewScene(page, from) {
+  await page.waitForFunction((old) => location.pathname.startsWith('/scenes/') && location.pathname !== `/scenes/${old}`, from, { timeout: 180_000 });
+  await waitReady(page);
+  return page.evaluate(() => location.pathname.split('/')[2]);
+}
+
+/** An HS256 JWT signed with the server's secret, expired a minute ago. */
+function expiredToken(server, user) {
+  const secret = execFileSync('python3', [
+    '-c',
+    "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute(\"select value from settings where name='jwt_secret'\").fetchone()[0])",
+    path.join(server.data, 'scenewright.db'),
+  ])
+    .toString()
+    .trim();
+  const b64 = (o) => Buffer.from(JSON.stringify(o)).toString('base64url');
+  const now = Math.floor(Date.now() / 1000);
+  const body = `${b64({ alg: 'HS256', typ: 'JWT' })}.${b64({ sub: user.id, role: user.role, iat: now - 7200, exp: now - 60 })}`;
+  const sig = crypto.createHmac('sha256', secret).update(body).digest('base64url');
+  return `${body}.${sig}`;
+}
+
+async function main() {
+  const server = await startServer();
+  log(`server at ${server.url} (data ${server.data})`);
+  const browser = await chromium.launch(CHROMIUM);
+  const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'sw-e2e-'));
+  try {
+    const ctx = await browser.newContext({ viewport: VIEWPORT, acceptDownloads: true });
+    const page = await ctx.newPage();
+    const pageErrors = [];
+    page.on('pageerror', (e) => pageErrors.push(e.message));
+
+    // --- A signed-out visitor is sent to sign in, then back ---
+    await page.goto(`${server.url}/scenes`);
+    await page.waitForURL(/\/signin\?next=%2Fscenes/);
+    await shot(page, '01-sign-in');
+    await page.fill('#username', 'ann');
+    await page.fill('#password', PASSWORD);
+    await page.click('#register');
+    await page.waitForURL(`${server.url}/scenes`);
+    await page.getByText('No scenes yet').waitFor();
+    const token = await page.evaluate(() => sessionStorage.getItem('scenewright.token'));
+    assert(token, 'no token in the session');
+    log('registered; back on /scenes');
+
+    // --- Refine: the server's questions, turn by turn, then the final prompt ---
+    await page.click('a[href="/"]');
+    await page.fill('#prompt', 'a lab with a workbench and a shelf');
+    await page.click('#refine');
+    let turns = 0;
+    for (;;) {
+      await page.waitForFunction(() => document.querySelector('#chat-final blockquote') || !document.querySelector('#chat-answer').disabled, null, { timeout: 30_000 });
+      if (await page.locator('#chat-final blockquote').count()) break;
+      turns++;
+      const answer = turns === 1 ? '6 by 5 m' : turns === 2 ? 'done' : 'skip';
+      await page.fill('#chat-answer', answer);
+      await page.click('#chat-send');
+      if (turns > 9) throw new Error('the refinement did not end');
+    }
+    const final = await page.locator('#final-prompt').innerText();
+    assert(/6\s*(by|x|×)\s*5/.test(final), `the final prompt holds the answer: ${final}`);
+    await shot(page, '02-compose-refine');
+    await page.click('#chat-accept');
+    assert((await page.inputValue('#prompt')) === final, 'the accepted prompt is in the box');
+    log(`refined in ${turns} turn(s): ${final}`);
+
+    // --- Generate with a robot ---
+    await page.fill('#prompt', `${final} Six boxes on the workbench and a cabinet.`);
+    await page.locator('#robots [data-robot="ur5e"]').click();
+    await page.click('#generate');
+    await page.waitForURL(/\/jobs\//);
+    await page.locator('#open-scene').waitFor({ timeout: 120_000 });
+    for (const s of ['plan', 'forge', 'layout', 'bridge', 'verify']) {
+      const cls = await page.locator(`.stage[data-stage="${s}"]`).getAttribute('class');
+      assert(cls.includes('done'), `stage ${s} is ${cls}`);
+      assert((await page.locator(`.stage[data-stage="${s}"] .time`).innerText()).length > 0, `stage ${s} has a time`);
+    }
+    assert((await page.locator('.stage[data-stage="layout"] .steps li').count()) >= 3, 'per-object steps are listed');
+    await shot(page, '03-job-timeline');
+    log('the stage timeline completed');
+
+    // --- See it ---
+    await page.click('#open-scene');
+    await waitReady(page);
+    const sceneId = await page.evaluate(() => location.pathname.split('/')[2]);
+    const layout = (await api(server, token, 'GET', `/api/scenes/${sceneId}/files/layout.json`)).json;
+    assert(layout.robots.length === 1 && layout.robots[0].model === 'ur5e', 'the scene has the UR5e');
+    // Bodies are drawn where the package puts them (the home state, before playing).
+    for (const o of layout.objects.slice(0, 6)) {
+      const drawn = await page.evaluate((n) => window.__sw.bodyPosition(n), o.name);
+      assert(drawn, `${o.name} is not drawn`);
+      const d = Math.hypot(drawn[0] - o.pos[0], drawn[1] - o.pos[1], drawn[2] - o.pos[2]);
+      assert(d < 0.01, `${o.name} drawn at ${drawn} but the package puts it at ${o.pos}`);
+    }
+    // The robot's first body stands where the layout spawned it.
+    const robot = layout.robots[0];
+    const robotBody = (await page.evaluate(() => window.__sw.bodies())).find((b) => b.startsWith(`${robot.name}_`));
+    const rb = await page.evaluate((n) => window.__sw.bodyPosition(n), robotBody);
+    assert(rb && Math.hypot(rb[0] - robot.pos[0], rb[1] - robot.pos[1]) < 0.01, `${robotBody} drawn at ${rb}, spawned at ${robot.pos}`);
+    log(`bodies drawn where layout.json puts them (six objects; the robot's ${robotBody} at its spawn point)`);
+    // The canvas is not blank, and an object's centre is not the background.
+    const target = layout.objects.find((o) => o.category === 'shelf') ?? layout.objects[0];
+    const at = await page.evaluate((n) => window.__sw.objectOnScreen(n), target.name);
+    const box = await page.locator('#viewer').boundingBox();
+    const png = await page.locator('#viewer').screenshot();
+    const stats = await pixelStats(page, png, [[at.x - box.x, at.y - box.y], [5, 5]]);
+    assert(stats.colours > 40 && stats.std > 12, `the canvas looks blank: ${JSON.stringify(stats)}`);
+    log(`canvas: ${stats.colours} colours, luminance σ ${stats.std.toFixed(1)}; at ${target.name} ${stats.at[0]} vs corner ${stats.at[1]}`);
+
+    // Click the object: its panel.
+    await page.mouse.click(at.x, at.y);
+    await page.locator(`#object-panel[data-object="${target.name}"]`).waitFor();
+    const panel = await page.locator('#object-panel').innerText();
+    assert(panel.includes(target.name) && panel.includes(target.support?.on === 'floor' ? 'the floor' : ''), `the panel names it: ${panel}`);
+    assert(panel.includes('rests on') && panel.includes('size'), `the panel: ${panel}`);
+    await page.click('#play');
+    await page.waitForFunction(() => /t = (0\.[3-9]|[1-9])/.test(document.getElementById('clock').textContent), null, { timeout: 30_000 });
+    await shot(page, '04-scene-viewer');
+    await page.click('#play');
+    const clock = await page.locator('#clock').innerText();
+    log(`object panel read; simulation ran (${clock})`);
+    // The robot holds its pose while playing: the arm's bodies barely move.
+    await page.click('#reset');
+
+    // --- A sentence removes the clicked object ---
+    await page.locator('button[data-tab="edit"]').click();
+    await page.fill('#edit-command', `remove ${target.name}`);
+    await page.click('#apply-edit');
+    const v2 = await waitForNewScene(page, sceneId);
+    const layout2 = (await api(server, token, 'GET', `/api/scenes/${v2}/files/layout.json`)).json;
+    assert(!layout2.objects.some((o) => o.name === target.name), `${target.name} is still in the layout`);
+    assert((await page.evaluate((n) => window.__sw.bodyPosition(n), target.name)) === null, `${target.name} is still drawn`);
+    log(`"remove ${target.name}" made v2 without it`);
+
+    // --- A refused edit says why and keeps the scene ---
+    await page.locator('button[data-tab="edit"]').click();
+    await page.fill('#edit-command', 'remove the purple unicorn');
+    await page.click('#apply-edit');
+    await page.locator('#edit-status .notice.error').waitFor({ timeout: 60_000 });
+    const refusal = await page.locator('#edit-status').innerText();
+    assert(/Refused|not accepted/.test(refusal) && refusal.length > 30, `the refusal: ${refusal}`);
+    assert((await page.evaluate(() => location.pathname)) === `/scenes/${v2}`, 'a refused edit changed the page');
+    await shot(page, '05-edit-refused');
+    log(`refused: ${refusal.replace(/\s+/g, ' ')}`);
+
+    // --- Drag an object: the server re-solves around it ---
+    const dragged = layout2.objects.find((o) => o.category === 'cabinet');
+    assert(dragged, 'the scene has a cabinet to drag');
+    const p0 = await page.evaluate((n) => window.__sw.objectOnScreen(n), dragged.name);
+    await page.mouse.move(p0.x, p0.y);
+    await page.mouse.down();
+    for (let k = 1; k <= 8; k++) await page.mouse.move(p0.x + 12 * k, p0.y + 6 * k);
+    await page.mouse.up();
+    const grabbed = await page.locator('#object-panel').getAttribute('data-object');
+    assert(grabbed === dragged.name, `the drag took ${grabbed}, not ${dragged.name}`);
+    const v3 = await waitForNewScene(page, v2);
+    const layout3 = (await api(server, token, 'GET', `/api/scenes/${v3}/files/layout.json`)).json;
+    const before = dragged.pos;
+    const after = layout3.objects.find((o) => o.name === dragged.name).pos;
+    const moved = Math.hypot(after[0] - before[0], after[1] - before[1]);
+    assert(moved > 0.1, `${dragged.name} moved only ${moved} m`);
+    const drawnAfter = await page.evaluate((n) => window.__sw.bodyPosition(n), dragged.name);
+    assert(Math.hypot(drawnAfter[0] - after[0], drawnAfter[1] - after[1]) < 0.01, 'the moved object is drawn where v3 puts it');
+    log(`dragged ${dragged.name} ${moved.toFixed(2)} m → v3`);
+
+    // --- Asset studio: a part made, one that cannot be made ---
+    await page.click('a[href="/studio"]');
+    await page.fill('#part-description', 'a sentient teapot that sings opera');
+    await page.click('#make-part');
+    await page.locator('#forge-status .notice.error').waitFor({ timeout: 200_000 });
+    const notMade = await page.locator('#forge-status').innerText();
+    const kinds = await page.locator('#forge-progress li.bad').count();
+    assert(/could not be made/.test(notMade), `the failure: ${notMade}`);
+    log(`a part that cannot be made: ${notMade.replace(/\s+/g, ' ').slice(0, 160)} (${kinds} failed attempt(s) listed)`);
+    await page.fill('#part-description', 'a flat washer: outer diameter 120mm, inner diameter 40mm, thickness 10mm');
+    await page.click('#make-part');
+    await page.locator('#mesh-size').waitFor({ timeout: 200_000 });
+    const meshSize = await page.locator('#mesh-size').innerText();
+    assert(/120\.0 × 120\.0 × 10\.0/.test(meshSize), `the preview's size: ${meshSize}`);
+    await shot(page, '06-asset-studio');
+    const assets = (await api(server, token, 'GET', `/api/assets?q=${encodeURIComponent('a big ring-shaped spacer')}`)).json;
+    const plate = [...assets.similar, ...assets.mine].find((a) => a.meta?.asset_id);
+    assert(plate, 'the washer is in the library');
+    assert(assets.similar.length > 0 && assets.similar[0].id === plate.id, `search by meaning finds it: ${JSON.stringify(assets.note)}`);
+    log(`made a washer (${meshSize}); searching "a big ring-shaped spacer" by meaning ranks it first`);
+
+    // --- Drag the part from the library into the open scene ---
+    await page.goto(`${server.url}/scenes/${v3}?tab=parts`);
+    await waitReady(page);
+    await page.fill('.part-search', 'washer');
+    const item = page.locator(`li.part[data-part="${plate.id}"]`);
+    await item.waitFor();
+    const vb = await page.locator('#viewer').boundingBox();
+    await item.dragTo(page.locator('#viewer'), { targetPosition: { x: vb.width * 0.3, y: vb.height * 0.75 } });
+    const v4 = await waitForNewScene(page, v3);
+    const layout4 = (await api(server, token, 'GET', `/api/scenes/${v4}/files/layout.json`)).json;
+    const added = layout4.objects.filter((o) => !layout3.objects.some((x) => x.name === o.name));
+    assert(added.length === 1 && added[0].category === 'proxy', `the part is in the scene: ${JSON.stringify(added)}`);
+    const v4detail = (await api(server, token, 'GET', `/api/scenes/${v4}`)).json;
+    assert(v4detail.files.includes('parts.json'), 'the part travels with the package');
+    log(`dropped the washer in: ${added[0].name} at ${added[0].pos.map((v) => v.toFixed(2))}`);
+
+    // --- Versions and the way back ---
+    await page.locator('button[data-tab="history"]').click();
+    await page.locator('#history li[data-version="4"]').waitFor();
+    await shot(page, '07-versions');
+    await page.locator('#history li[data-version="1"] a').click();
+    await page.waitForURL(`${server.url}/scenes/${sceneId}`);
+    await waitReady(page);
+    log('history lists 4 versions; v1 opens');
+
+    // --- Download the zip and load it with MuJoCo (WASM) ---
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+    const zipPath = path.join(tmp, 'scene.zip');
+    await download.saveAs(zipPath);
+    const mj = await loadMujoco();
+    const files = readZip(fs.readFileSync(zipPath));
+    const loaded = check(mj, 'downloaded package.zip', files, 0);
+    assert(loaded.ok, `the downloaded package: ${loaded.error}`);
+    log(`downloaded package.zip (${files.size} files) loads and settles in MuJoCo 3.14: largest move ${(loaded.max_displacement_m * 1000).toFixed(2)} mm`);
+    // Every version this test made loads in the browser's MuJoCo too.
+    for (const [i, id] of [v2, v3, v4].entries()) {
+      const r = await fetch(`${server.url}/api/scenes/${id}/package.zip`, { headers: { authorization: `Bearer ${token}` } });
+      const c = check(mj, `v${i + 2}`, readZip(Buffer.from(await r.arrayBuffer())), i + 1);
+      assert(c.ok, `v${i + 2}: ${c.error}`);
+    }
+
+    // --- My scenes, settings ---
+    await page.click('a[href="/scenes"]');
+    await page.waitForFunction(() => {
+      const imgs = [...document.querySelectorAll('img.thumb')];
+      return imgs.length >= 4 && imgs.every((i) => i.complete && i.naturalWidth > 0);
+    }, null, { timeout: 60_000 });
+    await shot(page, '08-my-scenes');
+    await page.click('a[href="/settings"]');
+    await page.fill('#key-name', 'e2e script');
+    await page.click('#create-key');
+    const key = await page.locator('#new-key').innerText();
+    assert(key.startsWith('swk_'), 'a key is shown');
+    assert((await api(server, key, 'GET', '/api/me')).json.username === 'ann', 'the key works');
+    await page.locator('#keys li', { hasText: 'e2e script' }).waitFor();
+    await shot(page, '09-settings');
+    log('thumbnails on My scenes; an API key made and used');
+
+    // --- Bad input: a socket dropped mid-job catches up on reconnection ---
+    let dropped = false;
+    await page.routeWebSocket(/\/events/, (ws) => {
+      const upstream = ws.connectToServer();
+      if (dropped) return;
+      dropped = true;
+      let n = 0;
+      upstream.onMessage((m) => {
+        ws.send(m);
+        if (++n === 2) {
+          ws.close();
+          upstream.close();
+        }
+      });
+    });
+    const job2 = (await api(server, token, 'POST', '/api/jobs', { prompt: 'a small office with two desks, two chairs and a cabinet', seed: 3 })).json.job_id;
+    await page.goto(`${server.url}/jobs/${job2}`);
+    await page.getByText('Lost the live connection').waitFor({ timeout: 20_000 });
+    await shot(page, '10-socket-dropped');
+    await page.locator('#open-scene').waitFor({ timeout: 120_000 });
+    for (const s of ['plan', 'forge', 'layout', 'bridge', 'verify']) {
+      assert((await page.locator(`.stage[data-stage="${s}"]`).getAttribute('class')).includes('done'), `${s} done after reconnecting`);
+    }
+    const layoutSteps = await page.locator('.stage[data-stage="layout"] .steps li').allInnerTexts();
+    assert(new Set(layoutSteps).size === layoutSteps.length, 'no step shown twice after catching up');
+    await page.unrouteAll({ behavior: 'ignoreErrors' });
+    log('a dropped socket: message shown, reconnected, caught up without repeats');
+
+    // --- Bad input: another user's scene, an unknown scene ---
+    const ctx2 = await browser.newContext({ viewport: VIEWPORT });
+    const page2 = await ctx2.newPage();
+    page2.on('pageerror', (e) => pageErrors.push(e.message));
+    await page2.goto(`${server.url}/scenes/${sceneId}`);
+    await page2.waitForURL(/\/signin/);
+    await page2.fill('#username', 'bob');
+    await page2.fill('#password', PASSWORD);
+    await page2.click('#register');
+    await page2.waitForURL(`${server.url}/scenes/${sceneId}`);
+    await page2.locator('#viewer-status .notice.error').waitFor({ timeout: 30_000 });
+    const other = await page2.locator('#viewer-status').innerText();
+    assert(/cannot be shown: no such scene/.test(other), `another user's scene: ${other}`);
+    await notBlank(page2, "another user's scene");
+    await shot(page2, '11-not-your-scene');
+    await page2.goto(`${server.url}/jobs/${job2}`);
+    await page2.getByText('cannot be followed').or(page2.getByText('No such job')).first().waitFor({ timeout: 20_000 });
+    await notBlank(page2, "another user's job");
+    log(`another user's scene and job: "${other.trim()}"`);
+
+    // --- Bad input: an expired token ends the session with the reason ---
+    const me = (await api(server, token, 'GET', '/api/me')).json;
+    const stale = expiredToken(server, me);
+    assert((await api(server, stale, 'GET', '/api/me')).status === 401, 'the server refuses the expired token');
+    await page.evaluate((t) => sessionStorage.setItem('scenewright.token', t), stale);
+    await page.goto(`${server.url}/scenes/${v3}`);
+    await page.waitForURL(/\/signin\?next=/, { timeout: 20_000 });
+    const reason = await page.locator('.notice').first().innerText();
+    assert(/expired/.test(reason), `the sign-in page says why: ${reason}`);
+    await shot(page, '12-session-expired');
+    await page.fill('#username', 'ann');
+    await page.fill('#password', PASSWORD);
+    await page.click('#signin');
+    await page.waitForURL(`${server.url}/scenes/${v3}`);
+    await waitReady(page);
+    log(`expired token: "${reason.trim()}"; signed in again and back on the scene`);
+
+    assert(pageErrors.length === 0, `uncaught page errors: ${pageErrors.join('; ')}`);
+    await ctx2.close();
+    await ctx.close();
+  } catch (e) {
+    failures++;
+    console.error(`e2e FAILED: ${e.stack ?? e}`);
+    console.error(`--- server log (last 4000 characters) ---\n${server.log().slice(-4000)}`);
+  } finally {
+    await browser.close();
+    await server.stop();
+    fs.rmSync(tmp, { recursive: true, force: true });
+  }
+  log(failures ? 'FAILED' : 'passed');
+  process.exit(failures ? 1 : 0);
+}
+
+await main();
