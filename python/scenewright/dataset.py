@@ -56,9 +56,7 @@ class SceneRecord:
             seed=int(doc.get("seed", 0)),
             fingerprint=str(doc.get("fingerprint", "")),
             physics=str(doc.get("physics", "native")),
-            objects_by_category={
-                str(k): int(v) for k, v in doc.get("objects", {}).get("by_category", {}).items()
-            },
+            objects_by_category={str(k): int(v) for k, v in doc.get("objects", {}).get("by_category", {}).items()},
             robots=[str(r) for r in doc.get("robots", [])],
             relations_held=(int(rel["held"]), int(rel["total"])) if isinstance(rel, dict) else None,
             anomalies=list(doc.get("anomalies", [])),

@@ -91,8 +91,10 @@ class SceneEnv(gym.Env[np.ndarray, np.ndarray]):
         # The spaces come from a first variant (seed 0): every variant has the same robot.
         self._load(self._variant(0))
         assert self.model is not None
-        low, high = self._ctrl_bounds()
-        self.action_space = spaces.Box(low=low, high=high, dtype=np.float64)
+        bounds = self._ctrl_bounds()
+        self._low: np.ndarray = bounds[0]
+        self._high: np.ndarray = bounds[1]
+        self.action_space = spaces.Box(low=self._low, high=self._high, dtype=np.float64)
         n = len(self._qpos) + len(self._qvel)
         self.observation_space = spaces.Box(low=-np.inf, high=np.inf, shape=(n,), dtype=np.float64)
 
@@ -180,7 +182,7 @@ class SceneEnv(gym.Env[np.ndarray, np.ndarray]):
         a = np.asarray(action, dtype=np.float64).reshape(-1)
         if a.shape != (len(self._act),):
             raise ValueError(f"the action has {a.size} values; the robot has {len(self._act)} actuators")
-        self.data.ctrl[self._act] = np.clip(a, self.action_space.low, self.action_space.high)
+        self.data.ctrl[self._act] = np.clip(a, self._low, self._high)
         mujoco.mj_step(self.model, self.data, nstep=self.frame_skip)
         obs = self._obs()
         reward = float(self.reward_fn(self.model, self.data)) if self.reward_fn is not None else 0.0

@@ -31,7 +31,7 @@ def settle(model: mujoco.MjModel, data: mujoco.MjData, seconds: float = 2.0) -> 
     """Step `seconds` from the current state; the largest displacement of a free body, m."""
     free = [model.jnt_bodyid[j] for j in range(model.njnt) if int(model.jnt_type[j]) == int(mujoco.mjtJoint.mjJNT_FREE)]
     start = data.xpos[free].copy()
-    mujoco.mj_step(model, data, nstep=int(round(seconds / model.opt.timestep)))
+    mujoco.mj_step(model, data, nstep=round(seconds / model.opt.timestep))
     assert np.isfinite(data.qpos).all()
     if not free:
         return 0.0

@@ -25,9 +25,12 @@ def structurally_different(a: scenewright.Package, b: scenewright.Package) -> bo
     if pa.keys() != pb.keys() or la.room_size != lb.room_size:
         return True
     for name, o in pa.items():
-        if np.linalg.norm(np.subtract(o.pos, pb[name].pos)) >= 0.01 or np.abs(np.subtract(o.size, pb[name].size)).max() >= 0.001:
+        if (
+            np.linalg.norm(np.subtract(o.pos, pb[name].pos)) >= 0.01
+            or np.abs(np.subtract(o.size, pb[name].size)).max() >= 0.001
+        ):
             return True
-    for ra, rb in zip(la.robots, lb.robots):
+    for ra, rb in zip(la.robots, lb.robots, strict=False):
         if ra.model != rb.model or np.linalg.norm(np.subtract(ra.pos, rb.pos)) >= 0.01:
             return True
     meshes = lambda p: sorted(f.name for f in (p.path / "assets").iterdir() if f.is_file())  # noqa: E731
@@ -39,7 +42,14 @@ def test_dataset_of_two_prompts_lists_distinct_verified_scenes(tmp_path) -> None
     ds = scenewright.dataset(out, prompts=[SHELF, TABLE], count=3, jobs=2, robots=["none", "ur5e"], progress=False)
     assert ds.summary is not None and ds.summary["made"] == 6 and ds.summary["scenes_listed"] == 6
     records = list(ds)
-    assert [r.id for r in records] == ["0000-000000", "0000-000001", "0000-000002", "0001-000000", "0001-000001", "0001-000002"]
+    assert [r.id for r in records] == [
+        "0000-000000",
+        "0000-000001",
+        "0000-000002",
+        "0001-000000",
+        "0001-000001",
+        "0001-000002",
+    ]
     assert len({r.fingerprint for r in records}) == 6
     for r in records:
         pkg = r.package

@@ -47,7 +47,7 @@ def test_reset_draws_a_new_variant_and_steps_move_the_robot(env) -> None:
     target = home.ctrl.copy()
     target[0] += 0.5
     for _ in range(200):
-        obs, reward, terminated, truncated, _ = env.step(target)
+        obs, reward, terminated, _truncated, _ = env.step(target)
         assert reward == 0.0 and not terminated
     assert abs(obs[0] - (home.qpos[env.unwrapped._qpos][0] + 0.5)) < 0.05
     with pytest.raises(ValueError, match="6 actuators"):
