@@ -54,6 +54,7 @@ pub const QUALS: &[&str] = &[
     "cross-section", "opening", "neck", "belly", "shoulder", "rim", "slot", "keyway", "groove", "pocket", "recess",
     "socket", "boss", "post", "arm", "fin", "rib", "plate", "disc", "body", "seat", "journal", "section", "tooth",
     "extruded", "metric", "clearance", "thread", "key", "gasket", "mount", "motor", "spoke", "rail", "cap", "ring",
+    "pattern", "counterbored", "countersunk", "wall",
 ];
 
 /// Words that end the phrase after a length.
@@ -415,6 +416,12 @@ impl Doc {
                         break;
                     }
                     Tk::Sym('-') => {}
+                    // "30mm in X": the axis (X reads as a times sign).
+                    Tk::Sym('x') if after.last().is_some_and(|(_, w): &(usize, String)| w == "in" || w == "along") => {
+                        axis = Some(Axis::X);
+                        j += 1;
+                        break;
+                    }
                     _ => break,
                 }
                 j += 1;
@@ -435,11 +442,20 @@ impl Doc {
             }
             before.reverse();
             let before_start = before.first().map_or(i, |b| b.0);
+            // After it, a role word counts only before the noun it sizes ("6mm holes equally
+            // spaced": the 6mm is the holes', not a spacing).
+            let heads = |k: usize| {
+                let (_, w) = &after[k];
+                let qualifier = after.get(k + 1).is_some_and(|(_, n)| role_of(n).is_some_and(|r| r != Role::Spacing));
+                matches!(super::lexicon::noun(w), Some(n) if n != super::lexicon::Noun::Pattern) && !qualifier
+            };
+            let cut = (0..after.len()).find(|k| heads(*k)).unwrap_or(after.len());
+            let upto_noun: Vec<&(usize, String)> = after[..cut].iter().collect();
             let role = after
                 .first()
                 .and_then(|(_, w)| role_of(w))
                 .or_else(|| before.last().and_then(|(_, w)| role_of(w)))
-                .or_else(|| after.iter().find_map(|(_, w)| role_of(w)))
+                .or_else(|| upto_noun.iter().find_map(|(_, w)| role_of(w)))
                 .or_else(|| before.iter().rev().find_map(|(_, w)| role_of(w)))
                 .unwrap_or(Role::Bare);
             // "extruded to a height of", "pitch circle diameter": the later, more specific word wins.
@@ -450,6 +466,13 @@ impl Doc {
                 }
                 r => r,
             };
+            if axis.is_none() {
+                for (k, (_, w)) in after.iter().enumerate() {
+                    if (w == "in" || w == "along") && let Some((_, a)) = after.get(k + 1) {
+                        axis = axis_word(a).or(axis);
+                    }
+                }
+            }
             if axis.is_none() {
                 for (k, (_, w)) in before.iter().enumerate() {
                     if (w == "along" || w == "in") && let Some((_, a)) = before.get(k + 1) {
@@ -476,6 +499,17 @@ impl Doc {
             }
             // "M4 clearance holes": the screw's clearance diameter.
             let role = if quals.iter().any(|w| w == "metric") { Role::Diameter } else { role };
+            // "counterbored to 14mm diameter", "countersunk to 8mm".
+            for (from, to) in [("counterbored", "counterbore"), ("countersunk", "countersink")] {
+                if before.iter().chain(after.iter()).any(|(_, w)| w == from) && !quals.iter().any(|q| q == to) {
+                    quals.push(to.into());
+                }
+            }
+            // "a 3 mm wall", "with 3mm walls": a wall thickness.
+            let (role, wall) = if role == Role::Bare && after.first().is_some_and(|(_, w)| w == "wall") { (Role::Thickness, true) } else { (role, false) };
+            if wall && !quals.iter().any(|q| q == "wall") {
+                quals.push("wall".into());
+            }
             dims.push(Dim {
                 tok: i,
                 mm: v * f,
@@ -488,6 +522,15 @@ impl Doc {
                 phrase: (before_start, after_end),
                 restates: None,
             });
+        }
+        // "spaced 30mm in X and 25mm in Y": the second is a spacing too.
+        for k in 1..dims.len() {
+            if dims[k].role == Role::Bare && dims[k - 1].role == Role::Spacing && dims[k].axis.is_some() {
+                let between = &self.toks[dims[k - 1].phrase.1.min(dims[k].tok)..dims[k].tok];
+                if between.iter().all(|t| t.is_word("and") || t.is_sym(',')) {
+                    dims[k].role = Role::Spacing;
+                }
+            }
         }
         // A length in parentheses just after another restates it.
         for k in 1..dims.len() {
@@ -537,6 +580,14 @@ impl Doc {
             }
             if group.len() >= 2 {
                 let len = group.len();
+                // "in a 100mm x 60mm rectangular pattern": the whole list is the pattern's.
+                if group.iter().any(|g| dims[*g].has("pattern")) {
+                    for g in &group {
+                        if !dims[*g].has("pattern") {
+                            dims[*g].quals.push("pattern".into());
+                        }
+                    }
+                }
                 for (pos, g) in group.iter().enumerate() {
                     dims[*g].list = Some((list_id, pos));
                     // A "(X)" tag right after each member.

@@ -28,7 +28,7 @@ const LABELS: &[&str] = &[
     "concentric", "base", "mount", "shaft", "gear", "hub", "journal", "neck", "shoulder", "head", "body",
     "wall", "floor", "rim", "platform", "post", "plate", "standoff", "arm", "fin", "rib", "rail", "seat",
     "flange", "key", "keyway", "slot", "groove", "hole", "bore", "boss", "ring", "disc", "lug", "ear", "tab",
-    "leg", "foot", "pad", "web", "stem", "spoke", "mid-height", "square", "rectangular", "round", "circular",
+    "leg", "foot", "pad", "web", "stem", "spoke", "mid-height", "square", "rectangular", "round", "circular", "angle", "l-shaped",
     "cylindrical", "regular",
 ];
 
@@ -94,7 +94,7 @@ fn is_det(w: &str) -> bool {
 fn is_prep(w: &str) -> bool {
     matches!(
         w,
-        "through" | "on" | "onto" | "from" | "of" | "to" | "at" | "in" | "into" | "above" | "below" | "inside" | "around"
+        "through" | "on" | "onto" | "from" | "of" | "to" | "at" | "in" | "into" | "with" | "above" | "below" | "inside" | "around"
             | "past" | "between" | "along" | "over" | "under" | "beneath" | "across" | "within" | "toward" | "towards"
             | "bridging" | "connecting" | "via" | "per" | "matching" | "like" | "as"
     )
@@ -118,13 +118,24 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
         if matches!(kind, Noun::Pattern) {
             continue;
         }
+        // "a 3 mm wall", "with 3mm walls": a thickness, not a body.
+        if w == "wall" && i > 0 && matches!(doc.toks[i - 1].kind, Tk::Num { unit: Some(_), .. }) && !doc.word(i + 1).is_some_and(|n| super::doc::role_of(n).is_some()) {
+            doc.mark(i);
+            continue;
+        }
         // "base at Z=0": a place on the part, not a body.
         if matches!(w, "base" | "top" | "bottom") && doc.is(i + 1, "at") && doc.axis_at(i + 2).is_some() && doc.sym(i + 3, '=') {
             continue;
         }
+        // "on a 60mm bolt circle", "a 20mm x 20mm square pattern": a noun naming a pattern.
+        if doc.word(i + 1).is_some_and(|n| noun(n) == Some(Noun::Pattern)) {
+            continue;
+        }
         // A noun qualifying a length ("base diameter", "wall thickness", "flange width",
         // "head height") is not a mention of its own.
-        if doc.word(i + 1).is_some_and(|n| super::doc::role_of(n).is_some() && n != "side" && n != "rounded" && n != "filleted" && n != "chamfered")
+        if doc.word(i + 1).is_some_and(|n| {
+            super::doc::role_of(n).is_some_and(|r| r != super::doc::Role::Spacing) && n != "side" && n != "rounded" && n != "filleted" && n != "chamfered"
+        })
             && !matches!(kind, Noun::Fillet | Noun::Chamfer)
         {
             continue;
@@ -188,6 +199,13 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                 }
                 Tk::Sym('x') => true,
                 Tk::Sym('-') => true,
+                // "a 30mm long, 8mm wide slot": lengths before the noun, listed.
+                Tk::Sym(',') => {
+                    k >= 2
+                        && doc.word(k - 1).is_some_and(|w| super::doc::role_of(w).is_some())
+                        && matches!(doc.toks[k - 2].kind, Tk::Num { unit: Some(_), .. })
+                        && matches!(doc.toks.get(k + 1).map(|t| &t.kind), Some(Tk::Num { unit: Some(_), .. }))
+                }
                 // "dodecagonal (12-sided) prism": an aside inside the phrase.
                 Tk::Sym(')') => {
                     if let Some(o) = (0..k).rev().find(|q| doc.sym(*q, '(')) {
@@ -387,7 +405,9 @@ fn fits(kind: Noun, dim: Option<&super::doc::Dim>) -> bool {
     let role = dim.role;
     match kind {
         Noun::Cut(CutKind::Hole | CutKind::Bore | CutKind::Counterbore | CutKind::Countersink) => {
-            matches!(role, Diameter | Radius | Depth | Inset | Spacing) || (role == Bare && dim.axis.is_none() && dim.list.is_none())
+            matches!(role, Diameter | Radius | Depth | Inset | Spacing)
+                || (role == Bare && dim.axis.is_none() && (dim.list.is_none() || dim.has("pattern")))
+                || (role == Bare && dim.has("pattern"))
         }
         Noun::Fillet | Noun::Chamfer => matches!(role, Bare | Fillet | Chamfer | Radius),
         _ => true,

@@ -91,7 +91,7 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
         return Err(SynthError::Empty);
     }
     let d = doc::Doc::new(prompt);
-    if d.dims.is_empty() && d.ranges.is_empty() {
+    if d.dims.is_empty() && d.ranges.is_empty() && d.coords.is_empty() {
         return Err(SynthError::NoDimensions);
     }
     for (k, x) in d.dims.iter().enumerate() {

@@ -170,7 +170,9 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
     // Stacked on the body before it along the same axis, when one is there and the
     // words say on top (or nothing says otherwise); the first body from 0 (or centred).
     let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == axis && !b.cut).map(|b| b.span));
-    let on_top = r.says(e, "top") || r.says(e, "topped") || r.says(e, "above") || r.says(e, "on");
+    // "A plate with four posts": a body the part is said to have stands on the one before.
+    let with = r.els[e].mentions.first().is_some_and(|m| r.mentions[*m].prep.as_deref() == Some("with"));
+    let on_top = with || r.says(e, "top") || r.says(e, "topped") || r.says(e, "above") || r.says(e, "on");
     match prev {
         Some(p) if on_top => {
             mark_on_top(r, e);

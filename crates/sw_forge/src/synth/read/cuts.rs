@@ -114,10 +114,18 @@ fn cut_axis(r: &Reader<'_>, e: usize) -> Option<Axis> {
         let (_, end) = d.sentence(m.sent);
         let end = r.mentions.iter().filter(|n| n.sent == m.sent && n.head > m.head && n.elem != e && n.prep.is_none()).map(|n| n.start).min().unwrap_or(end);
         for i in m.head..end.saturating_sub(1) {
+            // "oriented along the X axis", "along the Y axis", "in the Y direction" — not a
+            // row's "spaced 40mm apart along X".
             let along = d.is(i, "along") || d.is(i, "oriented");
             if along || d.is(i, "direction") {
                 let pick = |j: usize| d.axis_at(j);
-                let a = if along { pick(i + 1).or_else(|| pick(i + 2)).or_else(|| pick(i + 3)) } else { pick(i - 1) };
+                let a = if along {
+                    let row = i > 0 && matches!(d.word(i - 1), Some("apart" | "spaced" | "interval"));
+                    let named = (i + 1..(i + 5).min(d.len())).any(|j| d.is(j, "axis") || d.is(j, "direction")) || d.is(i, "oriented");
+                    if row || !named { None } else { pick(i + 1).or_else(|| pick(i + 2)).or_else(|| pick(i + 3)) }
+                } else {
+                    pick(i - 1)
+                };
                 if let Some(a) = a {
                     return Some(a);
                 }
@@ -182,9 +190,11 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     // Where: points, patterns, or the copies of the body it goes through ("through each mount").
     let mut at = place::points(r, e, axis)?;
     let target_size = tg.iter().find_map(|t| r.built[*t].as_ref().and_then(|b| b.size)).or_else(|| part_size(r));
+    if at.is_empty() {
+        at = place::grid(r, e).unwrap_or_default();
+    }
     if at.is_empty() && count > 1 {
-        at = place::grid(r, e)
-            .or_else(|| place::circle(r, e, count))
+        at = place::circle(r, e, count)
             .or_else(|| place::rect_pattern(r, e))
             .or_else(|| target_size.and_then(|s| place::corners(r, e, s)))
             .or_else(|| place::row(r, e, count, Axis::X, axis))
@@ -201,8 +211,14 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     if count > 1 && at.len() != count as usize && !(count as usize == 1) {
         return Err(Refusal::new(r.quote_element(e), format!("{count} of them asked for, {} placed by the words", at.len())));
     }
-    // Depth: blind ("8mm deep") from the top face, else through what it passes through.
-    let depth = r.take(e, &[Role::Depth], &[], &["counterbore", "countersink"]);
+    // Depth: blind ("8mm deep") from the top face, else through what it passes through. A
+    // depth after a counterbore's or countersink's size is theirs.
+    let sink_at = r.els[e].dims.iter().map(|k| r.dim(*k)).filter(|d| d.has("counterbore") || d.has("countersink")).map(|d| d.tok).min();
+    let depth = r.find(e, &[Role::Depth], &[], &["counterbore", "countersink"]).filter(|k| sink_at.is_none_or(|s| r.dim(*k).tok < s));
+    let depth = depth.map(|k| {
+        r.used_dims[k] = true;
+        r.dim(k).mm
+    });
     let span = match r.take_range(e, axis) {
         Some(s) => s,
         None => {

@@ -221,6 +221,10 @@ impl Reader<'_> {
         if el.teeth.is_some() {
             return Some(ShapeHint::Star);
         }
+        // An angle bracket (or iron) is an L.
+        if matches!(el.noun.as_str(), "bracket" | "iron" | "profile") && (el.has_mod("angle") || el.has_mod("l-shaped")) {
+            return Some(ShapeHint::Section(super::lexicon::Section::L));
+        }
         // A tapered or truncated rectangular block is a rectangular frustum.
         if (el.has_mod("tapered") || el.has_mod("truncated")) && (el.has_mod("rectangular") || el.has_mod("square")) {
             return Some(ShapeHint::Pyramid);

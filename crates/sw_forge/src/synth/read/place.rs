@@ -256,7 +256,9 @@ pub fn grid(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
             let sx = r.find(e, &[Role::Spacing], &[], &[]).filter(|k| d.dims[*k].axis != Some(Axis::Y));
             let Some(sx) = sx else { continue };
             r.used_dims[sx] = true;
-            let sy = r.find(e, &[Role::Spacing], &[], &[]);
+            let sy = r.find(e, &[Role::Spacing], &[], &[]).or_else(|| {
+                r.els[e].dims.iter().copied().find(|k| !r.used_dims[*k] && d.dims[*k].axis == Some(Axis::Y) && d.dims[*k].role == Role::Bare)
+            });
             let (px, py) = (d.dims[sx].mm, sy.map_or(d.dims[sx].mm, |k| d.dims[k].mm));
             if let Some(k) = sy {
                 r.used_dims[k] = true;

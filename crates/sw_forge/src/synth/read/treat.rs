@@ -65,7 +65,11 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
         let edges = select(r, s, bi);
         let body = &r.model.adds[bi];
         let bb = body.bounds();
-        let thin = (0..3).map(|i| bb[1][i] - bb[0][i]).fold(f64::INFINITY, f64::min);
+        // Edges along an axis are limited by the sizes across it.
+        let thin = (0..3)
+            .filter(|i| !matches!(edges, Edges::Parallel(a) if a.index() == *i))
+            .map(|i| bb[1][i] - bb[0][i])
+            .fold(f64::INFINITY, f64::min);
         if size <= 0.0 || 2.0 * size >= thin {
             return Err(Refusal::new(r.quote_dim(k), format!("an edge treatment of {size} mm does not fit a body {thin} mm thin")));
         }

@@ -236,7 +236,7 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
     }
     // "on top of the web", "sitting on top of the shaft": of a made thing.
     for i in 0..d.len().saturating_sub(2) {
-        if d.is(i, "top") && d.is(i + 1, "of") && !d.is_used(i) {
+        if (d.is(i, "top") || d.is(i, "end") || d.is(i, "tip") || d.is(i, "center")) && d.is(i + 1, "of") && !d.is_used(i) {
             let of_made = r.mentions.iter().any(|m| m.start <= i + 3 && m.head > i + 1 && m.head <= i + 5 && r.done[m.elem]);
             if of_made {
                 d.mark_range(i, i + 2);
