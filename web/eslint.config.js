@@ -23,7 +23,7 @@ export default tseslint.config(
     languageOptions: {
       globals: { process: 'readonly', console: 'readonly', URL: 'readonly', fetch: 'readonly', setTimeout: 'readonly', clearTimeout: 'readonly', performance: 'readonly', Buffer: 'readonly', WebSocket: 'readonly', AbortController: 'readonly', TextDecoder: 'readonly', TextEncoder: 'readonly', setInterval: 'readonly', clearInterval: 'readonly',
         // Inside page.evaluate callbacks (they run in the browser).
-        window: 'readonly', document: 'readonly', location: 'readonly', sessionStorage: 'readonly', Image: 'readonly' },
+        window: 'readonly', document: 'readonly', location: 'readonly', sessionStorage: 'readonly', Image: 'readonly', history: 'readonly', dispatchEvent: 'readonly', PopStateEvent: 'readonly' },
     },
   },
 );

@@ -18,6 +18,8 @@ export interface Probe {
   bench: (seconds: number) => Promise<{ simSeconds: number; wallSeconds: number; steps: number }>;
   /** Frees the loaded scene; the WASM heap's size afterwards, bytes. */
   unload: () => Promise<number>;
+  /** GPU resources the viewer holds now. */
+  renderInfo: () => { geometries: number; textures: number };
   /** The last real-time factor the worker measured while playing. */
   realtime: number;
 }

@@ -268,6 +268,10 @@ async function handle(msg: ToWorker): Promise<void> {
   }
 }
 
+// Start compiling MuJoCo's WebAssembly now, before the first scene is asked for (a failure
+// is reported to that first request).
+engine().catch(() => undefined);
+
 ctx.onmessage = (e: MessageEvent<ToWorker>) => {
   const msg = e.data;
   handle(msg).catch((err: unknown) => {

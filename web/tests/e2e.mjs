@@ -253,9 +253,12 @@ async function main() {
     const dragged = layout2.objects.find((o) => o.category === 'cabinet');
     assert(dragged, 'the scene has a cabinet to drag');
     const p0 = await page.evaluate((n) => window.__sw.objectOnScreen(n), dragged.name);
+    // Half way towards the workbench, on screen.
+    const bench = layout2.objects.find((o) => o.category === 'workbench');
+    const pw = await page.evaluate((n) => window.__sw.objectOnScreen(n), bench.name);
     await page.mouse.move(p0.x, p0.y);
     await page.mouse.down();
-    for (let k = 1; k <= 8; k++) await page.mouse.move(p0.x + 12 * k, p0.y + 6 * k);
+    for (let k = 1; k <= 8; k++) await page.mouse.move(p0.x + ((pw.x - p0.x) * k) / 16, p0.y + ((pw.y - p0.y) * k) / 16);
     await page.mouse.up();
     const grabbed = await page.locator('#object-panel').getAttribute('data-object');
     assert(grabbed === dragged.name, `the drag took ${grabbed}, not ${dragged.name}`);
@@ -277,6 +280,7 @@ async function main() {
     const notMade = await page.locator('#forge-status').innerText();
     const kinds = await page.locator('#forge-progress li.bad').count();
     assert(/could not be made/.test(notMade), `the failure: ${notMade}`);
+    await shot(page, '06a-part-not-made');
     log(`a part that cannot be made: ${notMade.replace(/\s+/g, ' ').slice(0, 160)} (${kinds} failed attempt(s) listed)`);
     await page.fill('#part-description', 'a flat washer: outer diameter 120mm, inner diameter 40mm, thickness 10mm');
     await page.click('#make-part');

@@ -318,6 +318,12 @@ export class Viewer {
     this.canvas.remove();
   }
 
+  /** GPU resources alive now (geometries, textures), to see that nothing leaks. */
+  info(): { geometries: number; textures: number } {
+    const m = this.renderer.info.memory;
+    return { geometries: m.geometries, textures: m.textures };
+  }
+
   get selected(): number | null {
     return this.highlighted;
   }

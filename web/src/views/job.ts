@@ -6,6 +6,7 @@
 import * as api from '../api';
 import { fill, fmtMs, h, notice } from '../dom';
 import type { View } from '../router';
+import { sim } from '../sim/client';
 import type { Job, JobEvent } from '../types';
 
 const STAGES = ['plan', 'forge', 'layout', 'bridge', 'verify'] as const;
@@ -28,6 +29,8 @@ interface StageRow {
 
 export const jobView: View = (root, params, query) => {
   const id = params.id ?? '';
+  // MuJoCo's WebAssembly compiles while the job runs, ready for the scene.
+  sim.warm();
   const head = h('div', { class: 'job-head' }, h('h1', { text: 'Building the scene' }));
   const promptLine = h('p', { class: 'prompt-line' });
   const conn = h('div', { class: 'status', id: 'conn' });

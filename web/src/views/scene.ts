@@ -41,6 +41,7 @@ export const sceneView: View = (root, params, query) => {
   };
   p.bodyPosition = (name) => viewer.bodyPosition(name);
   p.bodies = () => model?.bodies.map((b) => b.name) ?? [];
+  p.renderInfo = () => viewer.info();
   p.bench = (s) => sim.bench(s);
   p.unload = () => sim.unload();
   let model: { bodies: { name: string; root: number }[] } | null = null;
