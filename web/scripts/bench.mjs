@@ -68,7 +68,7 @@ async function coldLoad(ctx, server, token, scene) {
 }
 
 async function main() {
-  const server = await startServer({ args: ['--workers', '2'] });
+  const server = await startServer();
   const browser = await chromium.launch(CHROMIUM);
   const out = { date: new Date().toISOString().slice(0, 10), browser: browser.version(), binary: process.env.SCENEWRIGHT_BIN ?? 'newest target/*/scenewright' };
   try {
@@ -94,9 +94,14 @@ async function main() {
     const dist = path.join(WEB, 'dist', 'assets');
     const workerFiles = fs.readdirSync(dist).filter((f) => /^(sim\.worker|mujoco)-.*\.(js|wasm)$/.test(f));
     let workerBytes = 0;
+    const workerSeen = [];
     for (const f of workerFiles) {
+      // Node's fetch decodes the body: the bytes on the wire are the Content-Length.
       const r = await fetch(`${server.url}/assets/${f}`, { headers: { 'accept-encoding': 'gzip, deflate, br, zstd' } });
-      workerBytes += (await r.arrayBuffer()).byteLength;
+      await r.arrayBuffer();
+      const n = Number(r.headers.get('content-length'));
+      workerBytes += n;
+      workerSeen.push(`/assets/${f} ${r.headers.get('content-encoding') ?? 'identity'} ${n}`);
     }
     let pageBytes = 0;
     const seen = [];
@@ -113,7 +118,7 @@ async function main() {
       worker_and_wasm_bytes: workerBytes,
       total_mb: +((pageBytes + workerBytes) / 1e6).toFixed(2),
       gzip_js_wasm_mb: +(gz(/\.(js|wasm)$/) / 1e6).toFixed(2),
-      responses: seen,
+      responses: [...seen, ...workerSeen],
     };
     say(`transfer: ${out.transfer.total_mb} MB as Chromium receives it (brotli); JS + wasm gzipped ${out.transfer.gzip_js_wasm_mb} MB`);
 

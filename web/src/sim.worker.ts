@@ -17,7 +17,12 @@ interface Loaded {
 }
 
 const ctx = self as unknown as DedicatedWorkerGlobalScope;
+const ROOT = '/pkg';
 let mujoco: Promise<MainModule> | null = null;
+/** The newest load asked for; an older one still fetching stops before compiling. */
+let latestLoad = 0;
+/** Loads and unloads run one after another (each frees what the one before made). */
+let queue: Promise<void> = Promise.resolve();
 let current: Loaded | null = null;
 let playing = false;
 let speed = 1;
@@ -119,7 +124,12 @@ async function load(msg: Extract<ToWorker, { type: 'load' }>): Promise<void> {
   const wanted = msg.files.filter((f) => f.endsWith('.xml') || f.startsWith('assets/'));
   const data = await fetchAll(msg.base, msg.token, wanted, msg.id);
   const t1 = performance.now();
-  const root = `/scene-${msg.id}`;
+  if (msg.id !== latestLoad) throw new Error('superseded by another scene');
+  // One root for every scene: MuJoCo keeps decoded meshes in an asset cache keyed by path,
+  // and package paths name their content (meshes are content-addressed, robot files are
+  // the model's own), so the same path is the same bytes — a fresh root per load would
+  // fill the cache with copies (the heap grew ~60 MB per robot-pack load).
+  const root = ROOT;
   const xml = new TextDecoder().decode(data.get(msg.scene) ?? new Uint8Array());
   const meshdir = (/<compiler\b[^>]*\bmeshdir\s*=\s*"([^"]*)"/.exec(xml)?.[1] ?? '').replace(/\/+$/, '');
   const fast = fastMeshes(xml, data, meshdir);
@@ -274,8 +284,14 @@ engine().catch(() => undefined);
 
 ctx.onmessage = (e: MessageEvent<ToWorker>) => {
   const msg = e.data;
-  handle(msg).catch((err: unknown) => {
+  const fail = (err: unknown) => {
     const id = 'id' in msg ? msg.id : -1;
     post({ type: 'error', id, message: message(err) });
-  });
+  };
+  if (msg.type === 'load' || msg.type === 'unload') {
+    if (msg.type === 'load') latestLoad = msg.id;
+    queue = queue.then(() => handle(msg)).catch(fail);
+  } else {
+    handle(msg).catch(fail);
+  }
 };

@@ -177,30 +177,40 @@ function decodeViolation(v: unknown, what: string): Violation {
 
 /** A relation the report says holds or not (issue 12's `relations`, read tolerantly). */
 export interface RelationCheck {
+  /** The plan group it constrains (objects are `<group>_<n>` or share its category). */
   subject: string;
   relation: string;
-  target: string;
+  /** The groups, wall or corner it names. */
+  targets: string[];
+  /** The relation in the prompt's words, when the report gives them. */
+  phrase: string;
   held: boolean | null;
   measured: string;
+  reason: string;
 }
+
+const RELATION_FIELDS = ['subject', 'relation', 'target', 'targets', 'first', 'second', 'wall', 'corner', 'held', 'kind', 'phrase', 'reason', 'subject_category', 'target_categories', 'objects'];
 
 function decodeRelation(v: unknown, what: string): RelationCheck {
   const o = obj(v, what);
   const measured: string[] = [];
-  for (const [k, x] of Object.entries(o)) {
-    if (['subject', 'relation', 'target', 'held', 'kind', 'targets', 'objects'].includes(k)) continue;
+  const add = (k: string, x: unknown) => {
     if (typeof x === 'number') measured.push(`${k.replace(/_/g, ' ')} ${fmt(x)}`);
-    if (isObj(x)) {
-      for (const [k2, y] of Object.entries(x)) if (typeof y === 'number') measured.push(`${k2.replace(/_/g, ' ')} ${fmt(y)}`);
-    }
+  };
+  for (const [k, x] of Object.entries(o)) {
+    if (RELATION_FIELDS.includes(k)) continue;
+    add(k, x);
+    if (isObj(x)) for (const [k2, y] of Object.entries(x)) add(k2, y);
   }
-  const target = optStr(o, 'target') ?? strList(o, 'targets').join(', ');
+  const targets = ['target', 'first', 'second', 'wall', 'corner'].map((k) => optStr(o, k)).filter((t): t is string => t !== null);
   return {
     subject: str(o, 'subject', what),
-    relation: optStr(o, 'relation') ?? optStr(o, 'kind') ?? '?',
-    target,
+    relation: (optStr(o, 'relation') ?? optStr(o, 'kind') ?? '?').replace(/_/g, ' '),
+    targets: [...targets, ...strList(o, 'targets')],
+    phrase: optStr(o, 'phrase') ?? '',
     held: typeof o.held === 'boolean' ? o.held : null,
     measured: measured.join(', '),
+    reason: optStr(o, 'reason') ?? '',
   };
 }
 

@@ -272,6 +272,22 @@ async function main() {
     assert(Math.hypot(drawnAfter[0] - after[0], drawnAfter[1] - after[1]) < 0.01, 'the moved object is drawn where v3 puts it');
     log(`dragged ${dragged.name} ${moved.toFixed(2)} m → v3`);
 
+    // Shift-drag turns it where it stands: 120 px to the right is 30°.
+    const p1 = await page.evaluate((n) => window.__sw.objectOnScreen(n), dragged.name);
+    await page.keyboard.down('Shift');
+    await page.mouse.move(p1.x, p1.y);
+    await page.mouse.down();
+    for (let k = 1; k <= 6; k++) await page.mouse.move(p1.x + 20 * k, p1.y);
+    await page.mouse.up();
+    await page.keyboard.up('Shift');
+    const v3b = await waitForNewScene(page, v3);
+    const turnedTo = (await api(server, token, 'GET', `/api/scenes/${v3b}/files/layout.json`)).json.objects.find((o) => o.name === dragged.name);
+    const before3 = layout3.objects.find((o) => o.name === dragged.name);
+    const dYaw = (((turnedTo.yaw - before3.yaw) * 180) / Math.PI + 540) % 360 - 180;
+    assert(Math.abs(dYaw - 30) < 0.01, `turned by ${dYaw}°`);
+    assert(Math.hypot(turnedTo.pos[0] - before3.pos[0], turnedTo.pos[1] - before3.pos[1]) < 1e-6, 'turning kept its place');
+    log(`shift-dragged ${dragged.name}: turned ${dYaw.toFixed(1)}° in place → v4`);
+
     // --- Asset studio: a part made, one that cannot be made ---
     await page.click('a[href="/studio"]');
     await page.fill('#part-description', 'a sentient teapot that sings opera');
@@ -295,16 +311,17 @@ async function main() {
     log(`made a washer (${meshSize}); searching "a big ring-shaped spacer" by meaning ranks it first`);
 
     // --- Drag the part from the library into the open scene ---
-    await page.goto(`${server.url}/scenes/${v3}?tab=parts`);
+    await page.goto(`${server.url}/scenes/${v3b}?tab=parts`);
     await waitReady(page);
     await page.fill('.part-search', 'washer');
     const item = page.locator(`li.part[data-part="${plate.id}"]`);
     await item.waitFor();
     const vb = await page.locator('#viewer').boundingBox();
     await item.dragTo(page.locator('#viewer'), { targetPosition: { x: vb.width * 0.3, y: vb.height * 0.75 } });
-    const v4 = await waitForNewScene(page, v3);
+    const v4 = await waitForNewScene(page, v3b);
     const layout4 = (await api(server, token, 'GET', `/api/scenes/${v4}/files/layout.json`)).json;
     const added = layout4.objects.filter((o) => !layout3.objects.some((x) => x.name === o.name));
+    assert(layout4.objects.length === layout3.objects.length + 1, 'one object more');
     assert(added.length === 1 && added[0].category === 'proxy', `the part is in the scene: ${JSON.stringify(added)}`);
     const v4detail = (await api(server, token, 'GET', `/api/scenes/${v4}`)).json;
     assert(v4detail.files.includes('parts.json'), 'the part travels with the package');
@@ -312,12 +329,12 @@ async function main() {
 
     // --- Versions and the way back ---
     await page.locator('button[data-tab="history"]').click();
-    await page.locator('#history li[data-version="4"]').waitFor();
+    await page.locator('#history li[data-version="5"]').waitFor();
     await shot(page, '07-versions');
     await page.locator('#history li[data-version="1"] a').click();
     await page.waitForURL(`${server.url}/scenes/${sceneId}`);
     await waitReady(page);
-    log('history lists 4 versions; v1 opens');
+    log('history lists 5 versions; v1 opens');
 
     // --- Download the zip and load it with MuJoCo (WASM) ---
     const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
@@ -329,7 +346,7 @@ async function main() {
     assert(loaded.ok, `the downloaded package: ${loaded.error}`);
     log(`downloaded package.zip (${files.size} files) loads and settles in MuJoCo 3.14: largest move ${(loaded.max_displacement_m * 1000).toFixed(2)} mm`);
     // Every version this test made loads in the browser's MuJoCo too.
-    for (const [i, id] of [v2, v3, v4].entries()) {
+    for (const [i, id] of [v2, v3, v3b, v4].entries()) {
       const r = await fetch(`${server.url}/api/scenes/${id}/package.zip`, { headers: { authorization: `Bearer ${token}` } });
       const c = check(mj, `v${i + 2}`, readZip(Buffer.from(await r.arrayBuffer())), i + 1);
       assert(c.ok, `v${i + 2}: ${c.error}`);
@@ -339,7 +356,7 @@ async function main() {
     await page.click('a[href="/scenes"]');
     await page.waitForFunction(() => {
       const imgs = [...document.querySelectorAll('img.thumb')];
-      return imgs.length >= 4 && imgs.every((i) => i.complete && i.naturalWidth > 0);
+      return imgs.length >= 5 && imgs.every((i) => i.complete && i.naturalWidth > 0);
     }, null, { timeout: 60_000 });
     await shot(page, '08-my-scenes');
     await page.click('a[href="/settings"]');
@@ -378,6 +395,10 @@ async function main() {
     const layoutSteps = await page.locator('.stage[data-stage="layout"] .steps li').allInnerTexts();
     assert(new Set(layoutSteps).size === layoutSteps.length, 'no step shown twice after catching up');
     await page.unrouteAll({ behavior: 'ignoreErrors' });
+    const job2Scene = (await api(server, token, 'GET', `/api/jobs/${job2}`)).json.scene_id;
+    const zip2 = await fetch(`${server.url}/api/scenes/${job2Scene}/package.zip`, { headers: { authorization: `Bearer ${token}` } });
+    const c2 = check(await loadMujoco(), 'the office', readZip(Buffer.from(await zip2.arrayBuffer())), 9);
+    assert(c2.ok, `the office scene in MuJoCo 3.14: ${c2.error}`);
     log('a dropped socket: message shown, reconnected, caught up without repeats');
 
     // --- Bad input: another user's scene, an unknown scene ---

@@ -101,7 +101,7 @@ export const sceneView: View = (root, params, query) => {
     for (const b of tabs.querySelectorAll('button')) b.classList.toggle('on', b.dataset.tab === tab);
     switch (tab) {
       case 'object':
-        fill(side, selected && detail ? objectPanel(selected, layout, detail.report) : h('p', { class: 'muted', text: 'Click an object in the view to inspect it; drag it to move it.' }));
+        fill(side, selected && detail ? objectPanel(selected, layout, detail.report) : h('p', { class: 'muted', text: 'Click an object in the view to inspect it; drag it to move it, Shift-drag to turn it.' }));
         if (selected) side.append(objectActions(selected));
         return;
       case 'report':
@@ -190,7 +190,8 @@ export const sceneView: View = (root, params, query) => {
   };
 
   // --- Picking and dragging ---
-  let drag: { name: string; root: number; z: number; from: { x: number; y: number }; moved: boolean; start: { x: number; y: number } } | null = null;
+  // A drag moves the object; with Shift held it turns it about its origin instead.
+  let drag: { name: string; root: number; z: number; from: { x: number; y: number }; moved: boolean; start: { x: number; y: number }; turn: boolean } | null = null;
   stage.addEventListener('pointerdown', (e) => {
     if (e.button !== 0 || !model) return;
     const hit = viewer.pick(e.clientX, e.clientY);
@@ -203,18 +204,24 @@ export const sceneView: View = (root, params, query) => {
     }
     const at = viewer.planePoint(e.clientX, e.clientY, o.pos[2] ?? 0);
     if (!at) return;
-    drag = { name, root: hit.root, z: o.pos[2] ?? 0, from: { x: at.x, y: at.y }, moved: false, start: { x: e.clientX, y: e.clientY } };
+    drag = { name, root: hit.root, z: o.pos[2] ?? 0, from: { x: at.x, y: at.y }, moved: false, start: { x: e.clientX, y: e.clientY }, turn: e.shiftKey };
     viewer.setControlsEnabled(false);
     stage.setPointerCapture(e.pointerId);
   });
   stage.addEventListener('pointermove', (e) => {
     if (!drag) return;
     if (!drag.moved && Math.hypot(e.clientX - drag.start.x, e.clientY - drag.start.y) < 4) return;
+    drag.moved = true;
+    if (drag.turn) {
+      const deg = Math.round((e.clientX - drag.start.x) / 4 / 5) * 5;
+      viewer.setOffset(drag.root, 0, 0, (deg * Math.PI) / 180);
+      fill(status, notice('info', `Turning ${drag.name} by ${deg}°: release to turn it`));
+      return;
+    }
     const at = viewer.planePoint(e.clientX, e.clientY, drag.z);
     if (!at) return;
-    drag.moved = true;
     viewer.setOffset(drag.root, at.x - drag.from.x, at.y - drag.from.y, 0);
-    fill(status, notice('info', `Moving ${drag.name}: release to place it (${at.x.toFixed(2)}, ${at.y.toFixed(2)})`));
+    fill(status, notice('info', `Moving ${drag.name}: release to place it (${at.x.toFixed(2)}, ${at.y.toFixed(2)}); Shift-drag turns it`));
   });
   const endDrag = (e: PointerEvent) => {
     if (!drag) return;
@@ -226,8 +233,16 @@ export const sceneView: View = (root, params, query) => {
       select(d.name);
       return;
     }
-    const at = viewer.planePoint(e.clientX, e.clientY, d.z);
     const o = layout?.objects.find((x) => x.name === d.name);
+    if (d.turn && o) {
+      const deg = Math.round((e.clientX - d.start.x) / 4 / 5) * 5;
+      select(d.name);
+      fill(status);
+      if (deg !== 0) void runEdit({ move: { object: d.name, pos: [o.pos[0] ?? 0, o.pos[1] ?? 0], yaw_deg: (o.yaw * 180) / Math.PI + deg } }, `Turning ${d.name}`);
+      else viewer.clearOffsets();
+      return;
+    }
+    const at = viewer.planePoint(e.clientX, e.clientY, d.z);
     if (!at || !o) return;
     const x = (o.pos[0] ?? 0) + at.x - d.from.x;
     const y = (o.pos[1] ?? 0) + at.y - d.from.y;

@@ -21,9 +21,8 @@ export function objectPanel(name: string, layout: Layout | null, report: Report)
     rows.push(['position', `${robot.pos.map((v) => v.toFixed(2)).join(', ')} m`]);
   }
   const group = o?.group;
-  const relations = report.relations.filter(
-    (r) => r.subject === name || r.target.split(', ').includes(name) || (group !== undefined && (r.subject === group || r.target === group)),
-  );
+  const mine = (g: string) => g === name || (group !== undefined && g === group);
+  const relations = report.relations.filter((r) => mine(r.subject) || r.targets.some(mine));
   const violations = report.violations.filter((v) => v.objects.includes(name));
   const anomalies = layout?.anomalies.filter((a) => a.object === name) ?? [];
   return h(
@@ -40,9 +39,10 @@ export function objectPanel(name: string, layout: Layout | null, report: Report)
             h(
               'li',
               { class: r.held === false ? 'bad' : r.held ? 'good' : '' },
-              `${r.subject} ${r.relation.replace(/_/g, ' ')} ${r.target}`,
+              r.phrase ? `“${r.phrase}”` : `${r.subject} ${r.relation} ${r.targets.join(', ')}`,
               r.held === null ? '' : r.held ? ' — holds' : ' — does not hold',
               r.measured ? ` (${r.measured})` : '',
+              r.reason ? `: ${r.reason}` : '',
             ),
           ),
         )
@@ -68,6 +68,7 @@ export function reportPanel(detail: SceneDetail): HTMLElement {
   if (r.room) facts.push(['room', `${r.room}${r.roomSize ? ` ${r.roomSize.map((x) => x.toFixed(1)).join(' × ')} m` : ''}`]);
   if (r.objectsPlaced !== null) facts.push(['objects', `${r.objectsPlaced} of ${r.objectsRequested ?? r.objectsPlaced} placed`]);
   if (r.robots.length) facts.push(['robots', r.robots.join(', ')]);
+  if (r.relations.length) facts.push(['relations', `${r.relations.filter((x) => x.held).length} of ${r.relations.length} hold`]);
   if (v) {
     facts.push(['engine', `${v.engine}, ${v.compiled ? 'compiled' : 'did not compile'}`]);
     if (v.contacts !== null) facts.push(['at t = 0', `${v.contacts} contacts deeper than 1 mm${v.maxDepth ? `, deepest ${(v.maxDepth * 1000).toFixed(2)} mm` : ''}`]);
@@ -84,6 +85,7 @@ export function reportPanel(detail: SceneDetail): HTMLElement {
     h('dl', {}, ...facts.flatMap(([k, val]) => [h('dt', { text: k }), h('dd', { text: val })])),
     ...list('Failures', v?.failures ?? [], 'bad'),
     ...list('Expected (labelled anomalies)', v?.expected ?? []),
+    ...list('Relations that do not hold', r.relations.filter((x) => x.held === false).map((x) => `${x.phrase || `${x.subject} ${x.relation} ${x.targets.join(', ')}`}${x.reason ? `: ${x.reason}` : ''}`), 'bad'),
     ...list('Rule violations', r.violations.map((x) => `${x.message}${x.requested ? ' (asked for)' : ''}`), 'bad'),
     ...list('Left out', r.leftOut.map((l) => `${l.category}: ${l.placed} of ${l.requested} placed — ${l.reason}`)),
     ...list('Not understood', r.notUnderstood.map((n) => `“${n.text}”: ${n.reason}`)),
