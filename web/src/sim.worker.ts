@@ -151,9 +151,11 @@ async function load(msg: Extract<ToWorker, { type: 'load' }>): Promise<void> {
   }
   post({ type: 'progress', id: msg.id, message: 'compiling in MuJoCo' });
   let model: MjModel | null = null;
+  let usedFast = false;
   if (fast) {
     try {
       model = mj.MjModel.from_xml_path(`${root}/${fastScene}`);
+      usedFast = true;
     } catch {
       // The package as it is, below.
       model = null;
@@ -179,7 +181,7 @@ async function load(msg: Extract<ToWorker, { type: 'load' }>): Promise<void> {
       id: msg.id,
       model: info,
       poses: p,
-      timings: { fetchMs: t1 - t0, compileMs: t2 - t1, extractMs: t3 - t2, bytes, files: data.size },
+      timings: { fetchMs: t1 - t0, compileMs: t2 - t1, extractMs: t3 - t2, bytes, files: data.size, converted: usedFast ? (fast?.converted.size ?? 0) : 0 },
     },
     [p.buffer],
   );

@@ -352,11 +352,34 @@ async function main() {
       assert(c.ok, `v${i + 2}: ${c.error}`);
     }
 
+    // --- A robot-pack scene (robosuite's Panda, OBJ meshes): drawn where MuJoCo puts it ---
+    const packJob = (await api(server, token, 'POST', '/api/jobs', { prompt: 'a lab with a workbench', robots: ['robosuite_panda'] })).json.job_id;
+    await page.goto(`${server.url}/jobs/${packJob}`);
+    await page.locator('#open-scene').waitFor({ timeout: 180_000 });
+    await page.click('#open-scene');
+    await waitReady(page);
+    const packId = await page.evaluate(() => location.pathname.split('/')[2]);
+    const packLayout = (await api(server, token, 'GET', `/api/scenes/${packId}/files/layout.json`)).json;
+    const arm = packLayout.robots[0];
+    const armBody = (await page.evaluate(() => window.__sw.bodies())).find((b) => b.startsWith(`${arm.name}_`));
+    const drawnArm = await page.evaluate((n) => window.__sw.bodyPosition(n), armBody);
+    assert(Math.hypot(drawnArm[0] - arm.pos[0], drawnArm[1] - arm.pos[1]) < 0.01, `${armBody} drawn at ${drawnArm}, spawned at ${arm.pos}`);
+    const packTimings = await page.evaluate(() => window.__sw.timings);
+    assert(packTimings.converted > 0, 'the OBJ fast path was taken');
+    const packPng = await page.locator('#viewer').screenshot();
+    const packStats = await pixelStats(page, packPng);
+    assert(packStats.colours > 40 && packStats.std > 12, `the robot-pack canvas looks blank: ${JSON.stringify(packStats)}`);
+    const packZip = await fetch(`${server.url}/api/scenes/${packId}/package.zip`, { headers: { authorization: `Bearer ${token}` } });
+    const packCheck = check(mj, 'the robot-pack scene', readZip(Buffer.from(await packZip.arrayBuffer())), 8);
+    assert(packCheck.ok, `the robot-pack package in MuJoCo 3.14: ${packCheck.error}`);
+    await shot(page, '13-robot-pack');
+    log(`robot pack: ${packTimings.converted} OBJ meshes read by the worker, compiled in ${packTimings.compileMs.toFixed(0)} ms; ${armBody} drawn at its spawn point`);
+
     // --- My scenes, settings ---
     await page.click('a[href="/scenes"]');
     await page.waitForFunction(() => {
       const imgs = [...document.querySelectorAll('img.thumb')];
-      return imgs.length >= 5 && imgs.every((i) => i.complete && i.naturalWidth > 0);
+      return imgs.length >= 6 && imgs.every((i) => i.complete && i.naturalWidth > 0);
     }, null, { timeout: 60_000 });
     await shot(page, '08-my-scenes');
     await page.click('a[href="/settings"]');

@@ -80,6 +80,8 @@ export interface LoadTimings {
   extractMs: number;
   bytes: number;
   files: number;
+  /** OBJ meshes read by the worker and handed to MuJoCo as STL (0: loaded as they are). */
+  converted: number;
 }
 
 export type ToWorker =
