@@ -104,8 +104,16 @@ async fn owners_and_others(db: Db) {
             (Method::GET, format!("/api/scenes/{scene}/files/scene.xml"), None),
             (Method::GET, format!("/api/scenes/{scene}/package.zip"), None),
             (Method::POST, format!("/api/scenes/{scene}/edits"), Some(json!({"command": "remove chair_1"}))),
-            (Method::POST, format!("/api/scenes/{scene}/edits"), Some(json!({"move": {"object": "chair_1", "pos": [0, 0]}}))),
-            (Method::POST, format!("/api/scenes/{scene}/edits"), Some(json!({"place": {"asset": "catalog:crate", "pos": [0, 0]}}))),
+            (
+                Method::POST,
+                format!("/api/scenes/{scene}/edits"),
+                Some(json!({"move": {"object": "chair_1", "pos": [0, 0]}})),
+            ),
+            (
+                Method::POST,
+                format!("/api/scenes/{scene}/edits"),
+                Some(json!({"place": {"asset": "catalog:crate", "pos": [0, 0]}})),
+            ),
             (Method::GET, format!("/api/scenes/{scene}/versions"), None),
             (Method::GET, format!("/api/scenes/{scene}/thumbnail.png"), None),
             (Method::GET, format!("/api/assets/{asset}"), None),
