@@ -1,84 +1,92 @@
-//! `bench cad --suite standard_100|abstract_45|FILE`: every prompt of a CAD suite through
-//! a writer and the sandboxed runner — execution rate, retries, failure kinds, extent and
-//! volume errors against the suite's references (and Chamfer distance where a reference
-//! mesh is given), and the runner's warm latency. The writer is the offline template
-//! synthesizer, or (`--writer llm`) the CAD stage's model in the generation loop: up to
-//! three attempts, each failure fed back, as the paper measures its retries.
+//! `bench cad --suite standard_100|abstract_45|features|FILE`: every prompt of a CAD suite
+//! through a writer and the sandboxed runner. Per tier: how many were made (executed, a
+//! closed solid), how many are within tolerance of the suite's independent reference
+//! (bounding box within 1 %, volume within 2 %), the Chamfer distance to the reference
+//! mesh (made from the suite's reference programs, after aligning bounding boxes), and
+//! for free-form suites whether the size is plausible; the runner's warm latency. The
+//! writer is the offline synthesizer (the feature language, free-form compositions, the
+//! catalog), or (`--writer llm`) the CAD stage's model in the generation loop: up to three
+//! attempts, each failure fed back, as the paper measures its retries. With
+//! `SCENEWRIGHT_CAD_SHEET=FILE.png` the made parts are drawn on a contact sheet.
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 use serde::Serialize;
 use sw_forge::failure::FailureKind;
+use sw_forge::freeform::{Offline, catalog_mesh_mm, offline};
 use sw_forge::generate::{CodeWriter, ForgeOutcome, LlmWriter, LoopConfig, PartRequest, forge};
-use sw_forge::metrics::{chamfer_distance, extent_error};
+use sw_forge::metrics::extent_error;
 use sw_forge::runner::{CadJob, CadRunner};
+use sw_forge::suite::{Plausible, Prompt, Reference, Tile, chamfer_aligned, contact_sheet, parse_programs, parse_refs, parse_sizes, parse_suite};
 use sw_forge::{mesh_io, synth, validate};
+use sw_geom::Mesh;
 
 use crate::Failure;
 use crate::output::{print, print_json};
 
 const STANDARD_100: &str = include_str!("../../../bench/cad/standard_100.tsv");
 const STANDARD_100_REFS: &str = include_str!("../../../bench/cad/standard_100.refs.tsv");
+const STANDARD_100_PROGRAMS: &str = include_str!("../../../bench/cad/standard_100.ref.py");
+const FEATURES: &str = include_str!("../../../bench/cad/features.tsv");
+const FEATURES_REFS: &str = include_str!("../../../bench/cad/features.refs.tsv");
+const FEATURES_PROGRAMS: &str = include_str!("../../../bench/cad/features.ref.py");
 const ABSTRACT_45: &str = include_str!("../../../bench/cad/abstract_45.tsv");
+const ABSTRACT_45_SIZES: &str = include_str!("../../../bench/cad/abstract_45.sizes.tsv");
 
 /// Size tolerance and volume tolerance of a pass.
 const SIZE_TOL: f64 = 0.01;
 const VOLUME_TOL: f64 = 0.02;
-
-#[derive(Debug, Clone)]
-struct Prompt {
-    id: String,
-    tier: String,
-    text: String,
-}
-
-#[derive(Debug, Clone)]
-struct Reference {
-    size: [f64; 3],
-    volume: Option<f64>,
-    mesh: Option<PathBuf>,
-}
+/// Surface samples per mesh for the Chamfer distance.
+const CHAMFER_SAMPLES: usize = 2000;
 
 #[derive(Debug, Clone, Serialize)]
 struct Outcome {
     id: String,
     tier: String,
-    template: Option<String>,
-    /// The code ran and gave a closed solid.
+    /// What made it: `features`, `freeform:<object>`, `catalog:<category>`, or the model.
+    made_by: Option<String>,
+    /// The part was made: the code ran and gave a closed solid (or the catalog made it).
     executed: bool,
-    /// Template: re-runs after a runner failure (a timeout or a worker that died). Model:
-    /// attempts after the first (each after a failure fed back).
+    /// Template: re-runs after a runner failure. Model: attempts after the first.
     retries: u32,
-    /// Why it failed, when it did (the taxonomy's kind).
     failure: Option<FailureKind>,
     message: Option<String>,
-    /// Against the suite's reference (sorted extents).
+    size_mm: Option<[f64; 3]>,
     bbox_error: Option<f64>,
     volume_error: Option<f64>,
-    chamfer_mm: Option<f64>,
-    /// Both within tolerance of the reference.
+    /// Within 1 % bbox and 2 % volume of the reference.
     pass: Option<bool>,
+    chamfer_mm: Option<f64>,
+    /// Chamfer distance as a share of the reference's bounding-box diagonal.
+    chamfer_rel: Option<f64>,
+    /// Free-form: the largest extent is one a real object of the kind has.
+    plausible: Option<bool>,
     roundtrip_ms: Option<f64>,
+    #[serde(skip)]
+    mesh: Option<Mesh>,
 }
 
 #[derive(Debug, Default, Serialize)]
 struct TierSummary {
     prompts: usize,
     executed: usize,
-    /// Prompts that needed more than one attempt.
     retried: usize,
     with_reference: usize,
     bbox_within_1pct: usize,
     volume_within_2pct: usize,
+    /// Both, of those with a reference.
     passed: usize,
-    retries: u32,
+    with_chamfer: usize,
+    median_chamfer_mm: Option<f64>,
+    max_chamfer_mm: Option<f64>,
+    median_chamfer_rel: Option<f64>,
+    with_plausibility: usize,
+    plausible: usize,
     failures: BTreeMap<String, usize>,
-    median_bbox_error: Option<f64>,
-    median_volume_error: Option<f64>,
 }
 
 #[derive(Debug, Serialize)]
@@ -89,7 +97,6 @@ struct Latency {
     min_ms: f64,
 }
 
-/// The model's calls, when it wrote the code.
 #[derive(Debug, Serialize)]
 struct ModelCalls {
     model: String,
@@ -102,111 +109,83 @@ struct ModelCalls {
 #[derive(Debug, Serialize)]
 struct CadBench {
     suite: String,
-    /// `template` or `llm:<model>`.
     writer: String,
     workers: usize,
     wall_s: f64,
     parts_per_s: f64,
     tiers: BTreeMap<String, TierSummary>,
-    /// The target subset: T1 and T2's washers and hole-pattern plates.
-    target: TierSummary,
-    /// Warm runner, one simple part per job (T1 parts that executed, repeated).
+    all: TierSummary,
+    /// Every part that ran code, in the suite run (parallel workers).
+    part_latency: Option<Latency>,
+    /// Warm runner, one part per job, the suite's first-tier parts run again one at a time.
     warm_latency: Option<Latency>,
     #[serde(skip_serializing_if = "Option::is_none")]
     model_calls: Option<ModelCalls>,
     outcomes: Vec<Outcome>,
 }
 
-fn parse_suite(text: &str) -> Vec<Prompt> {
-    text.lines()
-        .filter(|l| !l.trim().is_empty() && !l.starts_with('#'))
-        .filter_map(|l| {
-            let mut cols = l.splitn(3, '\t');
-            let (id, tier, text) = (cols.next()?, cols.next()?, cols.next()?);
-            Some(Prompt { id: id.trim().into(), tier: tier.trim().into(), text: text.trim().into() })
-        })
-        .collect()
+/// A suite: its prompts, reference sizes, reference programs and plausible sizes.
+struct Suite {
+    name: String,
+    prompts: Vec<Prompt>,
+    refs: BTreeMap<String, Reference>,
+    programs: BTreeMap<String, String>,
+    sizes: BTreeMap<String, Plausible>,
 }
-
-fn parse_refs(text: &str, base: Option<&Path>) -> BTreeMap<String, Reference> {
-    text.lines()
-        .filter(|l| !l.trim().is_empty() && !l.starts_with('#'))
-        .filter_map(|l| {
-            let c: Vec<&str> = l.split('\t').map(str::trim).collect();
-            let num = |i: usize| c.get(i).and_then(|s| s.parse::<f64>().ok());
-            let size = [num(1)?, num(2)?, num(3)?];
-            let mesh = c.get(5).filter(|m| **m != "-" && !m.is_empty()).map(|m| match base {
-                Some(b) => b.join(m),
-                None => PathBuf::from(m),
-            });
-            Some((c.first()?.to_string(), Reference { size, volume: num(4), mesh }))
-        })
-        .collect()
-}
-
-/// A suite's name, prompts and references by id.
-type Suite = (String, Vec<Prompt>, BTreeMap<String, Reference>);
 
 fn load(suite: &str) -> Result<Suite, Failure> {
+    let bundled = |name: &str, p: &str, r: &str, g: &str, z: &str| Suite {
+        name: name.into(),
+        prompts: parse_suite(p),
+        refs: parse_refs(r),
+        programs: parse_programs(g),
+        sizes: parse_sizes(z),
+    };
     match suite {
-        "standard_100" => Ok((suite.into(), parse_suite(STANDARD_100), parse_refs(STANDARD_100_REFS, None))),
-        "abstract_45" => Ok((suite.into(), parse_suite(ABSTRACT_45), BTreeMap::new())),
+        "standard_100" => Ok(bundled(suite, STANDARD_100, STANDARD_100_REFS, STANDARD_100_PROGRAMS, "")),
+        "features" => Ok(bundled(suite, FEATURES, FEATURES_REFS, FEATURES_PROGRAMS, "")),
+        "abstract_45" => Ok(bundled(suite, ABSTRACT_45, "", "", ABSTRACT_45_SIZES)),
         path => {
             let p = Path::new(path);
             let text = fs_err::read_to_string(p).map_err(|e| {
-                Failure::input(format!("unknown suite '{path}' (standard_100, abstract_45 or a TSV file): {e}"))
+                Failure::input(format!("unknown suite '{path}' (standard_100, abstract_45, features or a TSV file): {e}"))
             })?;
             let prompts = parse_suite(&text);
             if prompts.is_empty() {
                 return Err(Failure::input(format!("{path}: no prompts (id<TAB>tier<TAB>prompt per line)")));
             }
-            let refs_path = p.with_extension("refs.tsv");
-            let refs = match fs_err::read_to_string(&refs_path) {
-                Ok(t) => parse_refs(&t, p.parent()),
-                Err(_) => BTreeMap::new(),
-            };
-            Ok((path.into(), prompts, refs))
+            // Beside it: STEM.refs.tsv, STEM.ref.py, STEM.sizes.tsv.
+            let side = |ext: &str| fs_err::read_to_string(p.with_extension(ext)).unwrap_or_default();
+            Ok(Suite { name: path.into(), prompts, refs: parse_refs(&side("refs.tsv")), programs: parse_programs(&side("ref.py")), sizes: parse_sizes(&side("sizes.tsv")) })
         }
     }
-}
-
-fn is_target(p: &Prompt) -> bool {
-    let t = p.text.to_ascii_lowercase();
-    p.tier == "T1" || (p.tier == "T2" && (t.contains("washer") || (t.contains("plate") && t.contains("hole"))))
 }
 
 fn blank(p: &Prompt) -> Outcome {
     Outcome {
         id: p.id.clone(),
         tier: p.tier.clone(),
-        template: None,
+        made_by: None,
         executed: false,
         retries: 0,
         failure: None,
         message: None,
+        size_mm: None,
         bbox_error: None,
         volume_error: None,
-        chamfer_mm: None,
         pass: None,
+        chamfer_mm: None,
+        chamfer_rel: None,
+        plausible: None,
         roundtrip_ms: None,
+        mesh: None,
     }
 }
 
-/// One prompt through the template synthesizer and the runner.
-fn one(runner: &CadRunner, p: &Prompt, reference: Option<&Reference>) -> Outcome {
-    let mut o = blank(p);
-    let s = match synth::synthesize(&p.text) {
-        Ok(s) => s,
-        Err(e) => {
-            o.failure = Some(FailureKind::Writer);
-            o.message = Some(e.to_string());
-            return o;
-        }
-    };
-    o.template = Some(s.template.clone());
-    let job = CadJob::cadquery(s.code.clone());
+/// Runs code, retrying once when the runner (not the code) failed.
+fn run_code(runner: &CadRunner, code: &str, o: &mut Outcome) -> Option<Mesh> {
+    let job = CadJob::cadquery(code.to_string());
     let mut run = runner.run(&job);
-    // A runner failure (not the code's) is retried once.
     while let Err(e) = &run {
         if o.retries >= 1 || !matches!(e.failure.kind, FailureKind::Runner | FailureKind::Timeout) {
             break;
@@ -214,37 +193,62 @@ fn one(runner: &CadRunner, p: &Prompt, reference: Option<&Reference>) -> Outcome
         o.retries += 1;
         run = runner.run(&job);
     }
-    let mut run = match run {
-        Ok(r) => r,
+    match run {
+        Ok(mut r) => {
+            o.roundtrip_ms = Some(r.timings.roundtrip_ms);
+            mesh_io::drop_collapsed_triangles(&mut r.mesh);
+            Some(r.mesh)
+        }
         Err(e) => {
             o.failure = Some(e.failure.kind);
-            o.message = Some(e.failure.message.clone());
+            o.message = Some(e.failure.message.lines().next().unwrap_or("").to_string());
+            None
+        }
+    }
+}
+
+/// One prompt through the offline synthesizer (and the runner for code).
+fn one(runner: &CadRunner, p: &Prompt) -> Outcome {
+    let mut o = blank(p);
+    let (mesh, promise) = match offline(&p.text) {
+        Ok(Offline::Code(s)) => {
+            o.made_by = Some(s.template.clone());
+            (run_code(runner, &s.code, &mut o), Some(s))
+        }
+        Ok(Offline::Catalog { category, asset }) => {
+            o.made_by = Some(format!("catalog:{category}"));
+            (Some(catalog_mesh_mm(&asset)), None)
+        }
+        Err(e) => {
+            o.failure = Some(FailureKind::Writer);
+            o.message = Some(e.to_string());
             return o;
         }
     };
-    o.roundtrip_ms = Some(run.timings.roundtrip_ms);
-    mesh_io::drop_collapsed_triangles(&mut run.mesh);
-    // Executed: the code made a closed solid with positive volume.
-    if let Err(f) = validate::validate(&run.mesh, &validate::Target::default()) {
+    let Some(mesh) = mesh else { return o };
+    // Executed: a closed solid with positive volume.
+    if let Err(f) = validate::validate(&mesh, &validate::Target::default()) {
         o.failure = Some(f.kind);
         o.message = Some(f.message);
         return o;
     }
     o.executed = true;
-    // The synthesizer's own promise (size, volume, holes).
-    if let Err(f) = validate::validate(&run.mesh, &s.target()) {
+    // The synthesizer's own promise (its certain extents, its volume when exact).
+    if let Some(s) = promise
+        && let Err(f) = validate::validate(&mesh, &s.target())
+    {
         o.failure = Some(f.kind);
-        o.message = Some(f.message);
+        o.message = Some(format!("against its own promise: {}", f.message));
     }
-    compare(&mut o, &run.mesh, reference);
+    o.size_mm = Some(mesh.bounds().size());
+    o.mesh = Some(mesh);
     o
 }
 
-/// One prompt through the generation loop with the model as writer: the prompt is the
-/// description (its dimensions are in its words), up to three attempts.
-fn one_by_model(runner: &CadRunner, writer: &dyn CodeWriter, p: &Prompt, reference: Option<&Reference>) -> Outcome {
+/// One prompt through the generation loop with the model as writer.
+fn one_by_model(runner: &CadRunner, writer: &dyn CodeWriter, p: &Prompt) -> Outcome {
     let mut o = blank(p);
-    o.template = Some(writer.name());
+    o.made_by = Some(writer.name());
     let request = PartRequest { description: p.text.clone(), size_m: None };
     let t = Instant::now();
     match forge(runner, writer, &request, LoopConfig::default()) {
@@ -252,7 +256,8 @@ fn one_by_model(runner: &CadRunner, writer: &dyn CodeWriter, p: &Prompt, referen
             o.retries = part.attempts.len().saturating_sub(1) as u32;
             o.roundtrip_ms = Some(t.elapsed().as_secs_f64() * 1e3);
             o.executed = true;
-            compare(&mut o, &part.mesh_mm, reference);
+            o.size_mm = Some(part.mesh_mm.bounds().size());
+            o.mesh = Some(part.mesh_mm);
         }
         ForgeOutcome::Failed { attempts, .. } => {
             o.retries = attempts.len().saturating_sub(1) as u32;
@@ -265,28 +270,39 @@ fn one_by_model(runner: &CadRunner, writer: &dyn CodeWriter, p: &Prompt, referen
     o
 }
 
-/// Measures an executed part against the suite's reference, when there is one.
-fn compare(o: &mut Outcome, mesh: &sw_geom::Mesh, reference: Option<&Reference>) {
-    let Some(r) = reference else { return };
+/// Measures an executed part against the suite's reference and plausible size.
+fn compare(o: &mut Outcome, reference: Option<&Reference>, reference_mesh: Option<&Mesh>, plausible: Option<&Plausible>) {
+    let Some(mesh) = o.mesh.as_ref() else { return };
     let measured = validate::measure(mesh);
-    let be = extent_error(measured.size, r.size);
-    o.bbox_error = Some(be);
-    let ve = r.volume.filter(|v| *v > 0.0).map(|v| (measured.volume - v).abs() / v);
-    o.volume_error = ve;
-    o.pass = Some(be <= SIZE_TOL && ve.is_none_or(|e| e <= VOLUME_TOL));
-    if let Some(path) = &r.mesh {
-        match mesh_io::read_untrusted_stl(path, 256 << 20) {
-            Ok(reference_mesh) => o.chamfer_mm = chamfer_distance(mesh, &reference_mesh, 2000),
-            Err(e) => o.message = Some(format!("reference mesh: {e}")),
+    if let Some(r) = reference {
+        let be = extent_error(measured.size, r.size);
+        let ve = r.volume.filter(|v| *v > 0.0).map(|v| (measured.volume - v).abs() / v);
+        o.bbox_error = Some(be);
+        o.volume_error = ve;
+        o.pass = Some(be <= SIZE_TOL && ve.is_none_or(|e| e <= VOLUME_TOL));
+        if o.pass == Some(false) && o.failure.is_none() {
+            o.failure = Some(if be > SIZE_TOL { FailureKind::ScaleMismatch } else { FailureKind::SemanticMismatch });
+            o.message = Some(format!(
+                "against the reference: extents off by {:.2} %, volume by {}",
+                100.0 * be,
+                ve.map_or("-".into(), |v| format!("{:.2} %", 100.0 * v))
+            ));
         }
     }
-    if o.pass == Some(false) && o.failure.is_none() {
-        o.failure = Some(if be > SIZE_TOL { FailureKind::ScaleMismatch } else { FailureKind::SemanticMismatch });
-        o.message = Some(format!(
-            "against the reference: extents off by {:.2} %, volume by {}",
-            100.0 * be,
-            ve.map_or("-".into(), |v| format!("{:.2} %", 100.0 * v))
-        ));
+    if let Some(rm) = reference_mesh
+        && let Some((d, rel)) = chamfer_aligned(mesh, rm, CHAMFER_SAMPLES)
+    {
+        o.chamfer_mm = Some(d);
+        o.chamfer_rel = Some(rel);
+    }
+    if let Some(pl) = plausible {
+        let largest = measured.size.iter().copied().fold(0.0, f64::max);
+        let ok = (pl.min..=pl.max).contains(&largest);
+        o.plausible = Some(ok);
+        if !ok && o.failure.is_none() {
+            o.failure = Some(FailureKind::ScaleMismatch);
+            o.message = Some(format!("{largest:.0} mm across, not a plausible {} ({}–{} mm)", pl.what, pl.min, pl.max));
+        }
     }
 }
 
@@ -300,11 +316,10 @@ fn median(mut v: Vec<f64>) -> Option<f64> {
 
 fn summarize<'a>(outcomes: impl Iterator<Item = &'a Outcome>) -> TierSummary {
     let mut s = TierSummary::default();
-    let (mut be, mut ve) = (Vec::new(), Vec::new());
+    let (mut cd, mut cr) = (Vec::new(), Vec::new());
     for o in outcomes {
         s.prompts += 1;
         s.executed += usize::from(o.executed);
-        s.retries += o.retries;
         s.retried += usize::from(o.retries > 0);
         if let Some(k) = o.failure {
             *s.failures.entry(k.name().to_string()).or_default() += 1;
@@ -312,19 +327,54 @@ fn summarize<'a>(outcomes: impl Iterator<Item = &'a Outcome>) -> TierSummary {
         if o.pass.is_some() {
             s.with_reference += 1;
         }
-        if let Some(b) = o.bbox_error {
-            s.bbox_within_1pct += usize::from(b <= SIZE_TOL);
-            be.push(b);
-        }
-        if let Some(v) = o.volume_error {
-            s.volume_within_2pct += usize::from(v <= VOLUME_TOL);
-            ve.push(v);
-        }
+        s.bbox_within_1pct += usize::from(o.bbox_error.is_some_and(|b| b <= SIZE_TOL));
+        s.volume_within_2pct += usize::from(o.volume_error.is_some_and(|v| v <= VOLUME_TOL));
         s.passed += usize::from(o.pass == Some(true));
+        if let (Some(d), Some(r)) = (o.chamfer_mm, o.chamfer_rel) {
+            cd.push(d);
+            cr.push(r);
+        }
+        if let Some(p) = o.plausible {
+            s.with_plausibility += 1;
+            s.plausible += usize::from(p);
+        }
     }
-    s.median_bbox_error = median(be);
-    s.median_volume_error = median(ve);
+    s.with_chamfer = cd.len();
+    s.max_chamfer_mm = cd.iter().copied().reduce(f64::max);
+    s.median_chamfer_mm = median(cd);
+    s.median_chamfer_rel = median(cr);
     s
+}
+
+fn latency(mut times: Vec<f64>) -> Option<Latency> {
+    times.sort_by(f64::total_cmp);
+    (!times.is_empty()).then(|| Latency {
+        jobs: times.len(),
+        median_ms: times[times.len() / 2],
+        p95_ms: times[(times.len() * 95 / 100).min(times.len() - 1)],
+        min_ms: times[0],
+    })
+}
+
+/// Runs `f` over `items` on `workers` threads, results in item order.
+fn parallel<T: Sync, R: Send>(items: &[T], workers: usize, f: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    let next = AtomicUsize::new(0);
+    let out: Mutex<Vec<(usize, R)>> = Mutex::new(Vec::with_capacity(items.len()));
+    std::thread::scope(|scope| {
+        for _ in 0..workers.max(1) {
+            scope.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(item) = items.get(i) else { break };
+                    let r = f(item);
+                    out.lock().unwrap_or_else(|e| e.into_inner()).push((i, r));
+                }
+            });
+        }
+    });
+    let mut v = out.into_inner().unwrap_or_else(|e| e.into_inner());
+    v.sort_by_key(|(i, _)| *i);
+    v.into_iter().map(|(_, r)| r).collect()
 }
 
 /// Who writes the code.
@@ -335,14 +385,8 @@ pub(crate) enum Writer {
     Model(sw_llm::LlmConfig),
 }
 
-pub(crate) fn run(
-    suite: &str,
-    writer: Writer,
-    workers: usize,
-    latency_repeat: usize,
-    json: bool,
-) -> Result<u8, Failure> {
-    let (name, prompts, refs) = load(suite)?;
+pub(crate) fn run(suite: &str, writer: Writer, workers: usize, latency_repeat: usize, json: bool) -> Result<u8, Failure> {
+    let s = load(suite)?;
     let model = match &writer {
         Writer::Template => None,
         Writer::Model(cfg) => {
@@ -356,85 +400,76 @@ pub(crate) fn run(
         }
     };
     let runner = crate::cmd_forge::start_runner(workers)?;
-    // Every worker warm before the clock starts.
     runner.wait_idle(workers.max(1), std::time::Duration::from_secs(120));
+    // The reference meshes, from the suite's reference programs (not timed).
+    let ids: Vec<&String> = s.programs.keys().collect();
+    let meshes = parallel(&ids, workers, |id| {
+        let mesh = runner.run(&CadJob::cadquery(s.programs[*id].clone())).ok().map(|mut r| {
+            mesh_io::drop_collapsed_triangles(&mut r.mesh);
+            r.mesh
+        });
+        ((*id).clone(), mesh)
+    });
+    let ref_meshes: BTreeMap<String, Mesh> = meshes.into_iter().filter_map(|(id, m)| Some((id, m?))).collect();
+    let missing_refs = ids.len() - ref_meshes.len();
+
     let started = Instant::now();
-    let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Outcome>> = Mutex::new(Vec::with_capacity(prompts.len()));
-    std::thread::scope(|scope| {
-        for _ in 0..workers.max(1) {
-            scope.spawn(|| {
-                loop {
-                    let i = next.fetch_add(1, Ordering::Relaxed);
-                    let Some(p) = prompts.get(i) else { break };
-                    let o = match &model {
-                        Some(w) => one_by_model(&runner, w, p, refs.get(&p.id)),
-                        None => one(&runner, p, refs.get(&p.id)),
-                    };
-                    results.lock().unwrap_or_else(|e| e.into_inner()).push(o);
-                }
-            });
-        }
+    let mut outcomes = parallel(&s.prompts, workers, |p| match &model {
+        Some(w) => one_by_model(&runner, w, p),
+        None => one(&runner, p),
     });
     let wall_s = started.elapsed().as_secs_f64();
-    let mut outcomes = results.into_inner().unwrap_or_else(|e| e.into_inner());
-    outcomes.sort_by(|a, b| a.id.cmp(&b.id));
+    for o in &mut outcomes {
+        compare(o, s.refs.get(&o.id), ref_meshes.get(&o.id), s.sizes.get(&o.id));
+    }
+    let part_latency = latency(outcomes.iter().filter_map(|o| o.roundtrip_ms).collect());
 
-    // Warm latency: the executed T1 parts again, one at a time.
-    let simple: Vec<&Prompt> =
-        prompts.iter().filter(|p| p.tier == "T1" && outcomes.iter().any(|o| o.id == p.id && o.executed)).collect();
-    let warm_latency = if latency_repeat > 0 && !simple.is_empty() {
-        let mut times = Vec::new();
+    // Warm latency: the first tier's executed parts again, one at a time.
+    let first_tier = s.prompts.first().map(|p| p.tier.clone()).unwrap_or_default();
+    let simple: Vec<&Prompt> = s.prompts.iter().filter(|p| p.tier == first_tier && outcomes.iter().any(|o| o.id == p.id && o.executed)).collect();
+    let mut times = Vec::new();
+    if model.is_none() {
         for _ in 0..latency_repeat {
             for p in &simple {
-                let Ok(s) = synth::synthesize(&p.text) else { continue };
+                let Ok(sy) = synth::synthesize(&p.text) else { continue };
                 let t = Instant::now();
-                if runner.run(&CadJob::cadquery(s.code)).is_ok() {
+                if runner.run(&CadJob::cadquery(sy.code)).is_ok() {
                     times.push(t.elapsed().as_secs_f64() * 1e3);
                 }
             }
         }
-        times.sort_by(f64::total_cmp);
-        (!times.is_empty()).then(|| Latency {
-            jobs: times.len(),
-            median_ms: times[times.len() / 2],
-            p95_ms: times[(times.len() * 95 / 100).min(times.len() - 1)],
-            min_ms: times[0],
-        })
-    } else {
-        None
-    };
+    }
+    let warm_latency = latency(times);
 
     let mut tiers = BTreeMap::new();
-    let tier_names: Vec<String> = {
-        let mut t: Vec<String> = outcomes.iter().map(|o| o.tier.clone()).collect();
-        t.dedup();
-        t
-    };
-    for t in &tier_names {
+    let mut names: Vec<String> = s.prompts.iter().map(|p| p.tier.clone()).collect();
+    names.dedup();
+    for t in &names {
         tiers.insert(t.clone(), summarize(outcomes.iter().filter(|o| &o.tier == t)));
     }
-    let target_ids: Vec<&str> = prompts.iter().filter(|p| is_target(p)).map(|p| p.id.as_str()).collect();
-    let target = summarize(outcomes.iter().filter(|o| target_ids.contains(&o.id.as_str())));
+    let all = summarize(outcomes.iter());
     let model_calls = model.as_ref().map(|w| {
         let calls = w.take_calls();
-        let mut latency: Vec<f64> = calls.iter().map(|c| c.latency_ms).collect();
         ModelCalls {
             model: calls.first().map_or_else(String::new, |c| c.model.clone()),
             calls: calls.len(),
             tokens_in: calls.iter().map(|c| c.tokens_in).sum(),
             tokens_out: calls.iter().map(|c| c.tokens_out).sum(),
-            median_latency_ms: median(std::mem::take(&mut latency)),
+            median_latency_ms: median(calls.iter().map(|c| c.latency_ms).collect()),
         }
     });
+    if let Some(path) = std::env::var_os("SCENEWRIGHT_CAD_SHEET") {
+        write_sheet(Path::new(&path), &outcomes)?;
+    }
     let bench = CadBench {
-        suite: name,
-        writer: model.as_ref().map_or_else(|| "template".to_string(), CodeWriter::name),
+        suite: s.name,
+        writer: model.as_ref().map_or_else(|| "offline".to_string(), CodeWriter::name),
         workers: workers.max(1),
         wall_s,
         parts_per_s: outcomes.len() as f64 / wall_s.max(1e-9),
         tiers,
-        target,
+        all,
+        part_latency,
         warm_latency,
         model_calls,
         outcomes,
@@ -442,16 +477,36 @@ pub(crate) fn run(
     if json {
         print_json(&bench);
     } else {
-        print(&render(&bench));
+        print(&render(&bench, missing_refs));
     }
     Ok(0)
+}
+
+fn write_sheet(path: &Path, outcomes: &[Outcome]) -> Result<(), Failure> {
+    let tiles: Vec<Tile<'_>> = outcomes
+        .iter()
+        .map(|o| Tile {
+            label: o.id.clone(),
+            mesh: o.mesh.as_ref(),
+            caption: match (&o.made_by, o.executed) {
+                (Some(m), true) => m.trim_start_matches("freeform:").to_string(),
+                _ => "not made".to_string(),
+            },
+        })
+        .collect();
+    let image = contact_sheet(&tiles, 9, 200);
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        fs_err::create_dir_all(dir).map_err(|e| Failure::internal(e.to_string()))?;
+    }
+    let file = fs_err::File::create(path).map_err(|e| Failure::internal(e.to_string()))?;
+    image.write_png(std::io::BufWriter::new(file)).map_err(|e| Failure::internal(format!("{}: {e}", path.display())))
 }
 
 fn pct(n: usize, d: usize) -> String {
     if d == 0 { "-".into() } else { format!("{:.0} %", 100.0 * n as f64 / d as f64) }
 }
 
-fn render(b: &CadBench) -> String {
+fn render(b: &CadBench, missing_refs: usize) -> String {
     let mut s = format!(
         "suite {} · writer {} · {} prompts · {} worker(s) · {:.1} s wall ({:.1} parts/s)\n\n",
         b.suite,
@@ -461,32 +516,43 @@ fn render(b: &CadBench) -> String {
         b.wall_s,
         b.parts_per_s
     );
-    s.push_str(
-        "tier      prompts executed  ref  bbox≤1%  vol≤2%  pass  retried  median bbox err  median vol err  failures\n",
-    );
+    if missing_refs > 0 {
+        s.push_str(&format!("({missing_refs} reference programs did not run)\n"));
+    }
+    s.push_str("tier      prompts  executed  ref  within tol  bbox≤1%  vol≤2%  chamfer med / max mm  (% diag)  plausible  failures\n");
     let mut line = |name: &str, t: &TierSummary| {
         let fails: Vec<String> = t.failures.iter().map(|(k, n)| format!("{k} {n}")).collect();
+        let chamfer = match (t.median_chamfer_mm, t.max_chamfer_mm) {
+            (Some(m), Some(x)) => format!("{m:.3} / {x:.3}"),
+            _ => "-".into(),
+        };
         s.push_str(&format!(
-            "{name:<9} {:>7} {:>8} {:>4} {:>8} {:>7} {:>5} {:>8} {:>16} {:>15}  {}\n",
+            "{name:<9} {:>7} {:>9} {:>4} {:>11} {:>8} {:>7} {:>21} {:>9} {:>10}  {}\n",
             t.prompts,
-            pct(t.executed, t.prompts),
+            format!("{} ({})", t.executed, pct(t.executed, t.prompts)),
             t.with_reference,
+            format!("{} ({})", t.passed, pct(t.passed, t.with_reference)),
             pct(t.bbox_within_1pct, t.with_reference),
             pct(t.volume_within_2pct, t.with_reference),
-            pct(t.passed, t.with_reference),
-            pct(t.retried, t.prompts),
-            t.median_bbox_error.map_or("-".into(), |e| format!("{:.3} %", 100.0 * e)),
-            t.median_volume_error.map_or("-".into(), |e| format!("{:.3} %", 100.0 * e)),
+            chamfer,
+            t.median_chamfer_rel.map_or("-".into(), |r| format!("{:.2} %", 100.0 * r)),
+            if t.with_plausibility > 0 { format!("{}/{}", t.plausible, t.with_plausibility) } else { "-".into() },
             fails.join(", ")
         ));
     };
     for (name, t) in &b.tiers {
         line(name, t);
     }
-    line("target", &b.target);
+    line("all", &b.all);
+    if let Some(l) = &b.part_latency {
+        s.push_str(&format!(
+            "\nparts in the run: median {:.0} ms · p95 {:.0} ms · min {:.0} ms over {} jobs ({} workers)\n",
+            l.median_ms, l.p95_ms, l.min_ms, l.jobs, b.workers
+        ));
+    }
     if let Some(l) = &b.warm_latency {
         s.push_str(&format!(
-            "\nwarm runner, simple parts: median {:.0} ms · p95 {:.0} ms · min {:.0} ms over {} jobs\n",
+            "warm runner, first-tier parts one at a time: median {:.0} ms · p95 {:.0} ms · min {:.0} ms over {} jobs\n",
             l.median_ms, l.p95_ms, l.min_ms, l.jobs
         ));
     }
@@ -502,12 +568,12 @@ fn render(b: &CadBench) -> String {
     }
     let failed: Vec<&Outcome> = b.outcomes.iter().filter(|o| o.failure.is_some()).collect();
     if !failed.is_empty() {
-        s.push_str("\nnot passed:\n");
+        s.push_str("\nnot made or not passed:\n");
         for o in failed {
             s.push_str(&format!(
                 "  {} {} {}: {}\n",
                 o.id,
-                o.template.as_deref().unwrap_or("-"),
+                o.made_by.as_deref().unwrap_or("-"),
                 o.failure.map_or("", |k| k.name()),
                 o.message.as_deref().unwrap_or("")
             ));

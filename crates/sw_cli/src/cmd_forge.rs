@@ -1,5 +1,6 @@
-//! `assets generate`: a part from a dimensioned prompt, offline — the template
-//! synthesizer's CadQuery code run in the sandboxed runner, validated, written as files.
+//! `assets generate`: a part offline — a dimensioned part (the synthesizer's feature
+//! language) or a free-form object (composed, or the procedural catalog's); code run in the
+//! sandboxed runner, validated, written as files.
 
 use std::path::PathBuf;
 
@@ -35,7 +36,7 @@ pub(crate) fn generate(
     json: bool,
 ) -> Result<u8, Failure> {
     // Read the prompt first: bad input is refused before the runner starts (2–5 s).
-    if let Err(e) = sw_forge::synth::synthesize(prompt) {
+    if let Err(e) = sw_forge::freeform::offline(prompt) {
         return Err(Failure::input(e.to_string()));
     }
     if out.is_file() {
@@ -72,7 +73,7 @@ pub(crate) fn generate(
         _ => format!("volume {:.1} mm³", m.mesh_volume_mm3),
     };
     print(&format!(
-        "part     {}\ntemplate {} · {} triangles · watertight\nsize     {:.3} × {:.3} × {:.3} mm (requested {:.3} × {:.3} × {:.3}, largest error {:.3} %)\n         {volume}{}\ntime     {:.0} ms (code ran in {:.0} ms)",
+        "part     {}\nmade by  {} · {} triangles · watertight\nsize     {:.3} × {:.3} × {:.3} mm (requested {:.3} × {:.3} × {:.3}, largest error {:.3} %)\n         {volume}{}\ntime     {:.0} ms (code ran in {:.0} ms)",
         files.mesh.display(),
         m.template,
         m.triangles,

@@ -104,7 +104,20 @@ fn main() {
                     let _ = std::fs::write(format!("{dir}/{id}.py"), &s.code);
                 }
             }
-            Err(e) => println!("{id}\tERROR {e}"),
+            Err(e) => match sw_forge::freeform::read(prompt) {
+                Ok(sw_forge::freeform::Freeform::Catalog { category, asset }) => {
+                    let b = asset.bounds().size();
+                    println!("{id}\tcatalog:{category}\t{:.0} x {:.0} x {:.0} mm", b[0] * 1e3, b[1] * 1e3, b[2] * 1e3);
+                }
+                Ok(sw_forge::freeform::Freeform::Composed { synthesis: s, .. }) => {
+                    println!("{id}\t{}\t{:.0} x {:.0} x {:.0} mm", s.template, s.size[0], s.size[1], s.size[2]);
+                    if let Some(dir) = &emit {
+                        let _ = std::fs::create_dir_all(dir);
+                        let _ = std::fs::write(format!("{dir}/{id}.py"), &s.code);
+                    }
+                }
+                Err(f) => println!("{id}\tERROR {e} / {f}"),
+            },
         }
     }
 }

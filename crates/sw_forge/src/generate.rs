@@ -14,7 +14,7 @@ use crate::failure::{Failure, FailureKind};
 use crate::runner::{CadJob, CadRunner};
 use crate::store::{AssetId, AssetRecord};
 use crate::validate::{self, MeshReport, Orientation, Target};
-use crate::{mesh_io, synth};
+use crate::mesh_io;
 
 /// What to make.
 #[derive(Debug, Clone, PartialEq)]
@@ -54,9 +54,14 @@ impl CodeWriter for TemplateWriter {
     }
 
     fn write(&self, request: &PartRequest, _history: &[Attempt]) -> Result<String, Failure> {
-        synth::synthesize(&request.description)
-            .map(|s| s.code)
-            .map_err(|e| Failure::new(FailureKind::Writer, e.to_string()))
+        match crate::freeform::offline(&request.description) {
+            Ok(crate::freeform::Offline::Code(s)) => Ok(s.code),
+            Ok(crate::freeform::Offline::Catalog { category, .. }) => Err(Failure::new(
+                FailureKind::Writer,
+                format!("the procedural catalog's {category} is this object: take it from the catalog"),
+            )),
+            Err(e) => Err(Failure::new(FailureKind::Writer, e.to_string())),
+        }
     }
 }
 

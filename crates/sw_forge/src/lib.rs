@@ -5,8 +5,11 @@
 //! - [`validate`]: is the mesh a closed solid of the requested size, volume and number
 //!   of through-holes;
 //! - [`failure`]: the taxonomy every failed attempt is filed under;
-//! - [`synth`]: the offline template synthesizer, CadQuery code for dimensioned prompts;
+//! - [`synth`]: the offline synthesizer, a feature language for dimensioned parts read from
+//!   English, written as CadQuery code;
+//! - [`freeform`]: free-form objects offline (the catalog's, or compositions of parts);
 //! - [`part`]: synthesize, run, validate and write one part offline;
+//! - [`suite`]: CAD prompt suites, their references, alignment and contact sheets;
 //! - [`collision`]: convex collision pieces of generated parts (V-HACD), and parts as assets;
 //! - [`generate`]: the generation loop — a writer (LLM or template) writes, the runner
 //!   runs, the validator checks, failures go back to the writer, K attempts then fallback;
@@ -20,6 +23,7 @@ pub mod collision;
 #[cfg(feature = "embed")]
 pub mod embed;
 pub mod failure;
+pub mod freeform;
 pub mod generate;
 pub mod index;
 #[cfg(feature = "embed")]
@@ -31,5 +35,6 @@ pub mod reuse;
 pub mod runner;
 pub mod store;
 pub mod store_s3;
+pub mod suite;
 pub mod synth;
 pub mod validate;

@@ -1,4 +1,5 @@
-//! A part made offline: the template synthesizer writes the code, the sandboxed runner
+//! A part made offline: the offline synthesizer writes the code (or the catalog makes a
+//! free-form object it has), the sandboxed runner
 //! executes it, the validator checks the mesh against the analytic size, volume and
 //! through-holes, and the part is written as files (STL in metres, the code, metadata
 //! JSON and a preview PNG).
@@ -13,7 +14,7 @@ use tracing::info_span;
 use crate::failure::Failure;
 use crate::mesh_io;
 use crate::runner::{CadError, CadJob, CadRunner, RunTimings, RunnerError};
-use crate::synth::{self, SynthError, Synthesis};
+use crate::synth::{SynthError, Synthesis};
 use crate::validate::{self, MeshReport};
 
 /// A validated part.
@@ -54,11 +55,15 @@ pub enum GenerateError {
     Invalid { failure: Failure, synthesis: Box<Synthesis>, report: Option<Box<MeshReport>> },
 }
 
-/// Synthesizes, runs and validates one prompt.
+/// Synthesizes, runs and validates one prompt: a dimensioned part, or a free-form object
+/// (composed, or the procedural catalog's).
 pub fn generate_offline(runner: &CadRunner, prompt: &str) -> Result<GeneratedPart, GenerateError> {
     let _span = info_span!("forge_offline").entered();
     let t0 = Instant::now();
-    let synthesis = synth::synthesize(prompt)?;
+    let synthesis = match crate::freeform::offline(prompt)? {
+        crate::freeform::Offline::Code(s) => *s,
+        crate::freeform::Offline::Catalog { category, asset } => return Ok(catalog_part(prompt, category, &asset, t0)),
+    };
     let synth_ms = ms(t0);
     let mut run = runner.run(&CadJob::cadquery(synthesis.code.clone())).map_err(|e| GenerateError::Run(Box::new(e)))?;
     let t1 = Instant::now();
@@ -85,6 +90,30 @@ pub fn generate_offline(runner: &CadRunner, prompt: &str) -> Result<GeneratedPar
         brep_volume: run.brep_volume,
         timings: PartTimings { synth_ms, run: run.timings, validate_ms, total_ms: ms(t0) },
     })
+}
+
+/// A catalog object as a made part: its visual meshes in mm, measured; no code.
+fn catalog_part(prompt: &str, category: &str, asset: &sw_geom::Asset, t0: Instant) -> GeneratedPart {
+    let mesh = crate::freeform::catalog_mesh_mm(asset);
+    let report = validate::measure(&mesh);
+    let synthesis = Synthesis {
+        template: format!("catalog:{category}"),
+        code: format!("# {}\n# The procedural catalog's {category} (seed 0): made without code.\n", prompt.trim()),
+        size: report.size,
+        min: report.min,
+        size_certain: [true; 3],
+        volume: None,
+        genus: None,
+    };
+    let total = ms(t0);
+    GeneratedPart {
+        prompt: prompt.trim().to_string(),
+        synthesis,
+        mesh_mm: mesh,
+        report,
+        brep_volume: None,
+        timings: PartTimings { synth_ms: total, total_ms: total, ..PartTimings::default() },
+    }
 }
 
 fn ms(t: Instant) -> f64 {

@@ -130,15 +130,6 @@ fn axis_of(r: &Reader<'_>, e: usize, round: bool) -> Axis {
     Axis::Z
 }
 
-pub fn axis_name(w: &str) -> Option<Axis> {
-    match w {
-        "x" | "+x" => Some(Axis::X),
-        "y" | "+y" => Some(Axis::Y),
-        "z" | "+z" => Some(Axis::Z),
-        _ => None,
-    }
-}
-
 /// The span of a body along its axis and the length that sized it.
 fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64; 2]> {
     if std::env::var_os("SW_SYNTH_DEBUG").is_some() {

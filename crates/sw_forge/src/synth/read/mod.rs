@@ -55,6 +55,7 @@ pub struct Built {
 }
 
 /// The reading of one prompt.
+#[derive(Debug)]
 pub struct Reader<'a> {
     pub doc: &'a Doc,
     pub mentions: Vec<Mention>,

@@ -3,8 +3,6 @@
 //! "(±60, 0) and (0, ±60)"), corners inset from the edges, rectangular patterns, pitch
 //! circles at given or equal angles, grids with spacings, and rows at intervals.
 
-use std::f64::consts::PI;
-
 use super::super::doc::Role;
 use super::super::solid::Axis;
 use super::{Reader, Refusal, Res};
@@ -313,14 +311,4 @@ pub fn row(r: &mut Reader<'_>, e: usize, count: u32, default_axis: Axis, plane: 
             })
             .collect(),
     )
-}
-
-/// Equal angles around a circle of diameter `d`.
-pub fn equal_on_circle(count: u32, d: f64, start_deg: f64) -> Vec<[f64; 2]> {
-    (0..count)
-        .map(|i| {
-            let a = start_deg.to_radians() + 2.0 * PI * f64::from(i) / f64::from(count);
-            [d / 2.0 * a.cos(), d / 2.0 * a.sin()]
-        })
-        .collect()
 }

@@ -1,0 +1,359 @@
+//! Free-form objects offline: "a coffee mug with a handle", "a dumbbell", "a chair with
+//! four legs and a backrest", "a wheelbarrow". The object is named by the prompt's words;
+//! the procedural catalog makes it when it has it, else a parametric composition of
+//! parts ([`basic`] shapes, [`objects`]) with real proportions and sizes. Size words
+//! ("large", "tall", "thick", "long" …) scale it; "with …", "on …" name features the object
+//! must have. A word that is none of these refuses the prompt with that word.
+
+pub mod basic;
+pub mod objects;
+pub mod shapes;
+
+use sw_geom::{Asset, Mesh};
+
+use crate::synth::model::Model;
+use crate::synth::text::{Tk, tokenize};
+use crate::synth::{SynthError, Synthesis, finish};
+
+/// How the size words scale an object (1 = as made).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spec {
+    pub size: f64,
+    pub tall: f64,
+    pub long: f64,
+    pub thick: f64,
+    pub wide: f64,
+    /// "three steps", "two hooks".
+    pub count: Option<u32>,
+}
+
+impl Default for Spec {
+    fn default() -> Self {
+        Self { size: 1.0, tall: 1.0, long: 1.0, thick: 1.0, wide: 1.0, count: None }
+    }
+}
+
+/// A composition: what it is called, the features its words may name, its builder.
+#[derive(Debug, Clone, Copy)]
+pub struct Build {
+    pub names: &'static [&'static str],
+    pub features: &'static [&'static str],
+    pub build: fn(&Spec) -> Model,
+}
+
+/// A free-form object made.
+#[derive(Debug, Clone)]
+pub enum Freeform {
+    /// The procedural catalog's object (metres, in its own materials).
+    Catalog { category: &'static str, asset: Box<Asset> },
+    /// A composition, as a model of the feature language (mm).
+    Composed { object: &'static str, synthesis: Box<Synthesis> },
+}
+
+/// Features of catalog objects the words may name (the catalog's generator makes them).
+const CATALOG_FEATURES: &[(&str, &[&str])] = &[
+    ("mug", &["handle"]),
+    ("cup", &["handle"]),
+    ("bottle", &["cap", "lid"]),
+    ("fire_extinguisher", &["hose", "handle", "nozzle"]),
+    ("traffic_cone", &["base", "flat base", "square base"]),
+    ("chair", &["legs", "four legs", "backrest", "back", "seat"]),
+    ("dining_table", &["legs", "four legs", "top"]),
+    ("table", &["legs", "four legs", "top"]),
+    ("bookshelf", &["shelves", "shelf"]),
+    ("desk_lamp", &["arm", "bent arm", "shade", "base"]),
+    ("sofa", &["armrests", "arms", "cushions", "back"]),
+    ("monitor", &["stand", "screen"]),
+    ("shopping_cart", &["wheels", "handle", "basket"]),
+    ("desk", &["drawers", "drawer"]),
+];
+
+/// Size words and what they scale.
+fn size_word(w: &str, s: &mut Spec) -> bool {
+    match w {
+        "large" | "big" => s.size *= 1.6,
+        "huge" | "giant" | "enormous" => s.size *= 2.5,
+        "small" | "little" | "mini" => s.size *= 0.6,
+        "tiny" => s.size *= 0.35,
+        "tall" | "high" => s.tall *= 1.6,
+        "short" | "low" => s.tall *= 0.6,
+        "long" => s.long *= 2.0,
+        "thick" | "chunky" | "heavy" => s.thick *= 1.8,
+        "thin" | "slim" | "slender" => s.thick *= 0.5,
+        "wide" | "broad" => s.wide *= 1.6,
+        "narrow" => s.wide *= 0.6,
+        "flat" => s.tall *= 0.6,
+        _ => return false,
+    }
+    true
+}
+
+/// Words that say nothing of the geometry of a free-form object.
+fn is_plain(w: &str) -> bool {
+    matches!(
+        w,
+        "a" | "an" | "the" | "one" | "simple" | "basic" | "plain" | "solid" | "shape" | "shaped" | "object" | "model"
+            | "standard" | "typical" | "ordinary" | "classic" | "regular" | "hollow" | "some" | "of" | "for" | "kind"
+            | "sort" | "style" | "red" | "blue" | "green" | "yellow" | "black" | "white" | "grey" | "gray" | "brown"
+            | "orange" | "wooden" | "metal" | "steel" | "plastic" | "ceramic" | "glass" | "rubber" | "new" | "old"
+            | "nice" | "toy"
+    )
+}
+
+/// One of the objects the words may name: a catalog category or a composition.
+#[derive(Debug, Clone, Copy)]
+enum Candidate {
+    Basic(&'static Build),
+    Catalog(&'static sw_catalog::Category),
+    Object(&'static Build),
+}
+
+impl Candidate {
+    /// Ties between phrases of one length go to basic shapes ("a cone" is a cone, not a
+    /// traffic cone), then the catalog, then compositions.
+    fn rank(&self) -> u8 {
+        match self {
+            Candidate::Basic(_) => 0,
+            Candidate::Catalog(_) => 1,
+            Candidate::Object(_) => 2,
+        }
+    }
+
+    fn features(&self) -> &'static [&'static str] {
+        match self {
+            Candidate::Basic(b) | Candidate::Object(b) => b.features,
+            Candidate::Catalog(c) => CATALOG_FEATURES.iter().find(|(n, _)| *n == c.name).map_or(&[], |(_, f)| *f),
+        }
+    }
+
+    fn same(&self, other: &Candidate) -> bool {
+        match (self, other) {
+            (Candidate::Basic(a), Candidate::Basic(b)) | (Candidate::Object(a), Candidate::Object(b)) => std::ptr::eq(*a, *b),
+            (Candidate::Catalog(a), Candidate::Catalog(b)) => a.name == b.name,
+            _ => false,
+        }
+    }
+}
+
+fn phrases() -> Vec<(Vec<String>, Candidate)> {
+    let split = |p: &str| p.split_whitespace().map(crate::synth::text::fold).collect::<Vec<_>>();
+    let mut out = Vec::new();
+    for b in basic::BASIC {
+        out.extend(b.names.iter().map(|n| (split(n), Candidate::Basic(b))));
+    }
+    for c in sw_catalog::categories() {
+        out.push((split(c.display), Candidate::Catalog(c)));
+        out.push((split(&c.name.replace('_', " ")), Candidate::Catalog(c)));
+        out.extend(c.synonyms.iter().map(|n| (split(n), Candidate::Catalog(c))));
+    }
+    for b in objects::OBJECTS {
+        out.extend(b.names.iter().map(|n| (split(n), Candidate::Object(b))));
+    }
+    out
+}
+
+fn unread(phrase: &str, reason: &str) -> SynthError {
+    SynthError::Unread { phrase: phrase.to_string(), reason: reason.to_string() }
+}
+
+/// Reads a free-form prompt and makes the object.
+pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
+    let toks = tokenize(prompt);
+    if toks.iter().any(|t| matches!(t.kind, Tk::Num { unit: Some(_), .. })) {
+        return Err(unread(prompt.trim(), "a free-form object is named without sizes (sizes make it a dimensioned part)"));
+    }
+    // Words, with where they are.
+    let words: Vec<(String, usize, usize)> = toks
+        .iter()
+        .filter_map(|t| match &t.kind {
+            Tk::Word(w) => Some((w.clone(), t.start, t.end)),
+            Tk::Num { v, unit: None, .. } => Some((format!("#{v}"), t.start, t.end)),
+            _ => None,
+        })
+        .collect();
+    let quote = |a: usize, b: usize| prompt.get(words[a].1..words[b].2).unwrap_or("").to_string();
+    // The object: the longest name found (ties as ranked), its first place.
+    let mut best: Option<(usize, usize, Candidate)> = None;
+    for (name, cand) in phrases() {
+        let n = name.len();
+        if n == 0 || n > words.len() {
+            continue;
+        }
+        for at in 0..=words.len() - n {
+            if (0..n).all(|k| words[at + k].0 == name[k]) {
+                let better = match &best {
+                    None => true,
+                    Some((_, bn, bc)) => n > *bn || (n == *bn && cand.rank() < bc.rank()),
+                };
+                if better {
+                    best = Some((at, n, cand));
+                }
+                break;
+            }
+        }
+    }
+    let Some((at, n, cand)) = best else {
+        let text = prompt.trim();
+        return Err(unread(text, "the synthesizer knows no object by these words (a catalog object, a shape, or a dimensioned part)"));
+    };
+    let mut spec = Spec::default();
+    // Before the name: size and plain words only.
+    for i in 0..at {
+        let w = &words[i].0;
+        if !(is_plain(w) || size_word(w, &mut spec)) {
+            return Err(unread(&quote(i, i), "a word the synthesizer cannot give this object"));
+        }
+    }
+    // After it: "with …", "on …", "and …", "or <another name of it>": features it has.
+    let feats = cand.features();
+    let mut i = at + n;
+    while i < words.len() {
+        let w = words[i].0.clone();
+        if matches!(w.as_str(), "with" | "on" | "and" | "having" | "has") || is_plain(&w) {
+            i += 1;
+            continue;
+        }
+        if w == "or" {
+            // "a goblet or wine glass": another name of the same object.
+            let rest: Vec<String> = words[i + 1..].iter().map(|x| x.0.clone()).filter(|x| !is_plain(x)).collect();
+            let same = phrases().into_iter().any(|(name, c)| c.same(&cand) && !name.is_empty() && rest.starts_with(&name) && rest.len() == name.len());
+            if same {
+                break;
+            }
+            return Err(unread(&quote(i, words.len() - 1), "two different objects"));
+        }
+        // A count ("three steps", "four legs").
+        let mut count = None;
+        let mut j = i;
+        if let Some(c) = crate::synth::lexicon::number_word(&w).or_else(|| w.strip_prefix('#').and_then(|v| v.parse::<f64>().ok()).filter(|v| v.fract() == 0.0 && *v >= 1.0).map(|v| v as u32)) {
+            count = Some(c);
+            j += 1;
+        }
+        // The longest feature phrase here.
+        let hit = feats
+            .iter()
+            .map(|f| f.split_whitespace().map(crate::synth::text::fold).collect::<Vec<_>>())
+            .filter(|f| f.len() + j <= words.len() && (0..f.len()).all(|k| words[j + k].0 == f[k]))
+            .max_by_key(Vec::len);
+        let Some(f) = hit else {
+            return Err(unread(&quote(i, (i + 2).min(words.len() - 1)), "a feature the synthesizer cannot give this object"));
+        };
+        if let Some(c) = count {
+            check_count(&cand, &f, c).map_err(|reason| unread(&quote(i, j + f.len() - 1), &reason))?;
+            spec.count = Some(c);
+        }
+        i = j + f.len();
+    }
+    make(prompt, cand, &spec)
+}
+
+/// The counts an object can have of a feature.
+fn check_count(cand: &Candidate, feature: &[String], c: u32) -> Result<(), String> {
+    let f = feature.join(" ");
+    let ok = match cand {
+        Candidate::Catalog(cat) => match (cat.name, f.as_str()) {
+            ("chair" | "dining_table" | "table", "leg") => c == 4,
+            ("mug" | "cup", "handle") => c == 1,
+            _ => false,
+        },
+        Candidate::Object(b) | Candidate::Basic(b) => match (b.names.first().copied(), f.as_str()) {
+            (Some("staircase"), "step") => (1..=30).contains(&c),
+            (Some("coat rack"), "hook") => c == 2 || c == 4,
+            (Some("bathtub"), "leg" | "foot") => c == 4,
+            (Some("trophy"), "handle") => c == 2,
+            (Some("bucket" | "saucepan" | "hammer" | "mallet" | "microphone" | "plunger"), "handle") => c == 1,
+            _ => false,
+        },
+    };
+    if ok { Ok(()) } else { Err(format!("the synthesizer makes this object with a different number of {f}")) }
+}
+
+fn make(prompt: &str, cand: Candidate, spec: &Spec) -> Result<Freeform, SynthError> {
+    match cand {
+        Candidate::Catalog(cat) => {
+            let mut req = sw_catalog::AssetRequest::new(cat.name, 0);
+            let s = spec.size;
+            req.scale = Some([s * spec.wide * spec.long, s * spec.wide * spec.thick, s * spec.tall]);
+            let asset = sw_catalog::generate(&req).map_err(|e| unread(cat.display, &e.to_string()))?;
+            Ok(Freeform::Catalog { category: cat.name, asset: Box::new(asset) })
+        }
+        Candidate::Basic(b) | Candidate::Object(b) => {
+            let model = (b.build)(spec);
+            let object = b.names.first().copied().unwrap_or("object");
+            let synthesis = finish(prompt.trim(), &format!("freeform:{}", object.replace(' ', "_")), &model);
+            Ok(Freeform::Composed { object, synthesis: Box::new(synthesis) })
+        }
+    }
+}
+
+/// What the offline synthesizer makes of a prompt: code (a dimensioned part of the
+/// feature language, or a composed free-form object), or the catalog's object.
+#[derive(Debug, Clone)]
+pub enum Offline {
+    Code(Box<Synthesis>),
+    Catalog { category: &'static str, asset: Box<Asset> },
+}
+
+/// Reads a prompt offline: a prompt with sizes is a dimensioned part; one without is a
+/// free-form object.
+pub fn offline(prompt: &str) -> Result<Offline, SynthError> {
+    match crate::synth::synthesize(prompt) {
+        Ok(s) => Ok(Offline::Code(Box::new(s))),
+        Err(SynthError::NoDimensions) => match read(prompt)? {
+            Freeform::Catalog { category, asset } => Ok(Offline::Catalog { category, asset }),
+            Freeform::Composed { synthesis, .. } => Ok(Offline::Code(synthesis)),
+        },
+        Err(e) => Err(e),
+    }
+}
+
+/// A catalog object's visual meshes as one mesh, in millimetres (Z up, on its floor).
+pub fn catalog_mesh_mm(asset: &Asset) -> Mesh {
+    let mut out = Mesh::default();
+    for (link, pose) in asset.links.iter().zip(asset.link_poses()) {
+        for v in &link.visuals {
+            out.append(&v.mesh, &pose);
+        }
+    }
+    for p in &mut out.vertices {
+        for c in p.iter_mut() {
+            *c *= 1000.0;
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn made(p: &str) -> String {
+        match read(p) {
+            Ok(Freeform::Catalog { category, .. }) => format!("catalog:{category}"),
+            Ok(Freeform::Composed { object, .. }) => format!("composed:{object}"),
+            Err(e) => format!("error: {e}"),
+        }
+    }
+
+    #[test]
+    fn objects_are_named_by_their_longest_phrase() {
+        assert_eq!(made("a coffee mug with a handle"), "catalog:mug");
+        assert_eq!(made("a cone"), "composed:cone");
+        assert_eq!(made("a traffic cone on a flat base"), "catalog:traffic_cone");
+        assert_eq!(made("a desk fan shape"), "composed:desk fan");
+        assert_eq!(made("a goblet or wine glass"), "composed:goblet");
+        assert_eq!(made("a staircase with three steps"), "composed:staircase");
+    }
+
+    #[test]
+    fn words_it_cannot_honour_are_refused_with_the_words() {
+        let e = made("a chair with three legs");
+        assert!(e.starts_with("error") && e.contains("three legs"), "{e}");
+        let e = made("a mug with a dragon");
+        assert!(e.contains("dragon"), "{e}");
+        let e = made("a teleporter");
+        assert!(e.starts_with("error"), "{e}");
+        let e = made("a hammer or a saw");
+        assert!(e.contains("saw"), "{e}");
+    }
+}
