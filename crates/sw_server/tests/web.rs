@@ -404,3 +404,59 @@ async fn the_forge_streams_its_progress_and_search_ranks_parts_by_meaning() {
     assert_eq!(r["similar"], json!([]));
     assert_eq!(r["mine"], json!([]));
 }
+
+/// With a REFINE model (a loopback OpenAI-compatible server), the model asks; resuming a
+/// conversation sends it the transcript and asks it once per turn; a failing model leaves
+/// the offline questions, and the answer says so.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_refinement_chat_asks_the_models_questions_when_one_is_configured() {
+    use sw_llm::{Endpoint, LlmConfig, LlmStage};
+    use sw_mockllm::{MockServer, Reply};
+    let model = MockServer::start(|r| {
+        let asked = r.messages().iter().filter(|(role, _)| role == "assistant").count();
+        if asked == 0 {
+            Reply::answer(r#"{"done": false, "question": "What will the arm pick up?"}"#)
+        } else {
+            Reply::answer(
+                r#"{"done": true, "final_prompt": "a 6 by 5 m lab with a workbench and a UR5e that picks boxes"}"#,
+            )
+        }
+    })
+    .unwrap();
+    let endpoint = |url: String| {
+        let mut e = Endpoint::new(url, "m-refine");
+        e.timeout = std::time::Duration::from_secs(5);
+        e.max_retries = 0;
+        e
+    };
+    let mut r = common::runner();
+    r.llm = Some(LlmConfig::offline().with(LlmStage::Refine, endpoint(model.base_url())));
+    let a = common::app_with(QueueLimits::default(), r).await;
+    let ann = a.user("ann").await;
+    let (s, v) = a.post("/api/refine", &ann, json!({ "prompt": "a lab with a workbench and a UR5e" })).await;
+    assert_eq!(s, StatusCode::OK, "{v}");
+    assert_eq!((v["asked_by"].as_str(), v["question"].as_str()), (Some("llm"), Some("What will the arm pick up?")));
+    let turns = json!([{ "question": "What will the arm pick up?", "answer": "boxes" }]);
+    let (_, v) =
+        a.post("/api/refine", &ann, json!({ "prompt": "a lab with a workbench and a UR5e", "turns": turns })).await;
+    assert_eq!(v["done"], true, "{v}");
+    assert_eq!(v["prompt"], "a 6 by 5 m lab with a workbench and a UR5e that picks boxes");
+    let calls = model.requests();
+    assert_eq!(calls.len(), 2, "one call per turn, none to replay the past");
+    assert!(
+        calls[1].messages().iter().any(|(role, c)| role == "user" && c.contains("boxes")),
+        "the answer reached the model"
+    );
+
+    // A model that fails: the offline questions, with a warning.
+    let dead = MockServer::start(|_| Reply::status(500, "down")).unwrap();
+    let mut r = common::runner();
+    r.llm = Some(LlmConfig::offline().with(LlmStage::Refine, endpoint(dead.base_url())));
+    let b = common::app_with(QueueLimits::default(), r).await;
+    let bob = b.user("bob").await;
+    let (s, v) = b.post("/api/refine", &bob, json!({ "prompt": "a lab with a workbench" })).await;
+    assert_eq!(s, StatusCode::OK, "{v}");
+    assert_eq!(v["asked_by"], "offline", "{v}");
+    assert!(v["question"].as_str().unwrap().to_lowercase().contains("room"), "{v}");
+    assert!(v["warnings"][0].as_str().unwrap().contains("offline planner's questions"), "{v}");
+}
