@@ -219,13 +219,24 @@ async function main() {
     const panel = await page.locator('#object-panel').innerText();
     assert(panel.includes(target.name) && panel.includes(target.support?.on === 'floor' ? 'the floor' : ''), `the panel names it: ${panel}`);
     assert(panel.includes('rests on') && panel.includes('size'), `the panel: ${panel}`);
+    // Play: the robot holds its home pose as in native MuJoCo, and everything stays put.
+    const posesNow = () =>
+      page.evaluate(() => Object.fromEntries(window.__sw.bodies().slice(1).map((n) => [n, window.__sw.bodyPosition(n)])));
+    const atHome = await posesNow();
     await page.click('#play');
-    await page.waitForFunction(() => /t = (0\.[3-9]|[1-9])/.test(document.getElementById('clock').textContent), null, { timeout: 30_000 });
+    await page.waitForFunction(() => /t = (0\.[7-9]|[1-9])/.test(document.getElementById('clock').textContent), null, { timeout: 30_000 });
     await shot(page, '04-scene-viewer');
     await page.click('#play');
     const clock = await page.locator('#clock').innerText();
-    log(`object panel read; simulation ran (${clock})`);
-    // The robot holds its pose while playing: the arm's bodies barely move.
+    const played = await posesNow();
+    let worst = ['', 0];
+    for (const [n, p] of Object.entries(atHome)) {
+      const q = played[n];
+      const d = Math.hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+      if (d > worst[1]) worst = [n, d];
+    }
+    assert(worst[1] < 0.005, `${worst[0]} moved ${worst[1]} m while playing`);
+    log(`object panel read; played to ${clock.replace(/\s+/g, ' ')}: no body (robot links included) moved more than ${(worst[1] * 1000).toFixed(2)} mm`);
     await page.click('#reset');
 
     // --- A sentence removes the clicked object ---
