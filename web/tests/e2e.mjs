@@ -126,7 +126,8 @@ function expiredToken(server, user) {
 }
 
 async function main() {
-  const server = await startServer();
+  // One runner: jobs wait in the queue behind each other (the cancel step needs a queued job).
+  const server = await startServer({ workers: 1 });
   log(`server at ${server.url} (data ${server.data})`);
   const browser = await chromium.launch(CHROMIUM);
   const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'sw-e2e-'));
@@ -365,6 +366,14 @@ async function main() {
 
     // --- A robot-pack scene (robosuite's Panda, OBJ meshes): drawn where MuJoCo puts it ---
     const packJob = (await api(server, token, 'POST', '/api/jobs', { prompt: 'a lab with a workbench', robots: ['robosuite_panda'] })).json.job_id;
+    // A job queued behind it is cancelled from its page.
+    const doomed = (await api(server, token, 'POST', '/api/jobs', { prompt: 'a garage with a car lift and two toolboxes' })).json.job_id;
+    await page.goto(`${server.url}/jobs/${doomed}`);
+    await page.getByText('Waiting in the queue').waitFor({ timeout: 20_000 });
+    await page.click('#cancel');
+    await page.getByText('The job was cancelled').waitFor({ timeout: 30_000 });
+    assert((await api(server, token, 'GET', `/api/jobs/${doomed}`)).json.state === 'cancelled', 'the job is cancelled');
+    log('a queued job cancelled from its page');
     await page.goto(`${server.url}/jobs/${packJob}`);
     await page.locator('#open-scene').waitFor({ timeout: 180_000 });
     await page.click('#open-scene');

@@ -46,16 +46,17 @@ for (const sig of ['SIGINT', 'SIGTERM']) {
 }
 
 /**
- * A running server: `{ url, data, stop() }`. `args` are extra `serve` arguments.
+ * A running server: `{ url, data, stop() }`. `args` are extra `serve` arguments, `workers`
+ * its job runners.
  * `env` adds environment variables (e.g. SCENEWRIGHT_ASSET_STORE).
  */
-export async function startServer({ args = [], env = {}, log = false } = {}) {
+export async function startServer({ args = [], env = {}, log = false, workers = 2 } = {}) {
   const port = await freePort();
   const data = fs.mkdtempSync(path.join(os.tmpdir(), 'sw-web-'));
   const bin = binary();
   const child = spawn(
     bin,
-    ['serve', '--addr', `127.0.0.1:${port}`, '--data', data, '--web', path.join(WEB, 'dist'), '--workers', '2', ...args],
+    ['serve', '--addr', `127.0.0.1:${port}`, '--data', data, '--web', path.join(WEB, 'dist'), '--workers', String(workers), ...args],
     { env: { ...process.env, SCENEWRIGHT_ASSET_STORE: path.join(data, 'assets'), ...env }, stdio: ['ignore', 'ignore', 'pipe'] },
   );
   let stderr = '';
