@@ -481,6 +481,20 @@ async function main() {
     await waitReady(page);
     log(`expired token: "${reason.trim()}"; signed in again and back on the scene`);
 
+    // --- Bad input: a browser without WebGL gets a message and the download, not a blank page ---
+    const noGl = await chromium.launch({ ...CHROMIUM, args: [...CHROMIUM.args.filter((a) => !a.includes('swiftshader')), '--disable-3d-apis'] });
+    try {
+      const p3 = await (await noGl.newContext({ viewport: VIEWPORT })).newPage();
+      await p3.goto(`${server.url}/signin`);
+      await p3.evaluate((t) => sessionStorage.setItem('scenewright.token', t), token);
+      await p3.goto(`${server.url}/scenes/${sceneId}`);
+      await p3.getByText('This browser cannot draw the scene').waitFor({ timeout: 20_000 });
+      await notBlank(p3, 'no WebGL');
+      log('a browser without WebGL: told so, offered the package');
+    } finally {
+      await noGl.close();
+    }
+
     assert(pageErrors.length === 0, `uncaught page errors: ${pageErrors.join('; ')}`);
     await ctx2.close();
     await ctx.close();

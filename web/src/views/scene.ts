@@ -34,7 +34,33 @@ export const sceneView: View = (root, params, query) => {
   let selected: string | null = null;
   let disposed = false;
 
-  const viewer = new Viewer(stage);
+  let viewer: Viewer;
+  try {
+    viewer = new Viewer(stage);
+  } catch (e) {
+    // No WebGL here: say so, and offer the package instead of a blank page.
+    root.append(
+      h(
+        'div',
+        { class: 'page' },
+        notice('error', `This browser cannot draw the scene (${api.describe(e)}). The package can still be downloaded and opened in MuJoCo.`),
+        h('button', {
+          text: 'Download package.zip',
+          on: {
+            click: () =>
+              void api.packageZip(id).then((blob) => {
+                const a = h('a', { href: URL.createObjectURL(blob), attrs: { download: `scene_${id}.zip` } });
+                document.body.append(a);
+                a.click();
+                a.remove();
+              }),
+          },
+        }),
+        h('p', {}, h('a', { href: '/scenes', text: 'Your scenes' })),
+      ),
+    );
+    return;
+  }
   viewer.onFirstFrame = () => {
     p.firstFrameAt = performance.now();
     stage.dataset.state = 'ready';
