@@ -227,6 +227,9 @@ fn summary(o: &Outcome) -> String {
         if s.robots.is_empty() { String::new() } else { format!(" · robots: {}", s.robots.join(", ")) }
     ));
     lines.push(format!("verify   {}", verification_line(r)));
+    if !r.relations.is_empty() {
+        lines.push(relations_line(r));
+    }
     for a in &r.approximated {
         lines.push(format!("approx   \"{}\" → {} ({})", a.text, a.became, a.reason));
     }
@@ -248,6 +251,17 @@ fn summary(o: &Outcome) -> String {
     }
     lines.push(format!("time     {:.0} ms", o.timings.total_ms));
     lines.join("\n")
+}
+
+/// "relations 12/12 held", or which did not, measured on the written scene.
+fn relations_line(r: &Report) -> String {
+    let held = r.relations.iter().filter(|c| c.held).count();
+    let mut line = format!("relations {held}/{} held", r.relations.len());
+    let missed: Vec<&str> = r.relations.iter().filter(|c| !c.held).map(|c| c.phrase.as_str()).collect();
+    if !missed.is_empty() {
+        line.push_str(&format!(" · not held: {}", missed.join("; ")));
+    }
+    line
 }
 
 fn verification_line(r: &Report) -> String {

@@ -154,6 +154,22 @@ pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
         })
 }
 
+/// The keep-clear space of an object the prompt put at a wall: none behind it (nor
+/// beside it, in a corner) — the rules check reports that shortfall as asked for.
+fn said_clearance(plan: &sw_plan::ScenePlan, group: &str, mut c: Clearance) -> Clearance {
+    for r in plan.relations.iter().filter(|r| r.subject == group) {
+        match r.kind {
+            RelationKind::AgainstWall { .. } | RelationKind::OnTwoWalls | RelationKind::Leaning { .. } => c.back = 0.0,
+            RelationKind::InCorner { .. } => {
+                c.back = 0.0;
+                c.sides = 0.0;
+            }
+            _ => {}
+        }
+    }
+    c
+}
+
 /// Small things that rest on surfaces (as opposed to furniture and fixtures).
 pub(crate) fn is_small(ctx: &Ctx<'_>, idx: usize) -> bool {
     ctx.input.objects[idx].asset.placement == PlacementKind::OnSurface
@@ -170,7 +186,16 @@ pub(crate) fn companion_rests_on_host(ctx: &Ctx<'_>, idx: usize) -> bool {
 /// A floor group: as a formation when it has one (kept whole, or each member placed on
 /// its own and the formation reported unmet), else one instance at a time.
 fn place_group(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) {
-    let formation = ctx.relations(group).into_iter().find(|r| r.is_group_formation()).cloned();
+    // Facing rows and aisles are rows too; they decide how the rows face.
+    let rank = |r: &RelationKind| match r {
+        RelationKind::FacingEachOther => 0,
+        RelationKind::InAisles => 1,
+        RelationKind::InRows { .. } => 2,
+        RelationKind::InRow => 3,
+        _ => 4,
+    };
+    let formation =
+        ctx.relations(group).into_iter().filter(|r| r.is_group_formation()).min_by_key(|r| rank(r)).cloned();
     if let Some(rel) = formation
         && idxs.len() > 1
     {
@@ -231,7 +256,7 @@ pub(crate) fn run_pinned(input: &LayoutInput<'_>, size: Dims, pins: Option<&crat
         group_failures: BTreeMap::new(),
         cursor: BTreeMap::new(),
         grid_cache: BTreeMap::new(),
-        clearances: input.objects.iter().map(|o| profile.clearance(&o.tags)).collect(),
+        clearances: input.objects.iter().map(|o| said_clearance(plan, &o.group, profile.clearance(&o.tags))).collect(),
         egress: profile.egress().map(|(_, w, _)| EgressGrid::new([size.width / 2.0, size.depth / 2.0], w, &door_area)),
         profile,
         access: Vec::new(),

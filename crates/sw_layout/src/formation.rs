@@ -176,6 +176,12 @@ fn formations(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind) ->
     let aisle: f64 = if is_storage(ctx, idxs) { 2.5_f64 } else { 1.6 };
     let aisle = aisle.max(clear + 0.1).min(3.4);
     let seat_gap = (1.2_f64).max(clear + 0.1);
+    // "two rows of three machines facing each other": the rows said.
+    let rows_said = ctx.relations(group).iter().find_map(|r| match r {
+        RelationKind::InRows { n: Some(k) } => Some(*k as usize),
+        RelationKind::InRows { n: None } => Some(2),
+        _ => None,
+    });
     match rel {
         RelationKind::InRow => {
             let mut v = vec![rows(ctx, &[idxs.to_vec()], &[true], &[], reserve)];
@@ -191,7 +197,7 @@ fn formations(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind) ->
             vec![rows(ctx, &split(idxs, k), &vec![true; k], &corridors, reserve)]
         }
         RelationKind::InAisles => {
-            let k = ((n as f64).sqrt().round() as usize).clamp(2, n.max(2)).min(n);
+            let k = rows_said.unwrap_or_else(|| ((n as f64).sqrt().round() as usize).clamp(2, n.max(2))).min(n);
             let mut v = Vec::new();
             for k in [k, k + 1, 2] {
                 if k > n || k < 2 {
@@ -580,11 +586,13 @@ fn around(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize], target: &str) -> bool 
         let t = targets[(k / per.max(1)).min(n_targets - 1)].1;
         let local_k = k % per.max(1);
         let b = ctx.bounds[idx];
+        // Barriers (screens, fences) on three sides, leaving the fourth open to walk in.
+        let barrier = b.max[2] - b.min[2] >= 1.2;
         let cands = if guard {
-            crate::guards::ring(ctx, idx, target, start + local_k)
+            crate::guards::ring(ctx, idx, target, if barrier { start + local_k % 3 } else { start + local_k })
         } else {
             // Opposite sides first for two, then round the remaining sides.
-            let side = [0, 2, 1, 3][local_k % 4] + start;
+            let side = if barrier { [0, 2, 1][local_k % 3] + start } else { [0, 2, 1, 3][local_k % 4] + start };
             let tucks: &[f64] =
                 if ctx.input.objects[idx].has_tag("seating") { &candidates::TUCKED } else { &candidates::OUTSIDE };
             candidates::around_body(&b, &t, side, tucks)

@@ -44,15 +44,19 @@ pub(crate) fn ring(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spo
             centres.push((Aabb::EMPTY, [p.pos[0], p.pos[1]], r.base_radius));
         }
     }
-    for (_, c, extent) in centres {
-        let radius = extent + reach + distance + 0.05;
-        for s in 0..4 {
-            let side = (k + s) % 4;
-            let (nx, ny) = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)][side];
-            for along in [0.0, -1.0, 1.0, -2.0, 2.0] {
-                let t = along * (b.max[0] - b.min[0] + 0.05);
-                let (px, py) = (c[0] + nx * (radius - b.min[1]) - ny * t, c[1] + ny * (radius - b.min[1]) + nx * t);
-                out.push(Spot::new(px, py, 0.0, yaw_facing(-nx, -ny)));
+    // Side k first (every radius, every shift), then the others; a little further out
+    // when something stands where the ring is (the machine the arm tends).
+    for s in 0..4 {
+        let side = (k + s) % 4;
+        let (nx, ny) = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)][side];
+        for (_, c, extent) in &centres {
+            for extra in [0.0, 0.25, 0.5] {
+                let radius = extent + reach + distance + 0.05 + extra;
+                for along in [0.0, -0.5, 0.5, -1.0, 1.0, -1.5, 1.5, -2.0, 2.0] {
+                    let t = along * (b.max[0] - b.min[0] + 0.05);
+                    let (px, py) = (c[0] + nx * (radius - b.min[1]) - ny * t, c[1] + ny * (radius - b.min[1]) + nx * t);
+                    out.push(Spot::new(px, py, 0.0, yaw_facing(-nx, -ny)));
+                }
             }
         }
     }

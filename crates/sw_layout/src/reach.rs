@@ -58,7 +58,7 @@ pub(crate) fn work_instance(ctx: &Ctx<'_>, group: &str, base: [f64; 3]) -> Optio
 
 /// The centreline of a conveyor's belt (its top surface's long axis), world frame.
 pub(crate) fn belt_line(ctx: &Ctx<'_>, idx: usize) -> Option<([f64; 3], [f64; 3])> {
-    if !ctx.input.objects[idx].has_tag("conveyor") {
+    if ctx.input.objects[idx].category != "conveyor" {
         return None;
     }
     let spot = ctx.placed[idx].as_ref()?.spot;

@@ -54,6 +54,18 @@ impl Body {
     }
 }
 
+/// A robot as relations measure it: an arm by its base (its mounting plate), a mobile
+/// base by its whole footprint; its front is its working direction (+X).
+pub(crate) fn robot_body(robot: &crate::RobotItem, spot: &Spot) -> Body {
+    let front = [spot.yaw.cos(), spot.yaw.sin()];
+    if robot.is_arm {
+        let r = robot.base_radius.max(0.1);
+        let fp = Aabb { min: [spot.x - r, spot.y - r, spot.z], max: [spot.x + r, spot.y + r, spot.z + 0.2] };
+        return Body { fp, front };
+    }
+    Body { fp: crate::space::union(&spot.boxes(&robot.keepout)), front }
+}
+
 /// Distance between two floor rectangles (negative when they overlap).
 pub(crate) fn gap(a: &Aabb, b: &Aabb) -> f64 {
     let dx = (b.min[0] - a.max[0]).max(a.min[0] - b.max[0]);
@@ -75,9 +87,8 @@ pub(crate) fn bodies(ctx: &Ctx<'_>, target: &str) -> Vec<(Option<usize>, Body)> 
         .enumerate()
         .filter(|(_, r)| r.group == target)
         .filter_map(|(ri, r)| {
-            let placed = ctx.robots[ri].as_ref()?;
-            let o = ctx.space.occupant(&r.name)?;
-            Some((None, Body { fp: o.bounds, front: [placed.yaw.cos(), placed.yaw.sin()] }))
+            let p = ctx.robots[ri].as_ref()?;
+            Some((None, robot_body(r, &Spot::new(p.pos[0], p.pos[1], p.pos[2], p.yaw))))
         })
         .collect()
 }

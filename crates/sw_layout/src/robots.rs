@@ -102,53 +102,96 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
         let n = hosts.len();
         hosts.rotate_left(turn % n);
     }
-    for (hi, hspot) in hosts {
-        let surfaces: Vec<SupportSurface> =
-            ctx.input.objects[hi].asset.surfaces.iter().filter(|s| s.clearance.is_none()).cloned().collect();
-        for surf in surfaces {
-            let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
-            let m = robot.base_radius + 0.01;
-            let mut local: Vec<(f64, f64)> = Vec::new();
-            let mut x = surf.min[0] + m;
-            while x <= surf.max[0] - m + 1e-9 {
-                let mut y = surf.min[1] + m;
-                while y <= surf.max[1] - m + 1e-9 {
-                    local.push((x, y));
-                    y += 0.05;
-                }
-                x += 0.05;
-            }
-            // The back edge centre first, then along the edges, then inwards.
-            let back = (cx, surf.min[1] + m);
-            local.sort_by(|a, b| {
-                let da = (a.0 - back.0).abs() + 2.0 * (a.1 - back.1).abs();
-                let db = (b.0 - back.0).abs() + 2.0 * (b.1 - back.1).abs();
-                da.total_cmp(&db)
-            });
-            for (lx, ly) in local {
-                let p = hspot.apply([lx, ly, surf.z]);
-                let c = hspot.apply([cx, cy, surf.z]);
-                let facing = robot_yaw_facing(c[0] - p[0], c[1] - p[1]);
-                let spots = if (c[0] - p[0]).hypot(c[1] - p[1]) < 0.05 {
-                    vec![hspot.yaw + PI / 2.0, hspot.yaw, hspot.yaw + PI, hspot.yaw - PI / 2.0]
-                } else {
-                    vec![facing]
-                };
-                for yaw in spots {
-                    let spot = Spot::new(p[0], p[1], p[2], yaw);
-                    let boxes = robot_boxes(robot, &spot);
-                    if ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) && clear_of_doorway(ctx, robot, &spot) {
-                        let host_name = ctx.input.objects[hi].name.clone();
-                        let coverage = coverage(&spot, robot, &hspot, &surf);
-                        commit(ctx, ri, robot, spot, boxes, "surface", Some(host_name), Some(coverage));
-                        return true;
+    // Where its own relations say ("on the counter next to the sink") first.
+    let rels: Vec<sw_plan::RelationKind> =
+        ctx.relations(&robot.group).into_iter().filter(|r| crate::relate::is_positional(r)).cloned().collect();
+    for strict in [true, false] {
+        if !strict && rels.is_empty() {
+            break;
+        }
+        let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
+        let mut chosen: Option<(usize, Spot, Spot, SupportSurface, Vec<Aabb>)> = None;
+        'hosts: for (hi, hspot) in &hosts {
+            let surfaces: Vec<SupportSurface> =
+                ctx.input.objects[*hi].asset.surfaces.iter().filter(|s| s.clearance.is_none()).cloned().collect();
+            for surf in surfaces {
+                for (spot, boxes) in surface_spots(ctx, robot, hspot, &surf) {
+                    let body = crate::relate::robot_body(robot, &spot);
+                    if strict && !checks.iter().all(|c| c.holds(ctx, &body, 1)) {
+                        continue;
                     }
+                    chosen = Some((*hi, *hspot, spot, surf.clone(), boxes));
+                    break 'hosts;
                 }
             }
+        }
+        drop(checks);
+        if let Some((hi, hspot, spot, surf, boxes)) = chosen {
+            if !strict {
+                let plan = ctx.input.plan;
+                let unmet: Vec<String> = rels
+                    .iter()
+                    .map(|r| plan.describe(&sw_plan::Relation { subject: robot.group.clone(), kind: r.clone() }))
+                    .collect();
+                ctx.warn(
+                    "relation_unmet",
+                    format!("{}: could not keep {} on its surface", robot.name, unmet.join(", ")),
+                );
+            }
+            let host_name = ctx.input.objects[hi].name.clone();
+            let coverage = coverage(&spot, robot, &hspot, &surf);
+            commit(ctx, ri, robot, spot, boxes, "surface", Some(host_name), Some(coverage));
+            return true;
         }
     }
     false
 }
+
+/// Free spawns of an arm on a surface: the back edge centre first, then along the edges,
+/// then inwards, working towards the surface's centre.
+fn surface_spots(ctx: &Ctx<'_>, robot: &RobotItem, hspot: &Spot, surf: &SupportSurface) -> Vec<(Spot, Vec<Aabb>)> {
+    let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
+    let m = robot.base_radius + 0.01;
+    let mut local: Vec<(f64, f64)> = Vec::new();
+    let mut x = surf.min[0] + m;
+    while x <= surf.max[0] - m + 1e-9 {
+        let mut y = surf.min[1] + m;
+        while y <= surf.max[1] - m + 1e-9 {
+            local.push((x, y));
+            y += 0.05;
+        }
+        x += 0.05;
+    }
+    let back = (cx, surf.min[1] + m);
+    local.sort_by(|a, b| {
+        let da = (a.0 - back.0).abs() + 2.0 * (a.1 - back.1).abs();
+        let db = (b.0 - back.0).abs() + 2.0 * (b.1 - back.1).abs();
+        da.total_cmp(&db)
+    });
+    let mut out = Vec::new();
+    for (lx, ly) in local {
+        let p = hspot.apply([lx, ly, surf.z]);
+        let c = hspot.apply([cx, cy, surf.z]);
+        let facing = robot_yaw_facing(c[0] - p[0], c[1] - p[1]);
+        let yaws = if (c[0] - p[0]).hypot(c[1] - p[1]) < 0.05 {
+            vec![hspot.yaw + PI / 2.0, hspot.yaw, hspot.yaw + PI, hspot.yaw - PI / 2.0]
+        } else {
+            vec![facing]
+        };
+        for yaw in yaws {
+            let spot = Spot::new(p[0], p[1], p[2], yaw);
+            let boxes = robot_boxes(robot, &spot);
+            if ctx.space.fits(&boxes, ROBOT_GAP, &[], false, &[]) && clear_of_doorway(ctx, robot, &spot) {
+                out.push((spot, boxes));
+            }
+        }
+    }
+    out
+}
+
+/// A carrier's pose, the robot's on it, its boxes, the instance it works at, and whether
+/// the work is in reach and its relations hold.
+type CarrierSpot = (Spot, Spot, Vec<Aabb>, Option<usize>, bool, bool);
 
 /// On a pedestal or cart made for it, standing beside its work with the work in reach.
 fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) -> bool {
@@ -170,7 +213,7 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         None => {
             let mut gs: Vec<String> = Vec::new();
             for (i, o) in ctx.input.objects.iter().enumerate() {
-                let worky = o.has_tag("surface") || o.has_tag("conveyor") || o.has_tag("machine");
+                let worky = o.has_tag("surface") || o.category == "conveyor" || o.has_tag("machine");
                 if worky && ctx.placed[i].is_some() && o.carries_robot.is_none() && !gs.contains(&o.group) {
                     gs.push(o.group.clone());
                 }
@@ -180,6 +223,8 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
     };
     let turn = ctx.input.robots[..ri].iter().filter(|r| matches!(r.mount, RobotMount::Carrier { .. })).count();
     let cb = ctx.bounds[ci];
+    // Beside its work first (kept only with the work in reach), then where its own
+    // relations say, then anywhere (reported).
     let mut candidates: Vec<(Spot, bool)> = Vec::new();
     for g in &work_groups {
         for s in crate::candidates::beside(ctx, &cb, g, turn) {
@@ -188,31 +233,35 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
     }
     let rels: Vec<sw_plan::RelationKind> =
         ctx.relations(&robot.group).into_iter().filter(|r| crate::relate::is_positional(r)).cloned().collect();
-    if named.is_none() || candidates.is_empty() {
-        for r in &rels {
-            candidates.extend(
-                crate::candidates::for_relation(ctx, &cb, &robot.group, turn, r).into_iter().map(|s| (s, false)),
-            );
-        }
-        for s in free_grid(ctx, &cb, &format!("{}#carrier", robot.group), true).iter().copied() {
-            candidates.push((s, false));
-        }
+    for r in &rels {
+        candidates
+            .extend(crate::candidates::for_relation(ctx, &cb, &robot.group, turn, r).into_iter().map(|s| (s, true)));
     }
+    for s in free_grid(ctx, &cb, &format!("{}#carrier", robot.group), true).iter().copied() {
+        candidates.push((s, false));
+    }
+    // The arm's stand is the operator's place at its work: it may stand in the work's
+    // keep-clear space.
+    let exempt: Vec<String> = work_groups
+        .iter()
+        .flat_map(|g| ctx.instances(g).into_iter().map(|i| ctx.input.objects[i].name.clone()).collect::<Vec<_>>())
+        .collect();
+    let ignore: Vec<&str> = exempt.iter().map(String::as_str).collect();
     let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
-    let mut fallback: Option<(Spot, Spot, Vec<Aabb>, Option<usize>)> = None;
-    for (spot, beside_work) in candidates {
-        if !fits_floor(ctx, ci, &spot, &[]) {
+    let mut fallback: Option<CarrierSpot> = None;
+    for (spot, preferred) in candidates {
+        if !fits_floor(ctx, ci, &spot, &ignore) {
             continue;
         }
         let base = spot.apply([0.0, 0.0, top]);
         // The instance it works at, and that it can: a belt within reach, a surface at hand.
         let work = work_groups.iter().find_map(|g| reach::work_instance(ctx, g, base));
-        let in_reach = work.is_some_and(|w| reach::can_work_at(ctx, base, robot.reach, w));
-        if beside_work && robot.is_arm && !in_reach && named.is_some() {
-            continue;
-        }
+        let in_reach =
+            !robot.is_arm || named.is_none() || work.is_some_and(|w| reach::can_work_at(ctx, base, robot.reach, w));
         let body = crate::relate::Body::object(&ctx.local[ci], &spot);
-        if !checks.iter().all(|c| c.holds(ctx, &body, 1)) && fallback.is_some() {
+        let holds = checks.iter().all(|c| c.holds(ctx, &body, 1));
+        let good = preferred && in_reach && holds;
+        if !good && fallback.is_some() {
             continue;
         }
         let (tx, ty) = work.and_then(|w| reach::work_point(ctx, base, w)).map_or((0.0, 0.0), |p| (p[0], p[1]));
@@ -225,8 +274,8 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         if !keeps_egress(ctx, ci, &spot) {
             continue;
         }
-        if !checks.iter().all(|c| c.holds(ctx, &body, 1)) {
-            fallback = Some((spot, rspot, boxes, work));
+        if !good {
+            fallback = Some((spot, rspot, boxes, work, in_reach, holds));
             continue;
         }
         drop(checks);
@@ -234,13 +283,29 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         return true;
     }
     drop(checks);
-    if let Some((spot, rspot, boxes, work)) = fallback {
+    if let Some((spot, rspot, boxes, work, in_reach, holds)) = fallback {
         let plan = ctx.input.plan;
-        let unmet: Vec<String> = rels
-            .iter()
-            .map(|r| plan.describe(&sw_plan::Relation { subject: robot.group.clone(), kind: r.clone() }))
-            .collect();
-        ctx.warn("relation_unmet", format!("{}: could not keep {}; placed nearby", robot.name, unmet.join(", ")));
+        let mut unmet: Vec<String> = Vec::new();
+        if !holds {
+            unmet.extend(
+                rels.iter()
+                    .map(|r| plan.describe(&sw_plan::Relation { subject: robot.group.clone(), kind: r.clone() })),
+            );
+        }
+        if !in_reach && let Some(g) = &named {
+            unmet.push(plan.describe(&sw_plan::Relation {
+                subject: robot.group.clone(),
+                kind: sw_plan::RelationKind::Reach { target: g.clone() },
+            }));
+        }
+        ctx.warn(
+            "relation_unmet",
+            format!(
+                "{}: could not keep {} (no free floor beside its work); placed nearby",
+                robot.name,
+                unmet.join(", ")
+            ),
+        );
         commit_carrier(ctx, ri, robot, ci, spot, rspot, boxes, work);
         return true;
     }
@@ -319,7 +384,7 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
         let yaw = if (tx - x).hypot(ty - y) < 1e-6 { 0.0 } else { robot_yaw_facing(tx - x, ty - y) };
         let spot = Spot::new(x, y, 0.0, yaw);
         let boxes = robot_boxes(robot, &spot);
-        let body = crate::relate::Body { fp: crate::space::union(&boxes), front: [yaw.cos(), yaw.sin()] };
+        let body = crate::relate::robot_body(robot, &spot);
         let all_hold = checks.iter().all(|c| c.holds(ctx, &body, 1));
         if !all_hold && fallback.is_some() {
             continue;

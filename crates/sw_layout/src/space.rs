@@ -46,8 +46,6 @@ pub(crate) struct Space {
     pub zones: Vec<Zone>,
     /// Occupants by floor cell: collision queries look only at their neighbourhood.
     cells: HashMap<(i32, i32), Vec<u32>>,
-    /// Occupant ids by name.
-    by_name: HashMap<String, usize>,
 }
 
 pub(crate) fn union(boxes: &[Aabb]) -> Aabb {
@@ -77,7 +75,6 @@ impl Space {
             occupants: Vec::new(),
             zones: Vec::new(),
             cells: HashMap::new(),
-            by_name: HashMap::new(),
         }
     }
 
@@ -159,12 +156,7 @@ impl Space {
                 }
             }
         }
-        self.by_name.insert(name.to_string(), id);
         self.occupants.push(Occupant { name: name.to_string(), boxes, bounds, on_floor });
-    }
-
-    pub fn occupant(&self, name: &str) -> Option<&Occupant> {
-        self.by_name.get(name).and_then(|&i| self.occupants.get(i))
     }
 }
 

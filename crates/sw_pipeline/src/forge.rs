@@ -4,7 +4,7 @@
 use sw_catalog::{AssetRequest, CatalogError};
 use sw_geom::{Asset, Rng};
 use sw_layout::{RobotItem, RobotMount};
-use sw_plan::{Mount, ObjectPlan, ScenePlan, SizeHint, Stage, Warning};
+use sw_plan::{Mount, ObjectPlan, RelationKind, ScenePlan, SizeHint, Stage, Warning};
 use sw_robots::RobotKind;
 
 /// One object instance with its asset.
@@ -48,8 +48,16 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
         *n += 1;
         format!("{base}_{n}")
     };
+    // The levels of shelving said to be full, to size what fills them.
+    let mut levels: std::collections::BTreeMap<String, Vec<sw_geom::SupportSurface>> =
+        std::collections::BTreeMap::new();
     for group in &plan.objects {
         let mut noted = false;
+        let filled = crate::loads::is_filled(plan, &group.id);
+        let fills = crate::loads::host_of(plan, &group.id);
+        // "tires leaning on the wall": flat things stand on edge.
+        let leaning =
+            plan.relations.iter().any(|r| r.subject == group.id && matches!(r.kind, RelationKind::Leaning { .. }));
         for k in 0..group.count {
             let (asset, tags, label) = match maker(group, k) {
                 Ok(x) => x,
@@ -73,6 +81,15 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                 }
                 noted = true;
             }
+            let asset = if leaning { crate::upright::on_edge(asset) } else { asset };
+            let asset = if filled { crate::loads::pin_levels(asset) } else { asset };
+            if filled && k == 0 {
+                levels.insert(group.id.clone(), asset.surfaces.clone());
+            }
+            let asset = match fills.as_ref().and_then(|h| levels.get(h)) {
+                Some(l) => crate::loads::fit_item(asset, l),
+                None => asset,
+            };
             let base = if group.category == "proxy" { slug(&label) } else { group.category.clone() };
             out.objects.push(ForgedObject {
                 name: next_name(&base),
@@ -146,7 +163,22 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                 RobotMount::Surface { group } => {
                     let used = arms_on.entry(group.clone()).or_insert(0);
                     *used += 1;
-                    let capacity = plan.object(&group).map_or(0, |g| g.count);
+                    // An arm per 0.75 m of each instance's top ("two Pandas on a workbench").
+                    let capacity: u32 = out
+                        .objects
+                        .iter()
+                        .filter(|o| o.group == group)
+                        .map(|o| {
+                            let top = o
+                                .asset
+                                .surfaces
+                                .iter()
+                                .filter(|s| s.clearance.is_none())
+                                .map(|s| (s.max[0] - s.min[0]).max(s.max[1] - s.min[1]))
+                                .fold(0.0, f64::max);
+                            ((top / 0.75).floor() as u32).clamp(1, 3)
+                        })
+                        .sum();
                     if *used > capacity {
                         out.warnings.push(Warning::new(
                             Stage::Forge,

@@ -15,13 +15,19 @@ mod edit_work;
 mod forge;
 mod forge_source;
 mod llm_generate;
+mod loads;
 pub mod manifest;
 mod package;
+mod physics_budget;
 mod parts;
 mod rebuild;
 mod refine;
+mod relations_check;
+mod relations_measure;
 mod report;
 mod robot_facts;
+mod scene_geom;
+mod upright;
 mod variations;
 
 use std::path::{Path, PathBuf};
@@ -367,7 +373,7 @@ pub(crate) fn run_from_plan(
                 .map_err(|e| PipelineError::Internal(format!("physics target {}: {e}", opts.physics.name())))?;
             (files, adapted)
         };
-        let (files, adapted) = files;
+        let (mut files, adapted) = files;
         if round == 0 {
             for n in &files.notes {
                 warnings.push(Warning::new(Stage::Bridge, "robot_model_adjusted", n.clone()));
@@ -377,6 +383,12 @@ pub(crate) fn run_from_plan(
             }
         }
         staging.write_scene(&files, &plan, &layout)?;
+        if opts.physics == PhysicsTarget::Mjx {
+            let note = physics_budget::write_budget(&staging, &mut files, &plan, &layout)?;
+            if round == 0 {
+                warnings.push(Warning::new(Stage::Bridge, "physics_target", note));
+            }
+        }
         finish(
             Stage::Bridge,
             t,
@@ -420,6 +432,7 @@ pub(crate) fn run_from_plan(
     let mut report = report::assemble(&plan, &layout, opts.seed, warnings, verification);
     report.llm_calls = prepared.telemetry.map(|t| t.calls()).unwrap_or_default();
     report.asset_cache = forged.cache;
+    relations_check::attach(&mut report, &plan, staging.path());
     staging.write_report(&report, &timings)?;
     let out_dir = staging.commit()?;
     Ok(Outcome { plan, layout, report, timings, out_dir })

@@ -202,6 +202,7 @@ impl ScenePlan {
                     | RelationKind::InFrontOf { .. }
                     | RelationKind::Behind { .. }
                     | RelationKind::Between { .. }
+                    | RelationKind::EachWith { .. }
             );
             let fields: Vec<(&str, &str)> = match &rel.kind {
                 RelationKind::Between { first, second } => {

@@ -344,9 +344,9 @@ fn group_count(
         Some(CountRule::Fill { host, levels }) if g.count.is_none() => {
             let hosts = counts.get(host).copied()?;
             let host_cat = d.groups.iter().find(|x| &x.id == host).and_then(|x| x.category).and_then(sw_catalog::find);
-            // Two on every level of every shelf; three on every pallet.
-            let per =
-                if *levels { 2.0 * host_cat.and_then(|c| c.param("levels")).map_or(3.0, |p| p.default) } else { 3.0 };
+            // Two on every level of every shelf (as many levels as the category's default
+            // has; the forge keeps that number); three on every pallet.
+            let per = if *levels { 2.0 * host_cat.map_or(3, support_levels) as f64 } else { 3.0 };
             let n = (f64::from(hosts) * per).clamp(1.0, f64::from(MAX_COUNT)) as u32;
             notes.push(Approximation {
                 text: g.phrase.clone(),
@@ -357,6 +357,15 @@ fn group_count(
         }
         _ => resolve_count(g.count, g.plural, &g.phrase, notes),
     }
+}
+
+/// How many support surfaces a category's default asset has (its levels).
+fn support_levels(c: &sw_catalog::Category) -> usize {
+    let mut req = sw_catalog::AssetRequest::new(c.name, 0);
+    if let Some(p) = c.param("levels") {
+        req.overrides.push(("levels".into(), p.default));
+    }
+    sw_catalog::generate(&req).map_or(3, |a| a.surfaces.len().max(1))
 }
 
 /// "screens" around something, or in a row, or against a wall, are partitions (welding

@@ -79,8 +79,30 @@ fn any_of(toks: &[Token], i: usize, phrases: &[&str]) -> Option<usize> {
     best
 }
 
-const DETERMINERS: &[&str] =
-    &["the", "a", "an", "one", "each", "every", "both", "either", "its", "their", "this", "that"];
+const DETERMINERS: &[&str] = &[
+    "the",
+    "a",
+    "an",
+    "one",
+    "each",
+    "every",
+    "both",
+    "either",
+    "its",
+    "their",
+    "this",
+    "that",
+    "other",
+    "first",
+    "second",
+    "third",
+    "fourth",
+    "last",
+    "same",
+    "remaining",
+    "nearest",
+    "closest",
+];
 
 fn skip_determiners(toks: &[Token], mut j: usize) -> usize {
     while toks.get(j).is_some_and(|t| t.kind == TokenKind::Word && DETERMINERS.contains(&t.norm.as_str())) {
@@ -199,8 +221,7 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
     if t.norm == "in"
         && let Some(k) = toks.get(i + 1).and_then(|x| x.number())
         && toks.get(i + 2).is_some_and(|w| matches!(w.norm.as_str(), "rows" | "lines" | "columns"))
-        && k >= 1.0
-        && k <= 50.0
+        && (1.0..=50.0).contains(&k)
     {
         best = Some((3, Some(k.round() as u32)));
     }

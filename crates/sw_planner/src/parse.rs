@@ -147,6 +147,8 @@ pub(crate) struct Parser<'a> {
     with_subject: Option<String>,
     /// Where the phrase being taken starts.
     phrase_start: usize,
+    /// Groups loaded since "full of" / "loaded with".
+    support_taken: usize,
 }
 
 /// A collective noun before a phrase: "a row of", "two rows of", "a stack of", "an aisle of".
@@ -189,6 +191,7 @@ impl<'a> Parser<'a> {
             each_taken: 0,
             with_subject: None,
             phrase_start: 0,
+            support_taken: 0,
         }
     }
 
@@ -783,14 +786,25 @@ impl<'a> Parser<'a> {
                 }
                 let idx = self.draft.robots.len();
                 let mount = if word.on_mobile_base { Mount::MobileBase } else { Mount::Auto };
+                // "tables, each with a Panda on it": one on every table.
+                let each = self.each_host.clone().filter(|_| self.each_taken == 0);
+                let count = match &each {
+                    Some(h) => self.group(h).and_then(|g| g.count).map(|c| c * p.count.unwrap_or(1.0)).or(p.count),
+                    None => p.count,
+                };
                 self.draft.robots.push(RobotDraft {
                     word,
                     phrase: p.text.clone(),
-                    count: p.count,
-                    plural: p.plural,
+                    count,
+                    plural: p.plural || each.is_some(),
                     mount,
                     near: None,
                 });
+                if let Some(h) = each {
+                    self.each_taken += 1;
+                    self.relate(&h, RelationKind::EachWith { target: format!("@robot:{idx}") });
+                    self.with_host = Some(h);
+                }
                 // "a table with a UR5e": on it — unless a comma ended the list first.
                 let s = start;
                 let broken = s >= 2 && self.toks.get(s - 2).is_some_and(|t| t.kind == TokenKind::Comma);
@@ -914,12 +928,23 @@ impl<'a> Parser<'a> {
             }
             self.each_host = None;
         }
+        // A load ("stocked with bins") is the list right after it, joined by "and".
+        let s = self.phrase_start;
+        let comma_break = s >= 1 && self.toks.get(s - 1).is_some_and(|t| t.kind == TokenKind::Comma)
+            || s >= 2
+                && matches!(self.word(s - 1), "and")
+                && self.toks.get(s - 2).is_some_and(|t| t.kind == TokenKind::Comma);
+        if self.support.is_some() && self.support_taken > 0 && comma_break {
+            self.with_host = None;
+            self.support = None;
+        }
         if let Some(host) = self.with_host.clone()
             && self.group_is_small(id)
         {
             self.relate(id, RelationKind::On { target: host.clone() });
             self.on_host.push((id.to_string(), host.clone()));
             self.take_support(&host, id);
+            self.support_taken += 1;
         } else {
             self.with_host = None;
             self.support = None;

@@ -57,6 +57,19 @@ pub fn check(input: &LayoutInput<'_>, scene: &LaidOutScene, profile: &Profile, d
         })
     };
 
+    let put_at_wall = |group: &str| {
+        input.plan.relations.iter().any(|r| {
+            r.subject == group
+                && matches!(
+                    r.kind,
+                    RelationKind::AgainstWall { .. }
+                        | RelationKind::OnTwoWalls
+                        | RelationKind::InCorner { .. }
+                        | RelationKind::Leaning { .. }
+                )
+        })
+    };
+
     let mut out = Vec::new();
     let mut access: Vec<(String, Aabb)> = Vec::new();
     for s in &standing {
@@ -143,7 +156,8 @@ pub fn check(input: &LayoutInput<'_>, scene: &LaidOutScene, profile: &Profile, d
                 .max(-half[1] - world_zone.min[1]);
             if outside > 1e-6 && depth - outside < measured {
                 measured = (depth - outside).max(0.0);
-                culprit = Some(("the wall".to_string(), false));
+                // "a machine against the wall" asks for its back (or side) to be at it.
+                culprit = Some(("the wall".to_string(), put_at_wall(&s.group)));
             }
             if measured < depth - 1e-3 {
                 let (who, requested) = culprit.unwrap_or_else(|| ("an obstacle".into(), false));

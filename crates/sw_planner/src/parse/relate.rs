@@ -46,8 +46,10 @@ impl Parser<'_> {
                     return Some(j + 1);
                 }
             }
-            // "at the end of the row": the most recent group in a row.
-            if cue == Cue::EndOf && matches!(self.word(j), "row" | "line" | "rows" | "lines" | "aisle") {
+            // "at the end of the row", "between the rows": the most recent group in rows.
+            if matches!(self.word(j), "row" | "line" | "rows" | "lines" | "aisle" | "aisles")
+                && matches!(cue, Cue::EndOf | Cue::Between | Cue::InFront | Cue::Behind | Cue::NextTo | Cue::Near)
+            {
                 let row = self.draft.relations.iter().rev().find_map(|(s, k)| {
                     matches!(k, RelationKind::InRow | RelationKind::InRows { .. } | RelationKind::FacingEachOther)
                         .then(|| s.clone())
@@ -60,9 +62,10 @@ impl Parser<'_> {
                     row.filter(|r| Some(r) != current.as_ref()).or_else(|| self.last_plural_group(current.as_deref()));
                 if let Some(row) = row {
                     self.mark(i, j + 1);
+                    let targets = if cue == Cue::Between { vec![row.clone(), row] } else { vec![row] };
                     match self.subject.clone() {
-                        Some(s) => self.apply(&s, cue, vec![row]),
-                        None => self.pending.push((cue, vec![row])),
+                        Some(s) => self.apply(&s, cue, targets),
+                        None => self.pending.push((cue, targets)),
                     }
                     return Some(j + 1);
                 }

@@ -31,6 +31,10 @@ impl Parser<'_> {
         // "an aisle of racks" when "aisles" is plural: several aisles.
         let n = if noun.ends_with('s') && q == 0 { 2.0 } else { n };
         self.mark(i, i + q + 2);
+        // A new arrangement starts a new thing: it is not the load of the one before.
+        self.with_host = None;
+        self.support = None;
+        self.each_host = None;
         self.collective = Some((kind, n));
         Some(i + q + 2)
     }
@@ -158,6 +162,7 @@ impl Parser<'_> {
         self.mark(i, next);
         self.with_host = Some(host);
         self.support = Some(kind);
+        self.support_taken = 0;
         Some(next)
     }
 

@@ -1,0 +1,89 @@
+//! Loads sized to their carriers. Items said to fill shelving ("shelves full of boxes",
+//! "stocked with bins") are made small enough that two stand side by side on every
+//! level and fit under the level above; the shelving keeps its category's number of
+//! levels, so that the planner's count (two per level) fills every one.
+
+use std::collections::BTreeMap;
+
+use sw_catalog::AssetRequest;
+use sw_geom::{Asset, SupportSurface};
+use sw_plan::{RelationKind, ScenePlan};
+
+/// The group whose levels `group` fills, if any.
+pub(crate) fn host_of(plan: &ScenePlan, group: &str) -> Option<String> {
+    plan.relations.iter().find_map(|r| match &r.kind {
+        RelationKind::FullOf { target } if target == group => Some(r.subject.clone()),
+        _ => None,
+    })
+}
+
+/// Whether `group` is shelving said to be full of something.
+pub(crate) fn is_filled(plan: &ScenePlan, group: &str) -> bool {
+    plan.relations.iter().any(|r| r.subject == group && matches!(r.kind, RelationKind::FullOf { .. }))
+}
+
+/// The same catalog asset made again with some parameters changed (same seed, colour).
+fn remade(a: &Asset, change: &BTreeMap<&str, f64>) -> Option<Asset> {
+    sw_catalog::find(&a.category)?;
+    let mut req = AssetRequest::new(&a.category, a.seed);
+    req.overrides = a.params.iter().map(|(n, v)| (n.clone(), change.get(n.as_str()).copied().unwrap_or(*v))).collect();
+    req.color = a.materials.iter().find(|m| m.recolorable).map(|m| m.rgba);
+    sw_catalog::generate(&req).ok()
+}
+
+/// Shelving with its category's default number of levels (the count the plan filled).
+pub(crate) fn pin_levels(a: Asset) -> Asset {
+    let Some(def) = sw_catalog::find(&a.category).and_then(|c| c.param("levels")) else { return a };
+    if a.param("levels").is_some_and(|v| (v.round() - def.default.round()).abs() < 0.5) {
+        return a;
+    }
+    let change = BTreeMap::from([("levels", def.default)]);
+    remade(&a, &change).unwrap_or(a)
+}
+
+/// An item small enough that two fit side by side on each of `levels` and under the
+/// level above.
+pub(crate) fn fit_item(a: Asset, levels: &[SupportSurface]) -> Asset {
+    if levels.is_empty() {
+        return a;
+    }
+    let s = a.bounds().size();
+    let clear = levels.iter().filter_map(|l| l.clearance).fold(f64::INFINITY, f64::min) - 0.03;
+    let long = levels.iter().map(|l| l.max[0] - l.min[0]).fold(f64::INFINITY, f64::min) / 2.0 - 0.03;
+    let deep = levels.iter().map(|l| l.max[1] - l.min[1]).fold(f64::INFINITY, f64::min) - 0.02;
+    let mut change: BTreeMap<&str, f64> = BTreeMap::new();
+    if s[2] > clear && clear > 0.0 {
+        change.insert("height", clear);
+    }
+    if s[0] > long && long > 0.0 {
+        change.insert("width", long);
+    }
+    if s[1] > deep && deep > 0.0 {
+        change.insert("depth", deep);
+    }
+    if change.is_empty() {
+        return a;
+    }
+    remade(&a, &change).unwrap_or(a)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_bin_made_to_fill_shelf_levels_fits_two_to_a_level() {
+        let shelf = pin_levels(sw_catalog::generate(&AssetRequest::new("gondola_shelf", 7)).unwrap());
+        let levels = shelf.surfaces.clone();
+        assert_eq!(levels.len(), 5, "four shelves above the base deck");
+        let bin = fit_item(sw_catalog::generate(&AssetRequest::new("bin", 3)).unwrap(), &levels);
+        let s = bin.bounds().size();
+        for l in &levels {
+            assert!(2.0 * s[0] + 0.03 <= l.max[0] - l.min[0], "{s:?} on {l:?}");
+            assert!(s[1] <= l.max[1] - l.min[1]);
+            if let Some(c) = l.clearance {
+                assert!(s[2] < c, "{s:?} under {c}");
+            }
+        }
+    }
+}
