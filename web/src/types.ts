@@ -215,6 +215,7 @@ function decodeRelation(v: unknown, what: string): RelationCheck {
 }
 
 function fmt(x: number): string {
+  if (Number.isInteger(x)) return String(x);
   return Math.abs(x) >= 100 ? x.toFixed(0) : Math.abs(x) >= 1 ? x.toFixed(2) : x.toPrecision(2);
 }
 

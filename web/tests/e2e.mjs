@@ -395,11 +395,35 @@ async function main() {
     await shot(page, '13-robot-pack');
     log(`robot pack: ${packTimings.converted} OBJ meshes read by the worker, compiled in ${packTimings.compileMs.toFixed(0)} ms; ${armBody} drawn at its spawn point`);
 
+    // --- An anomaly dataset scene: the labelled object's panel shows its label (linked by URL) ---
+    const anomJob = (await api(server, token, 'POST', '/api/jobs', { prompt: 'a storage room with two shelves and eight boxes on them', seed: 5, options: { anomaly: { kinds: ['floating'], rate: 0.5 } } })).json.job_id;
+    let anomScene = null;
+    for (let k = 0; k < 600 && !anomScene; k++) {
+      const j = (await api(server, token, 'GET', `/api/jobs/${anomJob}`)).json;
+      assert(j.state !== 'failed', `the anomaly job failed: ${j.error}`);
+      anomScene = j.scene_id;
+      if (!anomScene) await new Promise((r) => setTimeout(r, 200));
+    }
+    const anomLayout = (await api(server, token, 'GET', `/api/scenes/${anomScene}/files/layout.json`)).json;
+    const label = anomLayout.anomalies[0];
+    assert(label, 'the scene has an anomaly label');
+    await page.goto(`${server.url}/scenes/${anomScene}?object=${label.object}`);
+    await waitReady(page);
+    await page.locator(`#object-panel[data-object="${label.object}"]`).waitFor();
+    const anomPanel = await page.locator('#object-panel').innerText();
+    assert(anomPanel.includes('Anomaly labels') || anomPanel.toLowerCase().includes('anomaly labels'), `the panel: ${anomPanel}`);
+    assert(anomPanel.includes(label.kind), `the panel names the kind ${label.kind}: ${anomPanel}`);
+    await shot(page, '14-anomaly-label');
+    log(`anomaly scene: ${label.object}'s panel shows "${label.kind}: ${label.description}"`);
+    const zipA = await fetch(`${server.url}/api/scenes/${anomScene}/package.zip`, { headers: { authorization: `Bearer ${token}` } });
+    const cA = check(mj, 'the anomaly scene', readZip(Buffer.from(await zipA.arrayBuffer())), 10);
+    assert(cA.ok, `the anomaly scene in MuJoCo 3.14: ${cA.error}`);
+
     // --- My scenes, settings ---
     await page.click('a[href="/scenes"]');
     await page.waitForFunction(() => {
       const imgs = [...document.querySelectorAll('img.thumb')];
-      return imgs.length >= 6 && imgs.every((i) => i.complete && i.naturalWidth > 0);
+      return imgs.length >= 7 && imgs.every((i) => i.complete && i.naturalWidth > 0);
     }, null, { timeout: 60_000 });
     await shot(page, '08-my-scenes');
     await page.click('a[href="/settings"]');

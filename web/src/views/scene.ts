@@ -337,6 +337,9 @@ export const sceneView: View = (root, params, query) => {
       model = loaded.model;
       p.timings = { ...loaded.timings };
       viewer.setModel(loaded.model, loaded.poses);
+      // A link may name an object (`?object=shelf_1`): it is shown selected.
+      const named = query.get('object');
+      if (named && loaded.model.bodies.some((b) => b.name === named)) select(named);
       fill(status, notice('ok', `Loaded in MuJoCo 3.14 (WASM): ${loaded.model.bodies.length} bodies, ${loaded.model.geoms.length} geoms, ${(loaded.timings.bytes / 1e6).toFixed(1)} MB; compiled in ${loaded.timings.compileMs.toFixed(0)} ms. Click an object to inspect it, drag it to move it.`));
     } catch (e) {
       if (disposed) return;

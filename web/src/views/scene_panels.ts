@@ -39,7 +39,7 @@ export function objectPanel(name: string, layout: Layout | null, report: Report)
             h(
               'li',
               { class: r.held === false ? 'bad' : r.held ? 'good' : '' },
-              r.phrase ? `“${r.phrase}”` : `${r.subject} ${r.relation} ${r.targets.join(', ')}`,
+              r.phrase || `${r.subject} ${r.relation} ${r.targets.join(', ')}`,
               r.held === null ? '' : r.held ? ' — holds' : ' — does not hold',
               r.measured ? ` (${r.measured})` : '',
               r.reason ? `: ${r.reason}` : '',
