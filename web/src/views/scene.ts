@@ -169,7 +169,8 @@ export const sceneView: View = (root, params, query) => {
         navigate(`/scenes/${job.scene_id}`);
       } else {
         viewer.clearOffsets();
-        fill(editStatus, notice('error', `Refused: ${job.error ?? 'the edit failed'}. The scene is unchanged.`));
+        const why = job.error ?? 'the edit failed';
+        fill(editStatus, notice('error', `Refused: ${why}${/unchanged/.test(why) ? '.' : '. The scene is unchanged.'}`));
       }
     } catch (e) {
       viewer.clearOffsets();
