@@ -155,16 +155,21 @@ async function main() {
     await page.fill('#prompt', 'a lab with a workbench and a shelf');
     await page.click('#refine');
     let turns = 0;
+    let sized = false;
     for (;;) {
       await page.waitForFunction(() => document.querySelector('#chat-final blockquote') || !document.querySelector('#chat-answer').disabled, null, { timeout: 30_000 });
       if (await page.locator('#chat-final blockquote').count()) break;
       turns++;
-      const answer = turns === 1 ? '6 by 5 m' : turns === 2 ? 'done' : 'skip';
+      const question = await page.locator('.bubble.q').last().innerText();
+      // The room's size when asked; after that, done.
+      const answer = !sized && /room|big|size/i.test(question) ? '6 by 5 m' : sized ? 'done' : 'skip';
+      sized ||= answer === '6 by 5 m';
       await page.fill('#chat-answer', answer);
       await page.click('#chat-send');
       if (turns > 9) throw new Error('the refinement did not end');
     }
     const final = await page.locator('#final-prompt').innerText();
+    assert(sized, 'the chat asked for the room size');
     assert(/6\s*(by|x|×)\s*5/.test(final), `the final prompt holds the answer: ${final}`);
     await shot(page, '02-compose-refine');
     await page.click('#chat-accept');
