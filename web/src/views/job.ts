@@ -112,6 +112,8 @@ export const jobView: View = (root, params, query) => {
             notice('ok', 'The scene is ready and verified in MuJoCo.'),
             h('a', { id: 'open-scene', class: 'button primary', href: `/scenes/${e.scene_id}`, text: 'Open the scene' }),
           );
+        } else if (e.job.state === 'succeeded') {
+          fill(result, notice('ok', `The ${e.job.kind} job finished.`));
         } else if (e.job.state === 'cancelled') {
           fill(result, notice('info', 'The job was cancelled; nothing was stored.'));
         } else {
