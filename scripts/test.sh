@@ -36,16 +36,3 @@ cargo build --locked -p sw_cli
   ../.cache/py-venv/bin/mypy
   SCENEWRIGHT_BIN="$root/target/debug/scenewright" ../.cache/py-venv/bin/python -m pytest -q tests
 )
-
-# --- The Python package (python/, issue 14): ruff, mypy, then pytest against the binary the
-# tests built (setup.sh --tests installed it into .cache/py-venv from ./python). MJX runs
-# on a small sample here (its JIT compile on CPU is slow); the whole bench suite runs in
-# the benchmark (bench/gpu/targets.py). About 3 minutes. ---
-cargo build --locked -p sw_cli
-(
-  cd python
-  ../.cache/py-venv/bin/ruff check .
-  ../.cache/py-venv/bin/ruff format --check .
-  ../.cache/py-venv/bin/mypy
-  SCENEWRIGHT_BIN="$root/target/debug/scenewright" ../.cache/py-venv/bin/python -m pytest -q tests
-)
