@@ -158,6 +158,15 @@ async fn owners_and_others(db: Db) {
     assert!(!layout.to_string().contains("\"chair_1\""), "chair_1 is gone");
     let (_, list) = a.get("/api/scenes", &ann).await;
     assert_eq!(list["scenes"].as_array().unwrap().len(), 2);
+    // Both versions, from either end of the lineage (a recursive query on both databases).
+    for from in [scene_id.as_str(), v2] {
+        let (s, versions) = a.get(&format!("/api/scenes/{from}/versions"), &ann).await;
+        assert_eq!(s, StatusCode::OK, "{versions}");
+        let ids: Vec<&str> =
+            versions["versions"].as_array().unwrap().iter().map(|x| x["id"].as_str().unwrap()).collect();
+        assert_eq!(ids, vec![scene_id.as_str(), v2]);
+        assert_eq!(versions["versions"][1]["command"], "remove chair_1");
+    }
     // An edit the grammar cannot apply fails the job with a reason, and makes no scene.
     let (_, v) = a.post(&format!("/api/scenes/{scene_id}/edits"), &ann, json!({"command": "remove the unicorn"})).await;
     let bad = a.wait_job(v["job_id"].as_str().unwrap(), &ann).await;
