@@ -50,7 +50,10 @@ export function notice(kind: 'error' | 'info' | 'ok', text: string): HTMLElement
 }
 
 export function fmtMs(ms: number): string {
-  return ms >= 1000 ? `${(ms / 1000).toFixed(2)} s` : `${ms.toFixed(0)} ms`;
+  if (ms >= 1000) return `${(ms / 1000).toFixed(2)} s`;
+  if (ms >= 10) return `${ms.toFixed(0)} ms`;
+  // The offline stages take fractions of a millisecond: "0 ms" reads as "not measured".
+  return ms >= 0.1 ? `${ms.toFixed(1)} ms` : '< 0.1 ms';
 }
 
 export function fmtDate(ms: number): string {
