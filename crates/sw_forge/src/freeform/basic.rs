@@ -62,9 +62,9 @@ fn cone(s: &Spec) -> Model {
 
 /// A pipe lying along X.
 fn pipe(s: &Spec) -> Model {
-    let od = 60.0 * s.size * s.thick;
+    let od = 80.0 * s.size * s.thick;
     let id = od * 0.8;
-    let len = 400.0 * s.size * s.long;
+    let len = 300.0 * s.size * s.long;
     let mut p = Parts::default();
     p.add("pipe", Shape::Prism { profile: Profile::Annulus { od, id }, axis: Axis::X, at: [0.0, od / 2.0], rot: 0.0, from: -len / 2.0, to: len / 2.0 });
     p.finish()

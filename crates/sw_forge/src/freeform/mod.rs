@@ -181,9 +181,10 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
         }
         for at in 0..=words.len() - n {
             if (0..n).all(|k| words[at + k].0 == name[k]) {
+                // Longest, then first said (features come after the object), then ranked.
                 let better = match &best {
                     None => true,
-                    Some((_, bn, bc)) => n > *bn || (n == *bn && cand.rank() < bc.rank()),
+                    Some((ba, bn, bc)) => n > *bn || (n == *bn && (at < *ba || (at == *ba && cand.rank() < bc.rank()))),
                 };
                 if better {
                     best = Some((at, n, cand));
@@ -197,11 +198,20 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
         return Err(unread(text, "the synthesizer knows no object by these words (a catalog object, a shape, or a dimensioned part)"));
     };
     let mut spec = Spec::default();
-    // Before the name: size and plain words only.
-    for i in 0..at {
+    // Before the name: size and plain words, or another name of it and "or" ("a goblet
+    // or wine glass").
+    let names: Vec<Vec<String>> = phrases().into_iter().filter(|(_, c)| c.same(&cand)).map(|(n, _)| n).collect();
+    let mut i = 0;
+    while i < at {
         let w = &words[i].0;
-        if !(is_plain(w) || size_word(w, &mut spec)) {
-            return Err(unread(&quote(i, i), "a word the synthesizer cannot give this object"));
+        if is_plain(w) || size_word(w, &mut spec) || (w == "or" && i > 0) {
+            i += 1;
+            continue;
+        }
+        let other = names.iter().filter(|nm| !nm.is_empty() && i + nm.len() <= at && (0..nm.len()).all(|k| words[i + k].0 == nm[k]) && words.get(i + nm.len()).is_some_and(|x| x.0 == "or")).map(Vec::len).max();
+        match other {
+            Some(len) => i += len,
+            None => return Err(unread(&quote(i, i), "a word the synthesizer cannot give this object")),
         }
     }
     // After it: "with …", "on …", "and …", "or <another name of it>": features it has.

@@ -37,7 +37,12 @@ fn bucket(s: &Spec) -> Model {
     let (rb, rt, h) = (110.0 * k * s.wide, 140.0 * k * s.wide, 280.0 * k * s.tall);
     let mut p = Parts::default();
     p.add("pail", cup(rb, rt, h, 4.0 * k, 6.0 * k, 0.0));
-    p.add("handle", rod_arc(8.0 * k, [0.0, 0.0, h - 12.0 * k], rt - 2.0 * k, Axis::X, Axis::Z, -8.0, 188.0));
+    // Two ears on the rim and a handle whose ends sit inside them.
+    let (ex, ez) = (rt + 6.0 * k, h - 25.0 * k);
+    for side in [-1.0, 1.0] {
+        p.add("ear", bx([side * ex - 8.0 * k, -10.0 * k, h - 40.0 * k], [side * ex + 8.0 * k, 10.0 * k, h - 10.0 * k]));
+    }
+    p.add("handle", rod_arc(8.0 * k, [0.0, 0.0, ez], ex, Axis::X, Axis::Z, 0.0, 180.0));
     p.finish()
 }
 
@@ -245,15 +250,22 @@ fn coat_rack(s: &Spec) -> Model {
     p.add("pole", cyl_z(40.0 * k, 35.0 * k, h, 0.0, 0.0));
     p.add("knob", sphere(64.0 * k, [0.0, 0.0, h + 10.0 * k]));
     let hook = |p: &mut Parts, axis: Axis, sign: f64, z: f64| {
+        // The hook starts inside the pole (radius 20), its end disc wholly in it.
         let mut c = [0.0, 0.0, z];
-        c[axis.index()] = sign * 20.0 * k;
+        c[axis.index()] = sign * 8.0 * k;
         let (a0, a1) = if sign > 0.0 { (-90.0, 30.0) } else { (270.0, 150.0) };
-        p.add("hook", rod_arc(12.0 * k, c, 60.0 * k, axis, Axis::Z, a0, a1));
+        p.add("hook", rod_arc(16.0 * k, c, 90.0 * k, axis, Axis::Z, a0, a1));
+        // A ball at the hook's end.
+        let t = a1.to_radians();
+        let mut e = c;
+        e[axis.index()] += 90.0 * k * t.cos();
+        e[2] += 90.0 * k * t.sin();
+        p.add("hook end", sphere(24.0 * k, e));
     };
     let hooks = s.count.unwrap_or(4);
     let dirs: &[(Axis, f64)] = if hooks == 2 { &[(Axis::X, 1.0), (Axis::X, -1.0)] } else { &[(Axis::X, 1.0), (Axis::Y, 1.0), (Axis::X, -1.0), (Axis::Y, -1.0)] };
     for (axis, sign) in dirs {
-        hook(&mut p, *axis, *sign, h - 150.0 * k);
+        hook(&mut p, *axis, *sign, h - 200.0 * k);
     }
     p.finish()
 }

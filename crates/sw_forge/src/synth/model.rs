@@ -142,9 +142,14 @@ impl Model {
                 if !reaches {
                     continue;
                 }
+                // A cut running along this axis leaves the end faces where it does not cover
+                // them: kept when, across, it leaves a quarter of the part on some side.
                 let along = c.shape.axis().is_some_and(|a| a.index() == k);
-                let inside_others = (0..3).filter(|j| *j != k).all(|j| q[0][j] > b[0][j] + EPS && q[1][j] < b[1][j] - EPS);
-                if !(along && inside_others) {
+                let leaves = (0..3).filter(|j| *j != k).any(|j| {
+                    let w = (b[1][j] - b[0][j]).max(EPS);
+                    (q[0][j] - b[0][j]).max(b[1][j] - q[1][j]) >= 0.25 * w
+                });
+                if !(along && leaves) {
                     ok[k] = false;
                 }
             }

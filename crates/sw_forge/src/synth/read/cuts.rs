@@ -69,6 +69,14 @@ fn check_cuts_something(r: &Reader<'_>, e: usize, bi: usize) -> Res<()> {
     if outside || swallowed {
         return Err(Refusal::new(r.quote_element(e), "as placed by these words it would cut nothing: it lies in empty space"));
     }
+    // A cut that holds a whole body would remove it ("a 25mm bore" in a 20mm cylinder).
+    let raw = c.bounds();
+    if let Some(body) = r.model.adds.iter().find(|a| {
+        let q = a.bounds();
+        (0..3).all(|k| raw[0][k] <= q[0][k] + 1e-9 && raw[1][k] >= q[1][k] - 1e-9)
+    }) {
+        return Err(Refusal::new(r.quote_element(e), format!("it would remove the whole {}", body.label)));
+    }
     Ok(())
 }
 

@@ -211,7 +211,12 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                 });
                 if !all_read {
                     // A reference to a made thing ("through the plate") or a restating name.
-                    let referenced = m.iter().all(|mi| r.mentions[*mi].prep.is_some() || r.mentions[*mi].definite);
+                    // Named as where something else is ("through the wall", "of the shaft"),
+                    // not as something the part has ("with four holes").
+                    let referenced = m.iter().all(|mi| {
+                        let x = &r.mentions[*mi];
+                        x.prep.as_deref().is_some_and(|p| p != "with") || (x.definite && x.prep.as_deref() != Some("with"))
+                    });
                     let same_noun_made = (0..r.els.len()).any(|o| o != e && r.done[o] && (r.els[o].noun == r.els[e].noun || r.els[o].has_mod(&r.els[e].noun)));
                     if referenced || same_noun_made || r.built.iter().flatten().count() > 0 && is_place_noun(&r.els[e].noun) {
                         r.mark_element(e);
