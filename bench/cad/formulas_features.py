@@ -6,8 +6,8 @@ from __future__ import annotations
 
 from math import cos, pi, radians, sin, sqrt
 
-from geometry import circle_strip, cyl_fillet
 from formulas_standard_100 import rounded_rect, star, steiner
+from geometry import circle_strip, cyl_fillet
 
 Ref = tuple[tuple[float, float, float], float | None]
 
@@ -68,7 +68,10 @@ def table() -> dict[str, Ref]:
         "F_042": ((30, 30, 25), None),
         "F_044": ((30, 30, 75), disc(30) * 20 + disc(20) * 40 + disc(12) * 15),
         "F_045": ((60, 60, 100), disc(20) * 100 + (disc(60) - disc(20)) * 8),
-        "F_046": ((120, 40, 80), disc(40) * 120 + disc(40) * 60 - 8 * 20**3 / 3 - (disc(32) * 120 + disc(32) * 60 - 8 * 16**3 / 3)),
+        "F_046": (
+            (120, 40, 80),
+            disc(40) * 120 + disc(40) * 60 - 8 * 20**3 / 3 - (disc(32) * 120 + disc(32) * 60 - 8 * 16**3 / 3),
+        ),
         "F_047": ((80, 80, 36), 80 * 80 * 6 + 4 * disc(10) * 30 - 4 * disc(4) * 36),
         "F_048": ((36, 36, 16), star(12, 18, 14) * 6 + disc(12) * 10 - disc(8) * 16),
     }

@@ -87,7 +87,12 @@ def _t3() -> dict[str, Ref]:
     t["T3_011"] = ((48, 48, 30), body - screw)
     t["T3_012"] = (
         (60, 60, 40),
-        60 * 60 * 5 + disc(20) * 13 + disc(14) * 22 + star(16, 20, 16) * 8 - disc(20) * 8 - disc(8) * 40
+        60 * 60 * 5
+        + disc(20) * 13
+        + disc(14) * 22
+        + star(16, 20, 16) * 8
+        - disc(20) * 8
+        - disc(8) * 40
         - 4 * disc(6) * 5,
     )
     # Swept pipes: Pappus, the annulus times the centreline's length.

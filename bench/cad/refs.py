@@ -47,7 +47,7 @@ def sections(path: str) -> dict[str, str]:
     return out
 
 
-def build(prelude: str, code: str) -> Any:
+def build(prelude: str, code: str) -> Any:  # noqa: ANN401 - a CadQuery shape (cadquery has no types)
     """Runs one program and returns its shape."""
     import cadquery as cq
 
@@ -60,7 +60,7 @@ def build(prelude: str, code: str) -> Any:
     return result
 
 
-def measure(shape: Any) -> tuple[list[float], float, int, bool]:
+def measure(shape: Any) -> tuple[list[float], float, int, bool]:  # noqa: ANN401 - a CadQuery shape
     """Tight extents, volume, number of solids and OCCT's validity of a shape."""
     from OCP.Bnd import Bnd_Box
     from OCP.BRepBndLib import BRepBndLib
@@ -74,7 +74,7 @@ def measure(shape: Any) -> tuple[list[float], float, int, bool]:
 def agree(got: list[float], want: tuple[float, float, float]) -> float:
     """The largest relative difference of the sorted extents."""
     g, w = sorted(got), sorted(want)
-    return max(abs(a - b) / b if abs(a - b) > EXTENT_SLACK else 0.0 for a, b in zip(g, w))
+    return max(abs(a - b) / b if abs(a - b) > EXTENT_SLACK else 0.0 for a, b in zip(g, w, strict=True))
 
 
 def run(suite: str) -> int:
@@ -90,7 +90,7 @@ def run(suite: str) -> int:
         try:
             shape = build(prelude, code)
             size, volume, solids, valid = measure(shape)
-        except Exception as e:  # noqa: BLE001 - every failure is reported, then the next
+        except Exception as e:
             print(f"{ref_id}: the program failed: {type(e).__name__}: {e}")
             problems += 1
             continue
