@@ -21,7 +21,10 @@ use sw_forge::freeform::{Offline, catalog_mesh_mm, offline};
 use sw_forge::generate::{CodeWriter, ForgeOutcome, LlmWriter, LoopConfig, PartRequest, forge};
 use sw_forge::metrics::extent_error;
 use sw_forge::runner::{CadJob, CadRunner};
-use sw_forge::suite::{Plausible, Prompt, Reference, Tile, chamfer_aligned, contact_sheet, parse_programs, parse_refs, parse_sizes, parse_suite};
+use sw_forge::suite::{
+    Plausible, Prompt, Reference, Tile, chamfer_aligned, contact_sheet, parse_programs, parse_refs, parse_sizes,
+    parse_suite,
+};
 use sw_forge::{mesh_io, synth, validate};
 use sw_geom::Mesh;
 
@@ -148,7 +151,9 @@ fn load(suite: &str) -> Result<Suite, Failure> {
         path => {
             let p = Path::new(path);
             let text = fs_err::read_to_string(p).map_err(|e| {
-                Failure::input(format!("unknown suite '{path}' (standard_100, abstract_45, features or a TSV file): {e}"))
+                Failure::input(format!(
+                    "unknown suite '{path}' (standard_100, abstract_45, features or a TSV file): {e}"
+                ))
             })?;
             let prompts = parse_suite(&text);
             if prompts.is_empty() {
@@ -156,7 +161,13 @@ fn load(suite: &str) -> Result<Suite, Failure> {
             }
             // Beside it: STEM.refs.tsv, STEM.ref.py, STEM.sizes.tsv.
             let side = |ext: &str| fs_err::read_to_string(p.with_extension(ext)).unwrap_or_default();
-            Ok(Suite { name: path.into(), prompts, refs: parse_refs(&side("refs.tsv")), programs: parse_programs(&side("ref.py")), sizes: parse_sizes(&side("sizes.tsv")) })
+            Ok(Suite {
+                name: path.into(),
+                prompts,
+                refs: parse_refs(&side("refs.tsv")),
+                programs: parse_programs(&side("ref.py")),
+                sizes: parse_sizes(&side("sizes.tsv")),
+            })
         }
     }
 }
@@ -271,7 +282,12 @@ fn one_by_model(runner: &CadRunner, writer: &dyn CodeWriter, p: &Prompt) -> Outc
 }
 
 /// Measures an executed part against the suite's reference and plausible size.
-fn compare(o: &mut Outcome, reference: Option<&Reference>, reference_mesh: Option<&Mesh>, plausible: Option<&Plausible>) {
+fn compare(
+    o: &mut Outcome,
+    reference: Option<&Reference>,
+    reference_mesh: Option<&Mesh>,
+    plausible: Option<&Plausible>,
+) {
     let Some(mesh) = o.mesh.as_ref() else { return };
     let measured = validate::measure(mesh);
     if let Some(r) = reference {
@@ -385,7 +401,13 @@ pub(crate) enum Writer {
     Model(sw_llm::LlmConfig),
 }
 
-pub(crate) fn run(suite: &str, writer: Writer, workers: usize, latency_repeat: usize, json: bool) -> Result<u8, Failure> {
+pub(crate) fn run(
+    suite: &str,
+    writer: Writer,
+    workers: usize,
+    latency_repeat: usize,
+    json: bool,
+) -> Result<u8, Failure> {
     let s = load(suite)?;
     let model = match &writer {
         Writer::Template => None,
@@ -426,7 +448,11 @@ pub(crate) fn run(suite: &str, writer: Writer, workers: usize, latency_repeat: u
 
     // Warm latency: the first tier's executed parts again, one at a time.
     let first_tier = s.prompts.first().map(|p| p.tier.clone()).unwrap_or_default();
-    let simple: Vec<&Prompt> = s.prompts.iter().filter(|p| p.tier == first_tier && outcomes.iter().any(|o| o.id == p.id && o.executed)).collect();
+    let simple: Vec<&Prompt> = s
+        .prompts
+        .iter()
+        .filter(|p| p.tier == first_tier && outcomes.iter().any(|o| o.id == p.id && o.executed))
+        .collect();
     let mut times = Vec::new();
     if model.is_none() {
         for _ in 0..latency_repeat {
@@ -492,6 +518,8 @@ fn write_sheet(path: &Path, outcomes: &[Outcome]) -> Result<(), Failure> {
                 (Some(m), true) => m.trim_start_matches("freeform:").to_string(),
                 _ => "not made".to_string(),
             },
+            // The catalog's objects face +Y; show their fronts.
+            azimuth: if o.made_by.as_deref().is_some_and(|m| m.starts_with("catalog:")) { 1.15 } else { -0.9 },
         })
         .collect();
     let image = contact_sheet(&tiles, 9, 200);
@@ -523,7 +551,7 @@ fn render(b: &CadBench, missing_refs: usize) -> String {
     let mut line = |name: &str, t: &TierSummary| {
         let fails: Vec<String> = t.failures.iter().map(|(k, n)| format!("{k} {n}")).collect();
         let chamfer = match (t.median_chamfer_mm, t.max_chamfer_mm) {
-            (Some(m), Some(x)) => format!("{m:.3} / {x:.3}"),
+            (Some(m), Some(x)) => format!("{m:.4} / {x:.4}"),
             _ => "-".into(),
         };
         s.push_str(&format!(
@@ -535,7 +563,7 @@ fn render(b: &CadBench, missing_refs: usize) -> String {
             pct(t.bbox_within_1pct, t.with_reference),
             pct(t.volume_within_2pct, t.with_reference),
             chamfer,
-            t.median_chamfer_rel.map_or("-".into(), |r| format!("{:.2} %", 100.0 * r)),
+            t.median_chamfer_rel.map_or("-".into(), |r| format!("{:.3} %", 100.0 * r)),
             if t.with_plausibility > 0 { format!("{}/{}", t.plausible, t.with_plausibility) } else { "-".into() },
             fails.join(", ")
         ));

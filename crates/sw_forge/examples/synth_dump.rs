@@ -44,7 +44,10 @@ fn main() {
         if only.is_some() {
             let d = sw_forge::synth::doc::Doc::new(prompt);
             for x in &d.dims {
-                println!("  dim {} {:?} quals={:?} axis={:?} paren={} list={:?}", x.mm, x.role, x.quals, x.axis, x.paren, x.list);
+                println!(
+                    "  dim {} {:?} quals={:?} axis={:?} paren={} list={:?}",
+                    x.mm, x.role, x.quals, x.axis, x.paren, x.list
+                );
             }
             for x in &d.ranges {
                 println!("  range {:?} {}..{}", x.axis, x.a, x.b);
@@ -85,7 +88,12 @@ fn main() {
                         _ => None,
                     };
                     let ok = be <= 0.01 && ve.is_none_or(|v| v <= 0.02);
-                    format!("\t{} bbox {:.2}% vol {}", if ok { "ok" } else { "BAD" }, 100.0 * be, ve.map_or("?".into(), |v| format!("{:.2}%", 100.0 * v)))
+                    format!(
+                        "\t{} bbox {:.2}% vol {}",
+                        if ok { "ok" } else { "BAD" },
+                        100.0 * be,
+                        ve.map_or("?".into(), |v| format!("{:.2}%", 100.0 * v))
+                    )
                 });
                 println!(
                     "{id}\t{}\t{:.3} x {:.3} x {:.3}\t{}\tgenus {:?}{verdict}",

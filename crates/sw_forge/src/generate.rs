@@ -11,10 +11,10 @@ use sw_llm::{ChatRequest, Client, LlmStage, Message};
 use tracing::{info_span, warn};
 
 use crate::failure::{Failure, FailureKind};
+use crate::mesh_io;
 use crate::runner::{CadJob, CadRunner};
 use crate::store::{AssetId, AssetRecord};
 use crate::validate::{self, MeshReport, Orientation, Target};
-use crate::mesh_io;
 
 /// What to make.
 #[derive(Debug, Clone, PartialEq)]

@@ -146,8 +146,10 @@ impl Surface {
         let mut cells: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
         let key = |v: f64, o: f64| ((v - o) / cell).floor() as i64;
         for (i, t) in tris.iter().enumerate() {
-            let lo: [i64; 3] = std::array::from_fn(|k| key(t.iter().map(|q| q[k]).fold(f64::INFINITY, f64::min), b.min[k]));
-            let hi: [i64; 3] = std::array::from_fn(|k| key(t.iter().map(|q| q[k]).fold(f64::NEG_INFINITY, f64::max), b.min[k]));
+            let lo: [i64; 3] =
+                std::array::from_fn(|k| key(t.iter().map(|q| q[k]).fold(f64::INFINITY, f64::min), b.min[k]));
+            let hi: [i64; 3] =
+                std::array::from_fn(|k| key(t.iter().map(|q| q[k]).fold(f64::NEG_INFINITY, f64::max), b.min[k]));
             for x in lo[0]..=hi[0] {
                 for y in lo[1]..=hi[1] {
                     for z in lo[2]..=hi[2] {
@@ -186,11 +188,13 @@ impl Surface {
                 return best;
             }
         }
-        self.tris.iter().map(|t| {
-            let q = closest_on_triangle(p, t);
-            dot(sub(p, q), sub(p, q)).sqrt()
-        })
-        .fold(best, f64::min)
+        self.tris
+            .iter()
+            .map(|t| {
+                let q = closest_on_triangle(p, t);
+                dot(sub(p, q), sub(p, q)).sqrt()
+            })
+            .fold(best, f64::min)
     }
 }
 

@@ -61,7 +61,10 @@ pub fn parse_sizes(text: &str) -> BTreeMap<String, Plausible> {
     rows(text)
         .filter_map(|c| {
             let num = |i: usize| c.get(i).and_then(|s| s.parse::<f64>().ok());
-            Some(((*c.first()?).to_string(), Plausible { min: num(1)?, max: num(2)?, what: c.get(3).map_or(String::new(), |s| (*s).to_string()) }))
+            Some((
+                (*c.first()?).to_string(),
+                Plausible { min: num(1)?, max: num(2)?, what: c.get(3).map_or(String::new(), |s| (*s).to_string()) },
+            ))
         })
         .collect()
 }
@@ -78,7 +81,11 @@ pub fn parse_programs(text: &str) -> BTreeMap<String, String> {
         }
     }
     let prelude = sections.iter().find(|(id, _)| id == "_prelude").map(|(_, b)| b.clone()).unwrap_or_default();
-    sections.into_iter().filter(|(id, _)| id != "_prelude").map(|(id, body)| (id, format!("{prelude}\n{body}"))).collect()
+    sections
+        .into_iter()
+        .filter(|(id, _)| id != "_prelude")
+        .map(|(id, body)| (id, format!("{prelude}\n{body}")))
+        .collect()
 }
 
 /// `mesh` moved so that its bounding box lines up with `reference`'s: its axes put in the
@@ -92,10 +99,17 @@ pub fn align(mesh: &Mesh, reference: &Mesh) -> Mesh {
     }
     let (sa, sb) = (a.size(), b.size());
     // Even permutations are rotations; the odd ones get one axis flipped (still a rotation).
-    let perms: [([usize; 3], bool); 6] =
-        [([0, 1, 2], false), ([1, 2, 0], false), ([2, 0, 1], false), ([1, 0, 2], true), ([0, 2, 1], true), ([2, 1, 0], true)];
+    let perms: [([usize; 3], bool); 6] = [
+        ([0, 1, 2], false),
+        ([1, 2, 0], false),
+        ([2, 0, 1], false),
+        ([1, 0, 2], true),
+        ([0, 2, 1], true),
+        ([2, 1, 0], true),
+    ];
     let score = |p: &[usize; 3]| (0..3).map(|k| ((sa[p[k]] - sb[k]) / sb[k].max(1e-9)).abs()).fold(0.0, f64::max);
-    let (perm, flip) = perms.iter().min_by(|x, y| score(&x.0).total_cmp(&score(&y.0))).copied().unwrap_or(([0, 1, 2], false));
+    let (perm, flip) =
+        perms.iter().min_by(|x, y| score(&x.0).total_cmp(&score(&y.0))).copied().unwrap_or(([0, 1, 2], false));
     let (ca, cb) = (a.center(), b.center());
     let mut out = mesh.clone();
     for v in &mut out.vertices {
@@ -166,7 +180,9 @@ mod tests {
 
     #[test]
     fn programs_get_their_prelude_and_suites_their_columns() {
-        let p = parse_programs("# head\n# ref: _prelude\nimport cadquery as cq\n# ref: A\nresult = 1\n# ref: B\nresult = 2\n");
+        let p = parse_programs(
+            "# head\n# ref: _prelude\nimport cadquery as cq\n# ref: A\nresult = 1\n# ref: B\nresult = 2\n",
+        );
         assert_eq!(p.len(), 2);
         assert!(p["A"].starts_with("import cadquery as cq\n") && p["A"].ends_with("result = 1\n"));
         let s = parse_suite("# c\nX_1\tT1\tA block 1mm long.\n");
@@ -184,7 +200,7 @@ mod tests {
         }
         let (d, rel) = chamfer_aligned(&turned, &reference, 1500).unwrap();
         assert!(d < 1e-6 && rel < 1e-6, "{d} {rel}");
-        let far = crate::metrics::surface_chamfer(&turned, &reference, 1500).unwrap();
+        let far = surface_chamfer(&turned, &reference, 1500).unwrap();
         assert!(far > 10.0, "{far}");
     }
 }

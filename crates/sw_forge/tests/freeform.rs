@@ -25,8 +25,11 @@ fn runner() -> &'static CadRunner {
     })
 }
 
-/// One prompt made: its mesh (mm) and what made it.
-fn make(prompt: &str) -> Result<(sw_geom::Mesh, String), String> {
+/// A made object's mesh (mm) and what made it, or why it was not made.
+type Made = Result<(sw_geom::Mesh, String), String>;
+
+/// One prompt made.
+fn make(prompt: &str) -> Made {
     match offline(prompt).map_err(|e| e.to_string())? {
         Offline::Catalog { category, asset } => Ok((catalog_mesh_mm(&asset), format!("catalog:{category}"))),
         Offline::Code(s) => {
@@ -42,7 +45,7 @@ fn every_abstract_45_object_is_made_closed_and_of_a_plausible_size() {
     let sizes = parse_sizes(SIZES);
     let prompts = parse_suite(ABSTRACT_45);
     assert_eq!(prompts.len(), 45);
-    let results: Vec<(String, Result<(sw_geom::Mesh, String), String>)> = std::thread::scope(|s| {
+    let results: Vec<(String, Made)> = std::thread::scope(|s| {
         let handles: Vec<_> = prompts
             .chunks(prompts.len().div_ceil(2))
             .map(|chunk| s.spawn(move || chunk.iter().map(|p| (p.id.clone(), make(&p.text))).collect::<Vec<_>>()))
@@ -61,7 +64,10 @@ fn every_abstract_45_object_is_made_closed_and_of_a_plausible_size() {
                 if !check.watertight || check.volume <= 0.0 {
                     bad.push(format!("{id} ({by}): not a closed solid ({} bad edges)", check.bad_edges));
                 } else if !(p.min..=p.max).contains(&largest) {
-                    bad.push(format!("{id} ({by}): {largest:.0} mm, not a plausible {} ({}-{} mm)", p.what, p.min, p.max));
+                    bad.push(format!(
+                        "{id} ({by}): {largest:.0} mm, not a plausible {} ({}-{} mm)",
+                        p.what, p.min, p.max
+                    ));
                 }
             }
             Err(e) => bad.push(format!("{id}: {e}")),

@@ -99,13 +99,16 @@ const SUBSET: &[&str] = &[
     "T3_022", "F_008", "F_021", "F_022", "F_024", "F_026", "F_028", "F_036", "F_040", "F_043", "F_047",
 ];
 
+/// A part's largest extent and volume errors against its reference, or why it failed.
+type Errors = Result<(f64, f64), String>;
+
 #[test]
 fn a_subset_of_every_construct_runs_and_matches_its_reference() {
     let refs = refs();
     let prompts = prompts();
     let r = runner();
     let jobs: Vec<(&str, String)> = SUBSET.iter().map(|id| (*id, prompts[*id].clone())).collect();
-    let results: Vec<(String, Result<(f64, f64), String>)> = std::thread::scope(|s| {
+    let results: Vec<(String, Errors)> = std::thread::scope(|s| {
         let handles: Vec<_> = jobs
             .chunks(jobs.len().div_ceil(2))
             .map(|chunk| {
@@ -145,7 +148,8 @@ fn a_subset_of_every_construct_runs_and_matches_its_reference() {
 
 #[test]
 fn a_part_is_written_as_stl_in_metres_with_metadata_and_preview() {
-    let part = generate_offline(runner(), "A flat washer: outer diameter 20mm, inner diameter 10.5mm, thickness 2mm").unwrap();
+    let part =
+        generate_offline(runner(), "A flat washer: outer diameter 20mm, inner diameter 10.5mm, thickness 2mm").unwrap();
     let dir = tempfile::tempdir().unwrap();
     let files = write_part(dir.path(), &part, true).unwrap();
     let mesh = sw_geom::read_stl(std::fs::File::open(&files.mesh).unwrap()).unwrap();
@@ -179,7 +183,10 @@ const REFUSED: &[(&str, &str)] = &[
     ("a plate 60 x 40 x 5 mm with a 6mm hole at (X=40, Y=0)", "6mm hole"),
     ("a gear with 20 teeth, 8mm thick", "gear"),
     ("a washer: outer diameter 10mm, inner diameter 12mm, 1mm thick", "washer"),
-    ("a disc 50mm in diameter and 5mm thick with six 4mm holes at 0, 90 and 180 degrees on a 30mm bolt circle", "holes"),
+    (
+        "a disc 50mm in diameter and 5mm thick with six 4mm holes at 0, 90 and 180 degrees on a 30mm bolt circle",
+        "holes",
+    ),
     ("a cube with 10mm sides and 6mm fillets on all edges", "6mm fillets"),
 ];
 

@@ -22,7 +22,11 @@ pub const BASIC: &[Build] = &[
     Build { names: &["board", "plank", "slab", "panel"], features: &[], build: board },
     Build { names: &["pillar", "column"], features: &[], build: pillar },
     Build { names: &["l-shaped block", "l-shape", "l shape", "l-block"], features: &[], build: l_block },
-    Build { names: &["plus-shaped block", "plus shape", "cross-shaped block", "plus sign"], features: &[], build: plus_block },
+    Build {
+        names: &["plus-shaped block", "plus shape", "cross-shaped block", "plus sign"],
+        features: &[],
+        build: plus_block,
+    },
 ];
 
 fn block(s: &Spec) -> Model {
@@ -66,7 +70,17 @@ fn pipe(s: &Spec) -> Model {
     let id = od * 0.8;
     let len = 300.0 * s.size * s.long;
     let mut p = Parts::default();
-    p.add("pipe", Shape::Prism { profile: Profile::Annulus { od, id }, axis: Axis::X, at: [0.0, od / 2.0], rot: 0.0, from: -len / 2.0, to: len / 2.0 });
+    p.add(
+        "pipe",
+        Shape::Prism {
+            profile: Profile::Annulus { od, id },
+            axis: Axis::X,
+            at: [0.0, od / 2.0],
+            rot: 0.0,
+            from: -len / 2.0,
+            to: len / 2.0,
+        },
+    );
     p.finish()
 }
 
@@ -129,7 +143,8 @@ fn plus_block(s: &Spec) -> Model {
     let w = 60.0 * s.size * s.thick;
     let h = 60.0 * s.size * s.tall * s.thick;
     let (a, b) = (span / 2.0, w / 2.0);
-    let pts = [[b, -a], [b, -b], [a, -b], [a, b], [b, b], [b, a], [-b, a], [-b, b], [-a, b], [-a, -b], [-b, -b], [-b, -a]];
+    let pts =
+        [[b, -a], [b, -b], [a, -b], [a, b], [b, b], [b, a], [-b, a], [-b, b], [-a, b], [-a, -b], [-b, -b], [-b, -a]];
     let mut p = Parts::default();
     p.add("plus-block", prism_xy(&pts, 0.0, h));
     p.finish()

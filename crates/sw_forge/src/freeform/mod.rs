@@ -92,11 +92,50 @@ fn size_word(w: &str, s: &mut Spec) -> bool {
 fn is_plain(w: &str) -> bool {
     matches!(
         w,
-        "a" | "an" | "the" | "one" | "simple" | "basic" | "plain" | "solid" | "shape" | "shaped" | "object" | "model"
-            | "standard" | "typical" | "ordinary" | "classic" | "regular" | "hollow" | "some" | "of" | "for" | "kind"
-            | "sort" | "style" | "red" | "blue" | "green" | "yellow" | "black" | "white" | "grey" | "gray" | "brown"
-            | "orange" | "wooden" | "metal" | "steel" | "plastic" | "ceramic" | "glass" | "rubber" | "new" | "old"
-            | "nice" | "toy"
+        "a" | "an"
+            | "the"
+            | "one"
+            | "simple"
+            | "basic"
+            | "plain"
+            | "solid"
+            | "shape"
+            | "shaped"
+            | "object"
+            | "model"
+            | "standard"
+            | "typical"
+            | "ordinary"
+            | "classic"
+            | "regular"
+            | "hollow"
+            | "some"
+            | "of"
+            | "for"
+            | "kind"
+            | "sort"
+            | "style"
+            | "red"
+            | "blue"
+            | "green"
+            | "yellow"
+            | "black"
+            | "white"
+            | "grey"
+            | "gray"
+            | "brown"
+            | "orange"
+            | "wooden"
+            | "metal"
+            | "steel"
+            | "plastic"
+            | "ceramic"
+            | "glass"
+            | "rubber"
+            | "new"
+            | "old"
+            | "nice"
+            | "toy"
     )
 }
 
@@ -128,7 +167,9 @@ impl Candidate {
 
     fn same(&self, other: &Candidate) -> bool {
         match (self, other) {
-            (Candidate::Basic(a), Candidate::Basic(b)) | (Candidate::Object(a), Candidate::Object(b)) => std::ptr::eq(*a, *b),
+            (Candidate::Basic(a), Candidate::Basic(b)) | (Candidate::Object(a), Candidate::Object(b)) => {
+                std::ptr::eq(*a, *b)
+            }
             (Candidate::Catalog(a), Candidate::Catalog(b)) => a.name == b.name,
             _ => false,
         }
@@ -160,7 +201,10 @@ fn unread(phrase: &str, reason: &str) -> SynthError {
 pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
     let toks = tokenize(prompt);
     if toks.iter().any(|t| matches!(t.kind, Tk::Num { unit: Some(_), .. })) {
-        return Err(unread(prompt.trim(), "a free-form object is named without sizes (sizes make it a dimensioned part)"));
+        return Err(unread(
+            prompt.trim(),
+            "a free-form object is named without sizes (sizes make it a dimensioned part)",
+        ));
     }
     // Words, with where they are.
     let words: Vec<(String, usize, usize)> = toks
@@ -195,7 +239,10 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
     }
     let Some((at, n, cand)) = best else {
         let text = prompt.trim();
-        return Err(unread(text, "the synthesizer knows no object by these words (a catalog object, a shape, or a dimensioned part)"));
+        return Err(unread(
+            text,
+            "the synthesizer knows no object by these words (a catalog object, a shape, or a dimensioned part)",
+        ));
     };
     let mut spec = Spec::default();
     // Before the name: size and plain words, or another name of it and "or" ("a goblet
@@ -208,7 +255,16 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             i += 1;
             continue;
         }
-        let other = names.iter().filter(|nm| !nm.is_empty() && i + nm.len() <= at && (0..nm.len()).all(|k| words[i + k].0 == nm[k]) && words.get(i + nm.len()).is_some_and(|x| x.0 == "or")).map(Vec::len).max();
+        let other = names
+            .iter()
+            .filter(|nm| {
+                !nm.is_empty()
+                    && i + nm.len() <= at
+                    && (0..nm.len()).all(|k| words[i + k].0 == nm[k])
+                    && words.get(i + nm.len()).is_some_and(|x| x.0 == "or")
+            })
+            .map(Vec::len)
+            .max();
         match other {
             Some(len) => i += len,
             None => return Err(unread(&quote(i, i), "a word the synthesizer cannot give this object")),
@@ -226,7 +282,9 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
         if w == "or" {
             // "a goblet or wine glass": another name of the same object.
             let rest: Vec<String> = words[i + 1..].iter().map(|x| x.0.clone()).filter(|x| !is_plain(x)).collect();
-            let same = phrases().into_iter().any(|(name, c)| c.same(&cand) && !name.is_empty() && rest.starts_with(&name) && rest.len() == name.len());
+            let same = phrases().into_iter().any(|(name, c)| {
+                c.same(&cand) && !name.is_empty() && rest.starts_with(&name) && rest.len() == name.len()
+            });
             if same {
                 break;
             }
@@ -235,7 +293,12 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
         // A count ("three steps", "four legs").
         let mut count = None;
         let mut j = i;
-        if let Some(c) = crate::synth::lexicon::number_word(&w).or_else(|| w.strip_prefix('#').and_then(|v| v.parse::<f64>().ok()).filter(|v| v.fract() == 0.0 && *v >= 1.0).map(|v| v as u32)) {
+        if let Some(c) = crate::synth::lexicon::number_word(&w).or_else(|| {
+            w.strip_prefix('#')
+                .and_then(|v| v.parse::<f64>().ok())
+                .filter(|v| v.fract() == 0.0 && *v >= 1.0)
+                .map(|v| v as u32)
+        }) {
             count = Some(c);
             j += 1;
         }
@@ -246,7 +309,10 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             .filter(|f| f.len() + j <= words.len() && (0..f.len()).all(|k| words[j + k].0 == f[k]))
             .max_by_key(Vec::len);
         let Some(f) = hit else {
-            return Err(unread(&quote(i, (i + 2).min(words.len() - 1)), "a feature the synthesizer cannot give this object"));
+            return Err(unread(
+                &quote(i, (i + 2).min(words.len() - 1)),
+                "a feature the synthesizer cannot give this object",
+            ));
         };
         if let Some(c) = count {
             check_count(&cand, &f, c).map_err(|reason| unread(&quote(i, j + f.len() - 1), &reason))?;

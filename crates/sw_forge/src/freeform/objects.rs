@@ -2,7 +2,9 @@
 //! parts with real-world proportions and sizes (mm): tools, vessels, furniture and vehicles
 //! a free-form prompt may name. Objects lie or stand as they would on a floor or a table.
 
-use super::shapes::{Parts, bx, cone_x, cone_z, cup, cyl_x, cyl_y, cyl_z, open_top, revolve, rod_arc, round_vertical, sphere};
+use super::shapes::{
+    Parts, bx, cone_x, cone_z, cup, cyl_x, cyl_y, cyl_z, open_top, revolve, rod_arc, round_vertical, sphere,
+};
 use super::{Build, Spec};
 use crate::synth::model::Model;
 use crate::synth::profile::Profile;
@@ -23,8 +25,16 @@ pub const OBJECTS: &[Build] = &[
     Build { names: &["microphone", "mic"], features: &["handle"], build: microphone },
     Build { names: &["wrench", "spanner"], features: &[], build: wrench },
     Build { names: &["mallet"], features: &["handle"], build: mallet },
-    Build { names: &["staircase", "stairs", "flight of stairs", "steps"], features: &["steps", "step"], build: staircase },
-    Build { names: &["coat rack", "coat stand", "hat stand", "coat tree"], features: &["hooks", "hook"], build: coat_rack },
+    Build {
+        names: &["staircase", "stairs", "flight of stairs", "steps"],
+        features: &["steps", "step"],
+        build: staircase,
+    },
+    Build {
+        names: &["coat rack", "coat stand", "hat stand", "coat tree"],
+        features: &["hooks", "hook"],
+        build: coat_rack,
+    },
     Build { names: &["guitar", "acoustic guitar"], features: &[], build: guitar },
     Build { names: &["wheelbarrow", "wheel barrow"], features: &["wheel", "handles"], build: wheelbarrow },
     Build { names: &["bathtub", "bath tub", "bath"], features: &["legs", "feet", "leg"], build: bathtub },
@@ -68,7 +78,11 @@ fn dumbbell(s: &Spec) -> Model {
     for side in [-1.0, 1.0] {
         let inner = 100.0 * k;
         p.add("collar", cyl_x(45.0 * k, side * inner - 5.0 * k, side * inner + 5.0 * k, 0.0, z));
-        let (a, b) = if side > 0.0 { (inner + 5.0 * k, inner + 5.0 * k + pt) } else { (-inner - 5.0 * k - pt, -inner - 5.0 * k) };
+        let (a, b) = if side > 0.0 {
+            (inner + 5.0 * k, inner + 5.0 * k + pt)
+        } else {
+            (-inner - 5.0 * k - pt, -inner - 5.0 * k)
+        };
         p.add("plate", cyl_x(pd, a, b, 0.0, z));
     }
     p.finish()
@@ -80,10 +94,11 @@ fn mushroom(s: &Spec) -> Model {
     let (t, w) = (s.tall, s.wide);
     let mut p = Parts::default();
     p.add("stem", cone_z(42.0 * k * w, 34.0 * k * w, 0.0, 66.0 * k * t, 0.0, 0.0));
-    let cap: Vec<[f64; 2]> = [[0.0, 60.0], [70.0, 60.0], [68.0, 70.0], [60.0, 86.0], [45.0, 100.0], [25.0, 108.0], [0.0, 111.0]]
-        .iter()
-        .map(|q| [q[0] * k * w, q[1] * k * t])
-        .collect();
+    let cap: Vec<[f64; 2]> =
+        [[0.0, 60.0], [70.0, 60.0], [68.0, 70.0], [60.0, 86.0], [45.0, 100.0], [25.0, 108.0], [0.0, 111.0]]
+            .iter()
+            .map(|q| [q[0] * k * w, q[1] * k * t])
+            .collect();
     p.add("cap", revolve(&cap, 0.0, 0.0));
     p.finish()
 }
@@ -105,10 +120,19 @@ fn trophy(s: &Spec) -> Model {
     p.add("pedestal", bx([-60.0 * k, -60.0 * k, 0.0], [60.0 * k, 60.0 * k, 40.0 * k]));
     p.add("step", cyl_z(70.0 * k, 40.0 * k, 55.0 * k, 0.0, 0.0));
     p.add("stem", cone_z(20.0 * k, 30.0 * k, 55.0 * k, 142.0 * k, 0.0, 0.0));
-    let bowl: Vec<[f64; 2]> = [[0.0, 140.0], [15.0, 140.0], [70.0, 175.0], [75.0, 260.0], [71.0, 260.0], [66.0, 178.0], [13.0, 146.0], [0.0, 146.0]]
-        .iter()
-        .map(|q| [q[0] * k, q[1] * k])
-        .collect();
+    let bowl: Vec<[f64; 2]> = [
+        [0.0, 140.0],
+        [15.0, 140.0],
+        [70.0, 175.0],
+        [75.0, 260.0],
+        [71.0, 260.0],
+        [66.0, 178.0],
+        [13.0, 146.0],
+        [0.0, 146.0],
+    ]
+    .iter()
+    .map(|q| [q[0] * k, q[1] * k])
+    .collect();
     p.add("cup", revolve(&bowl, 0.0, 0.0));
     p.add("handle", rod_arc(9.0 * k, [72.0 * k, 0.0, 215.0 * k], 25.0 * k, Axis::X, Axis::Z, -90.0, 90.0));
     p.add("handle", rod_arc(9.0 * k, [-72.0 * k, 0.0, 215.0 * k], 25.0 * k, Axis::X, Axis::Z, 90.0, 270.0));
@@ -161,10 +185,23 @@ fn goblet(s: &Spec) -> Model {
 /// A rubber cup opening downward with a long wooden handle.
 fn plunger(s: &Spec) -> Model {
     let k = s.size;
-    let cup_pts: Vec<[f64; 2]> = [[66.0, 0.0], [72.0, 0.0], [70.0, 20.0], [60.0, 42.0], [40.0, 58.0], [15.0, 66.0], [0.0, 68.0], [0.0, 62.0], [14.0, 60.0], [36.0, 52.0], [55.0, 38.0], [64.0, 20.0]]
-        .iter()
-        .map(|q| [q[0] * k, q[1] * k])
-        .collect();
+    let cup_pts: Vec<[f64; 2]> = [
+        [66.0, 0.0],
+        [72.0, 0.0],
+        [70.0, 20.0],
+        [60.0, 42.0],
+        [40.0, 58.0],
+        [15.0, 66.0],
+        [0.0, 68.0],
+        [0.0, 62.0],
+        [14.0, 60.0],
+        [36.0, 52.0],
+        [55.0, 38.0],
+        [64.0, 20.0],
+    ]
+    .iter()
+    .map(|q| [q[0] * k, q[1] * k])
+    .collect();
     let mut p = Parts::default();
     p.add("cup", revolve(&cup_pts, 0.0, 0.0));
     p.add("handle", cyl_z(25.0 * k, 60.0 * k, 520.0 * k * s.tall * s.long, 0.0, 0.0));
@@ -184,11 +221,31 @@ fn desk_fan(s: &Spec) -> Model {
     for a in &[0.0f64, 120.0, 240.0] {
         let r = 78.0 * k;
         let at = [zc + r * a.to_radians().cos(), r * a.to_radians().sin()];
-        p.add("blade", Shape::Prism { profile: Profile::Rect { w: 120.0 * k, h: 46.0 * k }, axis: Axis::Y, at, rot: *a, from: -90.0 * k, to: -86.0 * k });
+        p.add(
+            "blade",
+            Shape::Prism {
+                profile: Profile::Rect { w: 120.0 * k, h: 46.0 * k },
+                axis: Axis::Y,
+                at,
+                rot: *a,
+                from: -90.0 * k,
+                to: -86.0 * k,
+            },
+        );
         let b = a + 60.0;
         let r2 = 80.0 * k;
         let at2 = [zc + r2 * b.to_radians().cos(), r2 * b.to_radians().sin()];
-        p.add("strut", Shape::Prism { profile: Profile::Rect { w: 150.0 * k, h: 6.0 * k }, axis: Axis::Y, at: at2, rot: b, from: -80.0 * k, to: -74.0 * k });
+        p.add(
+            "strut",
+            Shape::Prism {
+                profile: Profile::Rect { w: 150.0 * k, h: 6.0 * k },
+                axis: Axis::Y,
+                at: at2,
+                rot: b,
+                from: -80.0 * k,
+                to: -74.0 * k,
+            },
+        );
     }
     p.add("guard", Shape::Torus { c: [0.0, -77.0 * k, zc], axis: Axis::Y, major: 306.0 * k, minor: 12.0 * k });
     p.finish()
@@ -212,8 +269,28 @@ fn wrench(s: &Spec) -> Model {
     let t = 8.0 * k * s.thick;
     let mut p = Parts::default();
     p.add("handle", bx([0.0, -11.0 * k, 0.0], [l, 11.0 * k, t]));
-    p.add("jaw", Shape::Prism { profile: Profile::Annulus { od: 50.0 * k, id: 22.0 * k }, axis: Axis::Z, at: [-15.0 * k, 0.0], rot: 0.0, from: 0.0, to: t });
-    p.add("ring", Shape::Prism { profile: Profile::Annulus { od: 40.0 * k, id: 20.0 * k }, axis: Axis::Z, at: [l + 12.0 * k, 0.0], rot: 0.0, from: 0.0, to: t });
+    p.add(
+        "jaw",
+        Shape::Prism {
+            profile: Profile::Annulus { od: 50.0 * k, id: 22.0 * k },
+            axis: Axis::Z,
+            at: [-15.0 * k, 0.0],
+            rot: 0.0,
+            from: 0.0,
+            to: t,
+        },
+    );
+    p.add(
+        "ring",
+        Shape::Prism {
+            profile: Profile::Annulus { od: 40.0 * k, id: 20.0 * k },
+            axis: Axis::Z,
+            at: [l + 12.0 * k, 0.0],
+            rot: 0.0,
+            from: 0.0,
+            to: t,
+        },
+    );
     p.cut("jaw opening", bx([-45.0 * k, -11.0 * k, -1.0], [-15.0 * k, 11.0 * k, t + 1.0]));
     p.finish()
 }
@@ -263,7 +340,11 @@ fn coat_rack(s: &Spec) -> Model {
         p.add("hook end", sphere(24.0 * k, e));
     };
     let hooks = s.count.unwrap_or(4);
-    let dirs: &[(Axis, f64)] = if hooks == 2 { &[(Axis::X, 1.0), (Axis::X, -1.0)] } else { &[(Axis::X, 1.0), (Axis::Y, 1.0), (Axis::X, -1.0), (Axis::Y, -1.0)] };
+    let dirs: &[(Axis, f64)] = if hooks == 2 {
+        &[(Axis::X, 1.0), (Axis::X, -1.0)]
+    } else {
+        &[(Axis::X, 1.0), (Axis::Y, 1.0), (Axis::X, -1.0), (Axis::Y, -1.0)]
+    };
     for (axis, sign) in dirs {
         hook(&mut p, *axis, *sign, h - 200.0 * k);
     }
@@ -278,7 +359,10 @@ fn guitar(s: &Spec) -> Model {
     p.add("lower bout", cyl_z(340.0 * k, 0.0, t, 0.0, 0.0));
     p.add("upper bout", cyl_z(260.0 * k, 0.0, t, 220.0 * k, 0.0));
     p.add("neck", bx([320.0 * k, -26.0 * k, t - 25.0 * k], [760.0 * k * s.long, 26.0 * k, t]));
-    p.add("headstock", bx([760.0 * k * s.long - 1.0, -40.0 * k, t - 22.0 * k], [930.0 * k * s.long, 40.0 * k, t - 2.0 * k]));
+    p.add(
+        "headstock",
+        bx([760.0 * k * s.long - 1.0, -40.0 * k, t - 22.0 * k], [930.0 * k * s.long, 40.0 * k, t - 2.0 * k]),
+    );
     p.add("bridge", bx([-90.0 * k, -45.0 * k, t - 1.0], [-70.0 * k, 45.0 * k, t + 8.0 * k]));
     p.cut("sound hole", cyl_z(90.0 * k, t - 10.0 * k, t + 1.0, 150.0 * k, 0.0));
     p.finish()
@@ -301,9 +385,18 @@ fn wheelbarrow(s: &Spec) -> Model {
     open_top(tray, 8.0 * k);
     p.add("wheel", cyl_y(380.0 * k, -45.0 * k, 45.0 * k, 620.0 * k, 190.0 * k));
     for y in [-1.0, 1.0] {
-        p.add("fork", bx([150.0 * k, y * 60.0 * k - 10.0 * k, 180.0 * k], [640.0 * k, y * 60.0 * k + 10.0 * k, 370.0 * k]));
-        p.add("handle", bx([-950.0 * k, y * 260.0 * k - 15.0 * k, 520.0 * k], [0.0, y * 260.0 * k + 15.0 * k, 555.0 * k]));
-        p.add("leg", bx([-360.0 * k, y * 260.0 * k - 15.0 * k, 0.0], [-330.0 * k, y * 260.0 * k + 15.0 * k, 530.0 * k]));
+        p.add(
+            "fork",
+            bx([150.0 * k, y * 60.0 * k - 10.0 * k, 180.0 * k], [640.0 * k, y * 60.0 * k + 10.0 * k, 370.0 * k]),
+        );
+        p.add(
+            "handle",
+            bx([-950.0 * k, y * 260.0 * k - 15.0 * k, 520.0 * k], [0.0, y * 260.0 * k + 15.0 * k, 555.0 * k]),
+        );
+        p.add(
+            "leg",
+            bx([-360.0 * k, y * 260.0 * k - 15.0 * k, 0.0], [-330.0 * k, y * 260.0 * k + 15.0 * k, 530.0 * k]),
+        );
     }
     p.finish()
 }
@@ -318,7 +411,10 @@ fn bathtub(s: &Spec) -> Model {
     open_top(tub, 25.0 * k);
     for x in [-1.0, 1.0] {
         for y in [-1.0, 1.0] {
-            p.add("foot", cone_z(90.0 * k, 55.0 * k, 0.0, lift + 5.0 * k, x * (l / 2.0 - 180.0 * k), y * (w / 2.0 - 120.0 * k)));
+            p.add(
+                "foot",
+                cone_z(90.0 * k, 55.0 * k, 0.0, lift + 5.0 * k, x * (l / 2.0 - 180.0 * k), y * (w / 2.0 - 120.0 * k)),
+            );
         }
     }
     p.finish()
@@ -334,10 +430,17 @@ fn pickup(s: &Spec) -> Model {
     p.add("hood", bx([1399.0 * k, -930.0 * k, 1099.0 * k], [half_l, 930.0 * k, 1180.0 * k]));
     for x in [-1700.0 * k * s.long, 1700.0 * k * s.long] {
         for side in [-1.0, 1.0] {
-            let (y0, y1) = if side > 0.0 { (half_w - 130.0 * k, half_w + 110.0 * k) } else { (-half_w - 110.0 * k, -half_w + 130.0 * k) };
+            let (y0, y1) = if side > 0.0 {
+                (half_w - 130.0 * k, half_w + 110.0 * k)
+            } else {
+                (-half_w - 110.0 * k, -half_w + 130.0 * k)
+            };
             p.add("wheel", cyl_y(800.0 * k, y0, y1, x, 400.0 * k));
         }
     }
-    p.cut("bed", bx([-half_l + 100.0 * k, -half_w + 100.0 * k, 750.0 * k], [150.0 * k, half_w - 100.0 * k, 1101.0 * k]));
+    p.cut(
+        "bed",
+        bx([-half_l + 100.0 * k, -half_w + 100.0 * k, 750.0 * k], [150.0 * k, half_w - 100.0 * k, 1101.0 * k]),
+    );
     p.finish()
 }

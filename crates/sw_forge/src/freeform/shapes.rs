@@ -63,7 +63,14 @@ pub fn bx(min: [f64; 3], max: [f64; 3]) -> Shape {
 
 /// A box of size `s` centred on `c`, turned `yaw` degrees about Z.
 pub fn bx_yaw(c: [f64; 3], s: [f64; 3], yaw: f64) -> Shape {
-    Shape::Prism { profile: Profile::Rect { w: s[0], h: s[1] }, axis: Axis::Z, at: [c[0], c[1]], rot: yaw, from: c[2] - s[2] / 2.0, to: c[2] + s[2] / 2.0 }
+    Shape::Prism {
+        profile: Profile::Rect { w: s[0], h: s[1] },
+        axis: Axis::Z,
+        at: [c[0], c[1]],
+        rot: yaw,
+        from: c[2] - s[2] / 2.0,
+        to: c[2] + s[2] / 2.0,
+    }
 }
 
 /// A polygon in the XZ plane (x, z) extruded along Y from `y0` to `y1`.

@@ -47,22 +47,123 @@ pub fn role_of(word: &str) -> Option<Role> {
 
 /// Words that qualify a length (its own phrase) — "outer diameter", "tip circle".
 pub const QUALS: &[&str] = &[
-    "outer", "outside", "inner", "inside", "bore", "hole", "tip", "root", "pitch", "bolt", "circle", "circumscribed",
-    "across", "corner", "flat", "major", "minor", "face", "wall", "base", "top", "bottom", "head", "shaft", "total",
-    "overall", "counterbore", "countersink", "radial", "radially", "axial", "center", "inscribed", "hub", "flange",
-    "web", "leg", "end", "each", "both", "all", "vertical", "horizontal", "long", "short", "edge", "circular",
-    "cross-section", "opening", "neck", "belly", "shoulder", "rim", "slot", "keyway", "groove", "pocket", "recess",
-    "socket", "boss", "post", "arm", "fin", "rib", "plate", "disc", "body", "seat", "journal", "section", "tooth",
-    "extruded", "metric", "clearance", "thread", "key", "gasket", "mount", "motor", "spoke", "rail", "cap", "ring",
-    "pattern", "counterbored", "countersunk", "wall",
+    "outer",
+    "outside",
+    "inner",
+    "inside",
+    "bore",
+    "hole",
+    "tip",
+    "root",
+    "pitch",
+    "bolt",
+    "circle",
+    "circumscribed",
+    "across",
+    "corner",
+    "flat",
+    "major",
+    "minor",
+    "face",
+    "wall",
+    "base",
+    "top",
+    "bottom",
+    "head",
+    "shaft",
+    "total",
+    "overall",
+    "counterbore",
+    "countersink",
+    "radial",
+    "radially",
+    "axial",
+    "center",
+    "inscribed",
+    "hub",
+    "flange",
+    "web",
+    "leg",
+    "end",
+    "each",
+    "both",
+    "all",
+    "vertical",
+    "horizontal",
+    "long",
+    "short",
+    "edge",
+    "circular",
+    "cross-section",
+    "opening",
+    "neck",
+    "belly",
+    "shoulder",
+    "rim",
+    "slot",
+    "keyway",
+    "groove",
+    "pocket",
+    "recess",
+    "socket",
+    "boss",
+    "post",
+    "arm",
+    "fin",
+    "rib",
+    "plate",
+    "disc",
+    "body",
+    "seat",
+    "journal",
+    "section",
+    "tooth",
+    "extruded",
+    "metric",
+    "clearance",
+    "thread",
+    "key",
+    "gasket",
+    "mount",
+    "motor",
+    "spoke",
+    "rail",
+    "cap",
+    "ring",
+    "pattern",
+    "counterbored",
+    "countersunk",
+    "wall",
 ];
 
 /// Words that end the phrase after a length.
 fn is_stop(word: &str) -> bool {
     matches!(
         word,
-        "and" | "with" | "on" | "at" | "of" | "from" | "through" | "to" | "in" | "by" | "into" | "onto" | "is" | "are"
-            | "for" | "that" | "which" | "then" | "where" | "running" | "runs" | "spanning" | "starting" | "rising"
+        "and"
+            | "with"
+            | "on"
+            | "at"
+            | "of"
+            | "from"
+            | "through"
+            | "to"
+            | "in"
+            | "by"
+            | "into"
+            | "onto"
+            | "is"
+            | "are"
+            | "for"
+            | "that"
+            | "which"
+            | "then"
+            | "where"
+            | "running"
+            | "runs"
+            | "spanning"
+            | "starting"
+            | "rising"
     )
 }
 
@@ -301,14 +402,21 @@ impl Doc {
                 // "Z=0 to Z=10", "from the inner floor (Z=2) to the rim height (Z=30)".
                 let joined = !between.is_empty()
                     && (between.len() <= 3
-                        && between.iter().all(|t| matches!(t.word(), Some("to" | "up" | "down" | "through")) || t.is_sym('-'))
+                        && between
+                            .iter()
+                            .all(|t| matches!(t.word(), Some("to" | "up" | "down" | "through")) || t.is_sym('-'))
                         || between.len() <= 9
                             && between.iter().any(|t| t.is_word("to"))
                             && between.iter().all(|t| t.word().is_some() || t.is_sym('(') || t.is_sym(')')));
                 if joined {
                     used[k] = true;
                     used[l] = true;
-                    self.ranges.push(Range { axis: coords[k].axis, a: coords[k].v, b: coords[l].v, toks: (coords[k].tok, coords[l].tok + 3) });
+                    self.ranges.push(Range {
+                        axis: coords[k].axis,
+                        a: coords[k].v,
+                        b: coords[l].v,
+                        toks: (coords[k].tok, coords[l].tok + 3),
+                    });
                 }
             }
         }
@@ -370,7 +478,8 @@ impl Doc {
         let nums: Vec<usize> = (0..n)
             .filter(|i| matches!(self.toks[*i].kind, Tk::Num { unit: Some(_), .. }) && !self.in_tuple_or_coord(*i))
             .collect();
-        let all_nums: Vec<usize> = (0..n).filter(|i| matches!(self.toks[*i].kind, Tk::Num { .. } | Tk::Deg(_))).collect();
+        let all_nums: Vec<usize> =
+            (0..n).filter(|i| matches!(self.toks[*i].kind, Tk::Num { .. } | Tk::Deg(_))).collect();
         let mut dims = Vec::new();
         for &i in &nums {
             let Some((v, Some(f), pm)) = self.num(i) else { continue };
@@ -386,15 +495,21 @@ impl Doc {
                         // "60mm in diameter", "80mm on each side" read on.
                         if is_stop(w) && !(after.is_empty() && (w == "in" || w == "on")) {
                             // "along the X axis", "in the Y direction": the axis, then stop.
-                            if (w == "along" || w == "in") && axis.is_none() {
-                                if let Some(a) = self.word(j + 1).and_then(axis_word).or_else(|| self.word(j + 2).and_then(axis_word)) {
-                                    axis = Some(a);
-                                }
+                            if (w == "along" || w == "in")
+                                && axis.is_none()
+                                && let Some(a) = self
+                                    .word(j + 1)
+                                    .and_then(axis_word)
+                                    .or_else(|| self.word(j + 2).and_then(axis_word))
+                            {
+                                axis = Some(a);
                             }
                             break;
                         }
                         if w == "along" {
-                            if let Some(a) = self.word(j + 1).and_then(axis_word).or_else(|| self.word(j + 2).and_then(axis_word)) {
+                            if let Some(a) =
+                                self.word(j + 1).and_then(axis_word).or_else(|| self.word(j + 2).and_then(axis_word))
+                            {
                                 axis = Some(a);
                             }
                             break;
@@ -407,7 +522,10 @@ impl Doc {
                         while matches!(self.word(q), Some("in" | "the" | "along")) {
                             q += 1;
                         }
-                        if (self.sym(q + 1, ')') || self.sym(q + 1, ',') || self.is(q + 1, "direction") || self.is(q + 1, "axis"))
+                        if (self.sym(q + 1, ')')
+                            || self.sym(q + 1, ',')
+                            || self.is(q + 1, "direction")
+                            || self.is(q + 1, "axis"))
                             && let Some(a) = self.axis_at(q)
                         {
                             axis = Some(a);
@@ -462,20 +580,28 @@ impl Doc {
             let role = match role {
                 Role::Length if before.iter().any(|(_, w)| w == "height") => Role::Height,
                 Role::Spacing if after.iter().chain(before.iter()).any(|(_, w)| w == "circle" || w == "diameter") => {
-                    if after.iter().chain(before.iter()).any(|(_, w)| w == "radius") { Role::Radius } else { Role::Diameter }
+                    if after.iter().chain(before.iter()).any(|(_, w)| w == "radius") {
+                        Role::Radius
+                    } else {
+                        Role::Diameter
+                    }
                 }
                 r => r,
             };
             if axis.is_none() {
                 for (k, (_, w)) in after.iter().enumerate() {
-                    if (w == "in" || w == "along") && let Some((_, a)) = after.get(k + 1) {
+                    if (w == "in" || w == "along")
+                        && let Some((_, a)) = after.get(k + 1)
+                    {
                         axis = axis_word(a).or(axis);
                     }
                 }
             }
             if axis.is_none() {
                 for (k, (_, w)) in before.iter().enumerate() {
-                    if (w == "along" || w == "in") && let Some((_, a)) = before.get(k + 1) {
+                    if (w == "along" || w == "in")
+                        && let Some((_, a)) = before.get(k + 1)
+                    {
                         axis = axis_word(a).or(axis);
                     }
                 }
@@ -506,7 +632,11 @@ impl Doc {
                 }
             }
             // "a 3 mm wall", "with 3mm walls": a wall thickness.
-            let (role, wall) = if role == Role::Bare && after.first().is_some_and(|(_, w)| w == "wall") { (Role::Thickness, true) } else { (role, false) };
+            let (role, wall) = if role == Role::Bare && after.first().is_some_and(|(_, w)| w == "wall") {
+                (Role::Thickness, true)
+            } else {
+                (role, false)
+            };
             if wall && !quals.iter().any(|q| q == "wall") {
                 quals.push("wall".into());
             }
@@ -544,7 +674,12 @@ impl Doc {
         let mut k = 0;
         while k < dims.len() {
             let stated = dims[k].has("metric")
-                && dims.iter().any(|d| !d.has("metric") && d.role == Role::Diameter && d.tok + 10 >= dims[k].tok && d.tok <= dims[k].tok + 10);
+                && dims.iter().any(|d| {
+                    !d.has("metric")
+                        && d.role == Role::Diameter
+                        && d.tok + 10 >= dims[k].tok
+                        && d.tok <= dims[k].tok + 10
+                });
             if stated {
                 let t = dims[k].tok;
                 self.used.borrow_mut()[t] = true;
@@ -568,7 +703,15 @@ impl Doc {
                     && between.len() <= 5
                     && between.iter().any(|t| t.is_word("by") || t.is_sym('x'))
                     && between.iter().all(|t| match &t.kind {
-                        Tk::Word(w) => w == "by" || axis_word(w).is_some() || w == "thick" || w == "wide" || w == "long" || w == "tall" || w == "deep",
+                        Tk::Word(w) => {
+                            w == "by"
+                                || axis_word(w).is_some()
+                                || w == "thick"
+                                || w == "wide"
+                                || w == "long"
+                                || w == "tall"
+                                || w == "deep"
+                        }
                         Tk::Sym(c) => matches!(c, 'x' | '(' | ')'),
                         _ => false,
                     });

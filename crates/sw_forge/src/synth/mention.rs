@@ -11,25 +11,210 @@ use super::text::Tk;
 /// Words that may stand before a noun to say what it is for ("mounting holes", "gasket
 /// groove", "flight-controller holes"); they do not change its geometry.
 const LABELS: &[&str] = &[
-    "motor", "mounting", "flight-controller", "controller", "gasket", "lightening", "cooling", "set", "screw", "pilot",
-    "clearance", "retaining", "bearing", "cable", "wire", "drain", "vent", "access", "locating", "alignment", "fixing",
-    "tool", "spring", "lock", "electronics", "electronic", "internal", "external", "heat", "sink", "spur", "idler", "drive", "driven", "pinion", "support",
-    "guide", "center", "central", "main", "run", "branch", "outer", "inner", "upper", "lower", "top", "bottom",
-    "front", "back", "rear", "left", "right", "side", "end", "first", "second", "third", "large", "small", "big",
-    "larger", "smaller", "narrower", "wider", "thinner", "thicker", "shorter", "longer", "taller", "raised",
-    "sunken", "horizontal", "vertical", "upright", "parallel", "radial", "axial", "transverse", "longitudinal",
-    "perpendicular", "diagonal", "solid", "simple", "plain", "flat", "thin", "thick", "long", "short", "tall",
-    "wide", "narrow", "deep", "shallow", "straight", "smooth", "structural", "mechanical", "cross", "pipe",
-    "allen", "cap", "socket", "hex", "machine", "wood", "metal", "steel", "aluminium", "aluminum", "brass",
-    "plastic", "nylon", "rubber", "tooth", "belt", "v-belt", "timing", "pitch", "bolt", "stepped", "flanged",
-    "threaded", "smooth", "full", "half", "quarter", "semicircular", "continuous", "through", "blind",
-    "counterbored", "countersunk", "rounded", "filleted", "chamfered", "drilled", "machined", "bored", "cut", "equal", "identical", "matching",
-    "protruding", "extended", "integral", "single", "double", "twin", "triple", "compound", "coaxial",
-    "concentric", "base", "mount", "shaft", "gear", "hub", "journal", "neck", "shoulder", "head", "body",
-    "wall", "floor", "rim", "platform", "post", "plate", "standoff", "arm", "fin", "rib", "rail", "seat",
-    "flange", "key", "keyway", "slot", "groove", "hole", "bore", "boss", "ring", "disc", "lug", "ear", "tab",
-    "leg", "foot", "pad", "web", "stem", "spoke", "mid-height", "square", "rectangular", "round", "circular", "angle", "l-shaped",
-    "cylindrical", "regular",
+    "motor",
+    "mounting",
+    "flight-controller",
+    "controller",
+    "gasket",
+    "lightening",
+    "cooling",
+    "set",
+    "screw",
+    "pilot",
+    "clearance",
+    "retaining",
+    "bearing",
+    "cable",
+    "wire",
+    "drain",
+    "vent",
+    "access",
+    "locating",
+    "alignment",
+    "fixing",
+    "tool",
+    "spring",
+    "lock",
+    "electronics",
+    "electronic",
+    "internal",
+    "external",
+    "heat",
+    "sink",
+    "spur",
+    "idler",
+    "drive",
+    "driven",
+    "pinion",
+    "support",
+    "guide",
+    "center",
+    "central",
+    "main",
+    "run",
+    "branch",
+    "outer",
+    "inner",
+    "upper",
+    "lower",
+    "top",
+    "bottom",
+    "front",
+    "back",
+    "rear",
+    "left",
+    "right",
+    "side",
+    "end",
+    "first",
+    "second",
+    "third",
+    "large",
+    "small",
+    "big",
+    "larger",
+    "smaller",
+    "narrower",
+    "wider",
+    "thinner",
+    "thicker",
+    "shorter",
+    "longer",
+    "taller",
+    "raised",
+    "sunken",
+    "horizontal",
+    "vertical",
+    "upright",
+    "parallel",
+    "radial",
+    "axial",
+    "transverse",
+    "longitudinal",
+    "perpendicular",
+    "diagonal",
+    "solid",
+    "simple",
+    "plain",
+    "flat",
+    "thin",
+    "thick",
+    "long",
+    "short",
+    "tall",
+    "wide",
+    "narrow",
+    "deep",
+    "shallow",
+    "straight",
+    "smooth",
+    "structural",
+    "mechanical",
+    "cross",
+    "pipe",
+    "allen",
+    "cap",
+    "socket",
+    "hex",
+    "machine",
+    "wood",
+    "metal",
+    "steel",
+    "aluminium",
+    "aluminum",
+    "brass",
+    "plastic",
+    "nylon",
+    "rubber",
+    "tooth",
+    "belt",
+    "v-belt",
+    "timing",
+    "pitch",
+    "bolt",
+    "stepped",
+    "flanged",
+    "threaded",
+    "smooth",
+    "full",
+    "half",
+    "quarter",
+    "semicircular",
+    "continuous",
+    "through",
+    "blind",
+    "counterbored",
+    "countersunk",
+    "rounded",
+    "filleted",
+    "chamfered",
+    "drilled",
+    "machined",
+    "bored",
+    "cut",
+    "equal",
+    "identical",
+    "matching",
+    "protruding",
+    "extended",
+    "integral",
+    "single",
+    "double",
+    "twin",
+    "triple",
+    "compound",
+    "coaxial",
+    "concentric",
+    "base",
+    "mount",
+    "shaft",
+    "gear",
+    "hub",
+    "journal",
+    "neck",
+    "shoulder",
+    "head",
+    "body",
+    "wall",
+    "floor",
+    "rim",
+    "platform",
+    "post",
+    "plate",
+    "standoff",
+    "arm",
+    "fin",
+    "rib",
+    "rail",
+    "seat",
+    "flange",
+    "key",
+    "keyway",
+    "slot",
+    "groove",
+    "hole",
+    "bore",
+    "boss",
+    "ring",
+    "disc",
+    "lug",
+    "ear",
+    "tab",
+    "leg",
+    "foot",
+    "pad",
+    "web",
+    "stem",
+    "spoke",
+    "mid-height",
+    "square",
+    "rectangular",
+    "round",
+    "circular",
+    "angle",
+    "l-shaped",
+    "cylindrical",
+    "regular",
 ];
 
 /// A noun phrase naming a body, a cut or an edge treatment.
@@ -94,9 +279,37 @@ fn is_det(w: &str) -> bool {
 fn is_prep(w: &str) -> bool {
     matches!(
         w,
-        "through" | "on" | "onto" | "from" | "of" | "to" | "at" | "in" | "into" | "with" | "above" | "below" | "inside" | "around"
-            | "past" | "between" | "along" | "over" | "under" | "beneath" | "across" | "within" | "toward" | "towards"
-            | "bridging" | "connecting" | "via" | "per" | "matching" | "like" | "as"
+        "through"
+            | "on"
+            | "onto"
+            | "from"
+            | "of"
+            | "to"
+            | "at"
+            | "in"
+            | "into"
+            | "with"
+            | "above"
+            | "below"
+            | "inside"
+            | "around"
+            | "past"
+            | "between"
+            | "along"
+            | "over"
+            | "under"
+            | "beneath"
+            | "across"
+            | "within"
+            | "toward"
+            | "towards"
+            | "bridging"
+            | "connecting"
+            | "via"
+            | "per"
+            | "matching"
+            | "like"
+            | "as"
     )
 }
 
@@ -119,12 +332,20 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
             continue;
         }
         // "a 3 mm wall", "with 3mm walls": a thickness, not a body.
-        if w == "wall" && i > 0 && matches!(doc.toks[i - 1].kind, Tk::Num { unit: Some(_), .. }) && !doc.word(i + 1).is_some_and(|n| super::doc::role_of(n).is_some()) {
+        if w == "wall"
+            && i > 0
+            && matches!(doc.toks[i - 1].kind, Tk::Num { unit: Some(_), .. })
+            && doc.word(i + 1).is_none_or(|n| super::doc::role_of(n).is_none())
+        {
             doc.mark(i);
             continue;
         }
         // "base at Z=0": a place on the part, not a body.
-        if matches!(w, "base" | "top" | "bottom") && doc.is(i + 1, "at") && doc.axis_at(i + 2).is_some() && doc.sym(i + 3, '=') {
+        if matches!(w, "base" | "top" | "bottom")
+            && doc.is(i + 1, "at")
+            && doc.axis_at(i + 2).is_some()
+            && doc.sym(i + 3, '=')
+        {
             continue;
         }
         // "on a 60mm bolt circle", "a 20mm x 20mm square pattern": a noun naming a pattern.
@@ -134,9 +355,12 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
         // A noun qualifying a length ("base diameter", "wall thickness", "flange width",
         // "head height") is not a mention of its own.
         if doc.word(i + 1).is_some_and(|n| {
-            super::doc::role_of(n).is_some_and(|r| r != super::doc::Role::Spacing) && n != "side" && n != "rounded" && n != "filleted" && n != "chamfered"
-        })
-            && !matches!(kind, Noun::Fillet | Noun::Chamfer)
+            super::doc::role_of(n).is_some_and(|r| r != super::doc::Role::Spacing)
+                && n != "side"
+                && n != "rounded"
+                && n != "filleted"
+                && n != "chamfered"
+        }) && !matches!(kind, Noun::Fillet | Noun::Chamfer)
         {
             continue;
         }
@@ -186,7 +410,8 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                         mods.push(v.clone());
                         true
                     } else {
-                        super::doc::role_of(v).is_some() && doc.toks.get(k.wrapping_sub(1)).is_some_and(|p| matches!(p.kind, Tk::Num { .. }))
+                        super::doc::role_of(v).is_some()
+                            && doc.toks.get(k.wrapping_sub(1)).is_some_and(|p| matches!(p.kind, Tk::Num { .. }))
                     }
                 }
                 Tk::Num { unit: Some(_), .. } => true,
@@ -210,7 +435,9 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                 Tk::Sym(')') => {
                     if let Some(o) = (0..k).rev().find(|q| doc.sym(*q, '(')) {
                         let sides = (o + 1..k).find_map(|q| match doc.toks[q].kind {
-                            Tk::Num { v, unit: None, .. } if doc.is(q + 2, "sided") || doc.is(q + 1, "sided") => Some(v),
+                            Tk::Num { v, unit: None, .. } if doc.is(q + 2, "sided") || doc.is(q + 1, "sided") => {
+                                Some(v)
+                            }
                             _ => None,
                         });
                         if sides.is_some() || (o + 1..k).all(|q| doc.word(q).is_some()) {
@@ -237,12 +464,26 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
         let prep = if before > 0 { doc.word(before - 1).filter(|p| is_prep(p)).map(str::to_string) } else { None };
         // "a 3x2 array of posts", "a row of fins": the thing, not a reference.
         let prep = match prep.as_deref() {
-            Some("of") if before >= 2 && doc.word(before - 2).is_some_and(|w| matches!(w, "array" | "row" | "grid" | "pattern" | "set" | "pair" | "series" | "ring" | "circle")) => None,
+            Some("of")
+                if before >= 2
+                    && doc.word(before - 2).is_some_and(|w| {
+                        matches!(
+                            w,
+                            "array" | "row" | "grid" | "pattern" | "set" | "pair" | "series" | "ring" | "circle"
+                        )
+                    }) =>
+            {
+                None
+            }
             _ => prep,
         };
         let prep = prep.or_else(|| {
             // "one in each flange ear": the preposition before the determiner's phrase.
-            if before >= 2 && doc.word(before - 1).is_some_and(|w| w == "one") { doc.word(before - 2).filter(|p| is_prep(p)).map(str::to_string) } else { None }
+            if before >= 2 && doc.word(before - 1).is_some_and(|w| w == "one") {
+                doc.word(before - 2).filter(|p| is_prep(p)).map(str::to_string)
+            } else {
+                None
+            }
         });
         mentions.push(Mention {
             head: i,
@@ -271,7 +512,10 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
 
 /// Whether a later mention refers to an element already met.
 /// Words that tell two things of one noun apart ("the bottom plate", "the top plate").
-const DISTINCT: &[&str] = &["top", "bottom", "upper", "lower", "left", "right", "front", "back", "rear", "first", "second", "third", "inner", "outer", "large", "small", "larger", "smaller", "center", "central"];
+const DISTINCT: &[&str] = &[
+    "top", "bottom", "upper", "lower", "left", "right", "front", "back", "rear", "first", "second", "third", "inner",
+    "outer", "large", "small", "larger", "smaller", "center", "central",
+];
 
 fn same_thing(m: &Mention, e: &Element) -> bool {
     let pos = |mods: &[String]| mods.iter().filter(|x| DISTINCT.contains(&x.as_str())).cloned().collect::<Vec<_>>();
@@ -297,7 +541,7 @@ fn same_thing(m: &Mention, e: &Element) -> bool {
         return true;
     }
     // "each motor mount" → a "motor mount platform".
-    e.mods.iter().any(|x| *x == m.noun) && m.mods.iter().all(|x| e.mods.contains(x) || *x == e.noun || !matches!(noun(x), Some(_)))
+    e.mods.contains(&m.noun) && m.mods.iter().all(|x| e.mods.contains(x) || *x == e.noun || noun(x).is_none())
 }
 
 fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
@@ -307,7 +551,11 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
         // "Motor mounts: four circular platforms …": a heading names what follows it.
         let heading = mi > 0 && {
             let h = &mentions[mi - 1];
-            h.sent == m.sent && h.sent > 0 && doc.sym(h.head + 1, ':') && m.start <= h.head + 4 && doc.sentence(h.sent).0 + 3 > h.start
+            h.sent == m.sent
+                && h.sent > 0
+                && doc.sym(h.head + 1, ':')
+                && m.start <= h.head + 4
+                && doc.sentence(h.sent).0 + 3 > h.start
         };
         // "The groove is a ring between …", "The central hub is a … square plate": the
         // predicate is the subject.
@@ -315,7 +563,11 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
             && matches!(doc.word(m.start - 1), Some("a" | "an"))
             && matches!(doc.word(m.start - 2), Some("is" | "are"))
             && mentions[..mi].iter().rev().find(|p| p.sent == m.sent && p.prep.is_none() && p.head < m.start).is_some();
-        let subject = if predicate { mentions[..mi].iter().rposition(|p| p.sent == m.sent && p.prep.is_none() && p.head < m.start) } else { None };
+        let subject = if predicate {
+            mentions[..mi].iter().rposition(|p| p.sent == m.sent && p.prep.is_none() && p.head < m.start)
+        } else {
+            None
+        };
         if heading || subject.is_some() {
             let id = mentions[subject.unwrap_or(mi - 1)].elem;
             mentions[mi].elem = id;
@@ -355,7 +607,7 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
                 e.plural |= m.plural || m.each || m.count.is_some_and(|c| c > 1);
                 let plural = e.plural;
                 for x in &m.mods {
-                    if !e.mods.contains(x) && !(plural && DISTINCT.contains(&x.as_str())) {
+                    if !(e.mods.contains(x) || plural && DISTINCT.contains(&x.as_str())) {
                         e.mods.push(x.clone());
                     }
                 }
@@ -419,7 +671,13 @@ fn owner(doc: &Doc, mentions: &[Mention], t: usize) -> Option<usize> {
     owner_fit(doc, mentions, t, None, &[])
 }
 
-fn owner_fit(doc: &Doc, mentions: &[Mention], t: usize, role: Option<&super::doc::Dim>, kinds: &[Noun]) -> Option<usize> {
+fn owner_fit(
+    doc: &Doc,
+    mentions: &[Mention],
+    t: usize,
+    role: Option<&super::doc::Dim>,
+    kinds: &[Noun],
+) -> Option<usize> {
     let kind_of = |m: &Mention| kinds.get(m.elem).copied().unwrap_or(m.kind);
     let s = doc.sent[t];
     // Inside a mention's phrase (before its head): that mention.
@@ -433,7 +691,11 @@ fn owner_fit(doc: &Doc, mentions: &[Mention], t: usize, role: Option<&super::doc
     let before: Vec<&Mention> = mentions.iter().filter(|m| m.sent == s && m.head < t).collect();
     // A mention inside parentheses owns nothing outside them.
     let aside = |m: &Mention| doc.depth[m.head] > doc.depth[t];
-    if let Some(m) = before.iter().rev().find(|m| (m.prep.is_none() || m.prep.as_deref() == Some("with")) && fits(kind_of(m), role) && !aside(m)) {
+    if let Some(m) = before
+        .iter()
+        .rev()
+        .find(|m| (m.prep.is_none() || m.prep.as_deref() == Some("with")) && fits(kind_of(m), role) && !aside(m))
+    {
         return Some(m.elem);
     }
     if let Some(m) = mentions.iter().find(|m| m.sent == s && (m.prep.is_none() || m.prep.as_deref() == Some("with"))) {
@@ -448,12 +710,14 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
     }
     for (k, d) in doc.dims.iter().enumerate() {
         // A restatement in parentheses right after another length: that length's owner.
-        let o = if d.paren && k > 0 && doc.dims[k - 1].tok + 8 > d.tok && doc.depth[doc.dims[k - 1].tok] < doc.depth[d.tok] {
-            owner(doc, mentions, doc.dims[k - 1].tok)
-        } else {
-            let kinds: Vec<Noun> = elements.iter().map(|e| e.kind).collect();
-            owner_fit(doc, mentions, d.tok, Some(d), &kinds)
-        };
+        let o =
+            if d.paren && k > 0 && doc.dims[k - 1].tok + 8 > d.tok && doc.depth[doc.dims[k - 1].tok] < doc.depth[d.tok]
+            {
+                owner(doc, mentions, doc.dims[k - 1].tok)
+            } else {
+                let kinds: Vec<Noun> = elements.iter().map(|e| e.kind).collect();
+                owner_fit(doc, mentions, d.tok, Some(d), &kinds)
+            };
         // "Total height 35mm", "40mm overall length": the part's own.
         let o = if d.has("total") || d.has("overall") { elements.iter().position(|e| e.title).or(o) } else { o };
         if let Some(o) = o.and_then(|o| elements.get_mut(o)) {
@@ -489,7 +753,9 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
             }
             // "16 teeth", "16-tooth", "32 vertices".
             Tk::Num { v, unit: None, .. } if v.fract() == 0.0 && v >= 1.0 => {
-                let per = if doc.is(i + 1, "tooth") || (doc.is(i + 2, "tooth") && doc.word(i + 1).is_some_and(|w| shape_adjective(w).is_some())) {
+                let per = if doc.is(i + 1, "tooth")
+                    || (doc.is(i + 2, "tooth") && doc.word(i + 1).is_some_and(|w| shape_adjective(w).is_some()))
+                {
                     Some(1)
                 } else if doc.is(i + 1, "vertex") {
                     Some(2)

@@ -100,12 +100,18 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
             let _ = k;
             return Err(SynthError::Unread {
                 phrase,
-                reason: format!("a length of {} mm is outside what the synthesizer makes ({MIN_MM} mm to {MAX_MM} mm)", x.mm),
+                reason: format!(
+                    "a length of {} mm is outside what the synthesizer makes ({MIN_MM} mm to {MAX_MM} mm)",
+                    x.mm
+                ),
             });
         }
     }
     if let Some(c) = d.coords.iter().find(|c| !c.v.is_finite() || c.v.abs() > MAX_MM) {
-        return Err(SynthError::Unread { phrase: d.quote(c.tok, c.tok + 2), reason: "a coordinate outside 10 m".into() });
+        return Err(SynthError::Unread {
+            phrase: d.quote(c.tok, c.tok + 2),
+            reason: "a coordinate outside 10 m".into(),
+        });
     }
     let model = read::read(&d).map_err(|r| SynthError::Unread { phrase: r.phrase, reason: r.reason })?;
     Ok(finish(prompt, "features", &model))

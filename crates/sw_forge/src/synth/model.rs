@@ -30,7 +30,10 @@ fn inside_box(inner: &[[f64; 3]; 2], outer: &[[f64; 3]; 2]) -> bool {
 }
 
 /// The prism's profile, axis, centre and span, without edge treatments or a shell.
-fn plain_prism(b: &Body) -> Option<(&Profile, Axis, [f64; 2], f64, [f64; 2])> {
+/// A prism's profile, axis, centre, turn and span.
+type PrismParts<'a> = (&'a Profile, Axis, [f64; 2], f64, [f64; 2]);
+
+fn plain_prism(b: &Body) -> Option<PrismParts<'_>> {
     match &b.shape {
         Shape::Prism { profile, axis, at, rot, from, to } if b.edges.is_empty() && b.shell.is_none() => {
             Some((profile, *axis, *at, *rot, [from.min(*to), from.max(*to)]))
@@ -68,11 +71,15 @@ fn profile_inside(small: &Profile, at_s: [f64; 2], rot_s: f64, big: &Profile, at
             let c = to_big(off);
             let outline = big.outline();
             big.contains(c)
-                && (0..outline.len()).all(|i| seg_dist(c, outline[i], outline[(i + 1) % outline.len()]) >= d / 2.0 - EPS)
+                && (0..outline.len())
+                    .all(|i| seg_dist(c, outline[i], outline[(i + 1) % outline.len()]) >= d / 2.0 - EPS)
         }
         _ => {
             let (ss, cs) = rot_s.to_radians().sin_cos();
-            small.outline().into_iter().all(|p| big.contains(to_big([cs * p[0] - ss * p[1] + off[0], ss * p[0] + cs * p[1] + off[1]])))
+            small
+                .outline()
+                .into_iter()
+                .all(|p| big.contains(to_big([cs * p[0] - ss * p[1] + off[0], ss * p[0] + cs * p[1] + off[1]])))
         }
     }
 }
@@ -254,7 +261,8 @@ impl Model {
 
     /// CadQuery code that assigns the part to `result`.
     pub fn code(&self, title: &str) -> String {
-        let mut s = format!("# {title}\n# Units: mm. Written by scenewright's offline synthesizer.\nimport cadquery as cq\n\n");
+        let mut s =
+            format!("# {title}\n# Units: mm. Written by scenewright's offline synthesizer.\nimport cadquery as cq\n\n");
         for (i, b) in self.adds.iter().enumerate() {
             let _ = writeln!(s, "# {}", b.label);
             if i == 0 {
@@ -307,14 +315,28 @@ mod tests {
         m.adds.push(cyl(20.0, 0.0, 60.0, [0.0, 0.0]));
         m.cuts.push(Body::new(
             "keyway",
-            Shape::Prism { profile: Profile::Rect { w: 5.0, h: 6.0 }, axis: Axis::Z, at: [9.5, 0.0], rot: 0.0, from: 0.0, to: 60.0 },
+            Shape::Prism {
+                profile: Profile::Rect { w: 5.0, h: 6.0 },
+                axis: Axis::Z,
+                at: [9.5, 0.0],
+                rot: 0.0,
+                from: 0.0,
+                to: 60.0,
+            },
         ));
         assert_eq!(m.extent_certain(), [false, true, true]);
         assert_eq!(m.volume(), None);
         let w = Model {
             adds: vec![Body::new(
                 "washer",
-                Shape::Prism { profile: Profile::Annulus { od: 20.0, id: 10.5 }, axis: Axis::Z, at: [0.0; 2], rot: 0.0, from: 0.0, to: 2.0 },
+                Shape::Prism {
+                    profile: Profile::Annulus { od: 20.0, id: 10.5 },
+                    axis: Axis::Z,
+                    at: [0.0; 2],
+                    rot: 0.0,
+                    from: 0.0,
+                    to: 2.0,
+                },
             )],
             cuts: Vec::new(),
         };

@@ -18,24 +18,53 @@ pub enum Seg {
 /// polygon or path (whose points are where they are).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Profile {
-    Rect { w: f64, h: f64 },
+    Rect {
+        w: f64,
+        h: f64,
+    },
     /// A rectangle whose four corners are rounded with radius `r`.
-    RoundedRect { w: f64, h: f64, r: f64 },
-    Circle { d: f64 },
+    RoundedRect {
+        w: f64,
+        h: f64,
+        r: f64,
+    },
+    Circle {
+        d: f64,
+    },
     /// A ring between two concentric circles.
-    Annulus { od: f64, id: f64 },
+    Annulus {
+        od: f64,
+        id: f64,
+    },
     /// An ellipse of full axes `a` (along u) and `b` (along v).
-    Ellipse { a: f64, b: f64 },
+    Ellipse {
+        a: f64,
+        b: f64,
+    },
     /// A regular polygon of `n` sides on a circle of diameter `d`, the first corner at
     /// `phase` degrees from +u.
-    Ngon { n: usize, d: f64, phase: f64 },
+    Ngon {
+        n: usize,
+        d: f64,
+        phase: f64,
+    },
     /// A star of `n` tips alternating between the tip and root radii, the first tip on +u.
-    Star { n: usize, tip: f64, root: f64 },
+    Star {
+        n: usize,
+        tip: f64,
+        root: f64,
+    },
     /// A rectangle with semicircular ends, `l` end to end along u, `w` wide.
-    Stadium { l: f64, w: f64 },
+    Stadium {
+        l: f64,
+        w: f64,
+    },
     Poly(Vec<[f64; 2]>),
     /// A closed path from `start`: lines and arcs.
-    Path { start: [f64; 2], segs: Vec<Seg> },
+    Path {
+        start: [f64; 2],
+        segs: Vec<Seg>,
+    },
 }
 
 impl Profile {
@@ -80,10 +109,9 @@ impl Profile {
                 vec![[-w / 2.0, -h / 2.0], [w / 2.0, -h / 2.0], [w / 2.0, h / 2.0], [-w / 2.0, h / 2.0]]
             }
             Profile::Circle { d } | Profile::Annulus { od: d, .. } => circle(d / 2.0, [0.0, 0.0]),
-            Profile::Ellipse { a, b } => (0..360)
-                .map(|k| f64::from(k).to_radians())
-                .map(|t| [a / 2.0 * t.cos(), b / 2.0 * t.sin()])
-                .collect(),
+            Profile::Ellipse { a, b } => {
+                (0..360).map(|k| f64::from(k).to_radians()).map(|t| [a / 2.0 * t.cos(), b / 2.0 * t.sin()]).collect()
+            }
             Profile::Ngon { n, d, phase } => regular(*n, d / 2.0, phase.to_radians()),
             Profile::Star { n, tip, root } => star(*n, *tip, *root),
             Profile::Stadium { l, w } => {
@@ -333,7 +361,11 @@ pub fn path_area_centroid(start: [f64; 2], segs: &[Seg]) -> (f64, [f64; 2]) {
                     let th = sweep.abs();
                     let area = r * r / 2.0 * (th - th.sin());
                     let bis = a0 + sweep / 2.0;
-                    let dist = if th - th.sin() > 1e-15 { 4.0 * r * (th / 2.0).sin().powi(3) / (3.0 * (th - th.sin())) } else { r };
+                    let dist = if th - th.sin() > 1e-15 {
+                        4.0 * r * (th / 2.0).sin().powi(3) / (3.0 * (th - th.sin()))
+                    } else {
+                        r
+                    };
                     let cen = [c[0] + dist * bis.cos(), c[1] + dist * bis.sin()];
                     // A counter-clockwise arc on a counter-clockwise path bulges outwards.
                     let sign = if sweep > 0.0 { 1.0 } else { -1.0 };
@@ -382,7 +414,10 @@ mod tests {
     #[test]
     fn a_half_disc_path_has_the_half_discs_area_and_centroid() {
         // From (-1, 0) along the lower semicircle to (1, 0), then back along the diameter.
-        let p = Profile::Path { start: [-1.0, 0.0], segs: vec![Seg::Arc { mid: [0.0, -1.0], end: [1.0, 0.0] }, Seg::Line([-1.0, 0.0])] };
+        let p = Profile::Path {
+            start: [-1.0, 0.0],
+            segs: vec![Seg::Arc { mid: [0.0, -1.0], end: [1.0, 0.0] }, Seg::Line([-1.0, 0.0])],
+        };
         let (a, c) = p.area_centroid();
         assert!((a - PI / 2.0).abs() < 1e-12, "{a}");
         assert!((c[1] + 4.0 / (3.0 * PI)).abs() < 1e-12, "{c:?}");

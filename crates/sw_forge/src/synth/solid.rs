@@ -73,24 +73,75 @@ pub fn point(axis: Axis, uv: [f64; 2], w: f64) -> [f64; 3] {
 pub enum Shape {
     /// `profile` in the plane normal to `axis`, turned `rot` degrees about its own origin,
     /// its origin at `at` (u, v), extruded from `from` to `to` along the axis.
-    Prism { profile: Profile, axis: Axis, at: [f64; 2], rot: f64, from: f64, to: f64 },
+    Prism {
+        profile: Profile,
+        axis: Axis,
+        at: [f64; 2],
+        rot: f64,
+        from: f64,
+        to: f64,
+    },
     /// A cone or frustum along `axis`: diameter `d_from` at `from`, `d_to` at `to`.
-    Cone { axis: Axis, at: [f64; 2], from: f64, to: f64, d_from: f64, d_to: f64 },
-    Sphere { c: [f64; 3], d: f64 },
+    Cone {
+        axis: Axis,
+        at: [f64; 2],
+        from: f64,
+        to: f64,
+        d_from: f64,
+        d_to: f64,
+    },
+    Sphere {
+        c: [f64; 3],
+        d: f64,
+    },
     /// The half of a sphere on the `up` (positive) or negative side of `c` along `axis`.
-    Hemisphere { c: [f64; 3], d: f64, axis: Axis, up: bool },
+    Hemisphere {
+        c: [f64; 3],
+        d: f64,
+        axis: Axis,
+        up: bool,
+    },
     /// A ring torus: `major` the diameter of its centre circle, `minor` of its tube.
-    Torus { c: [f64; 3], axis: Axis, major: f64, minor: f64 },
+    Torus {
+        c: [f64; 3],
+        axis: Axis,
+        major: f64,
+        minor: f64,
+    },
     /// A profile in (r, z) revolved about the vertical axis through (x, y) = `at`.
-    Revolve { at: [f64; 2], profile: Profile },
+    Revolve {
+        at: [f64; 2],
+        profile: Profile,
+    },
     /// A loft along Z from `bottom` at `from` to `top` at `to`, centred on `at`.
-    Loft { at: [f64; 2], from: f64, to: f64, bottom: Profile, top: Profile },
+    Loft {
+        at: [f64; 2],
+        from: f64,
+        to: f64,
+        bottom: Profile,
+        top: Profile,
+    },
     /// A pyramid on a `w` × `d` rectangle at `from`, its apex at `to` along Z.
-    Pyramid { at: [f64; 2], from: f64, to: f64, w: f64, d: f64 },
+    Pyramid {
+        at: [f64; 2],
+        from: f64,
+        to: f64,
+        w: f64,
+        d: f64,
+    },
     /// A pipe (outer diameter `od`, inner `id`, 0 for a solid rod) swept along a circular
     /// arc of `radius` about `centre` in the plane of axes (`u`, `v`), from angle `a0` to
     /// `a1` degrees (a point at angle a is centre + radius (cos a · u + sin a · v)).
-    Bend { od: f64, id: f64, centre: [f64; 3], radius: f64, u: Axis, v: Axis, a0: f64, a1: f64 },
+    Bend {
+        od: f64,
+        id: f64,
+        centre: [f64; 3],
+        radius: f64,
+        u: Axis,
+        v: Axis,
+        a0: f64,
+        a1: f64,
+    },
 }
 
 impl Shape {
@@ -138,7 +189,10 @@ impl Shape {
             }
             Shape::Cone { axis, at, from, to, d_from, d_to } => {
                 let r = d_from.max(*d_to) / 2.0;
-                [point(*axis, [at[0] - r, at[1] - r], from.min(*to)), point(*axis, [at[0] + r, at[1] + r], from.max(*to))]
+                [
+                    point(*axis, [at[0] - r, at[1] - r], from.min(*to)),
+                    point(*axis, [at[0] + r, at[1] + r], from.max(*to)),
+                ]
             }
             Shape::Sphere { c, d } => {
                 let r = d / 2.0;
@@ -177,7 +231,9 @@ impl Shape {
             Shape::Pyramid { at, from, to, w, d } => {
                 [[at[0] - w / 2.0, at[1] - d / 2.0, from.min(*to)], [at[0] + w / 2.0, at[1] + d / 2.0, from.max(*to)]]
             }
-            Shape::Bend { od, centre, radius, u, v, a0, a1, .. } => bend_bounds(*od, *centre, *radius, *u, *v, *a0, *a1),
+            Shape::Bend { od, centre, radius, u, v, a0, a1, .. } => {
+                bend_bounds(*od, *centre, *radius, *u, *v, *a0, *a1)
+            }
         }
     }
 
@@ -282,7 +338,8 @@ impl Shape {
                     tup(mid),
                     tup(end)
                 );
-                let rod = |d: f64| format!("cq.Workplane({plane}).circle({}).sweep({path}, transition='round')", n(d / 2.0));
+                let rod =
+                    |d: f64| format!("cq.Workplane({plane}).circle({}).sweep({path}, transition='round')", n(d / 2.0));
                 if *id > 0.0 { format!("{}.cut({})", rod(*od), rod(*id)) } else { rod(*od) }
             }
         }
@@ -441,11 +498,18 @@ impl Body {
                 match (e.edges, e.kind) {
                     (Edges::All, EdgeKind::Fillet) => {
                         let (p, q, t) = (a - 2.0 * k, bb - 2.0 * k, c - 2.0 * k);
-                        Some(p * q * t + 2.0 * (p * q + q * t + p * t) * k + PI * (p + q + t) * k * k + 4.0 / 3.0 * PI * k.powi(3))
+                        Some(
+                            p * q * t
+                                + 2.0 * (p * q + q * t + p * t) * k
+                                + PI * (p + q + t) * k * k
+                                + 4.0 / 3.0 * PI * k.powi(3),
+                        )
                     }
                     // OCCT closes each corner with the plane through the three chamfers'
                     // ends (x + y + z = 2k): 16/3 k³ back over the eight corners.
-                    (Edges::All, EdgeKind::Chamfer) => Some(a * bb * c - 2.0 * k * k * (a + bb + c) + 16.0 / 3.0 * k.powi(3)),
+                    (Edges::All, EdgeKind::Chamfer) => {
+                        Some(a * bb * c - 2.0 * k * k * (a + bb + c) + 16.0 / 3.0 * k.powi(3))
+                    }
                     (Edges::Parallel(ax), kind) => {
                         let corner = match kind {
                             EdgeKind::Fillet => (4.0 - PI) * k * k,
@@ -530,10 +594,22 @@ mod tests {
 
     #[test]
     fn bends_follow_pappus_and_reach_past_their_ends() {
-        let s = Shape::Bend { od: 20.0, id: 16.0, centre: [40.0, 0.0, 0.0], radius: 40.0, u: Axis::X, v: Axis::Z, a0: 180.0, a1: 90.0 };
+        let s = Shape::Bend {
+            od: 20.0,
+            id: 16.0,
+            centre: [40.0, 0.0, 0.0],
+            radius: 40.0,
+            u: Axis::X,
+            v: Axis::Z,
+            a0: 180.0,
+            a1: 90.0,
+        };
         assert!((s.volume().unwrap() - PI * 36.0 * PI / 2.0 * 40.0).abs() < 1e-9);
         let b = s.bounds();
-        assert!((b[0][0] + 10.0).abs() < 1e-6 && (b[1][0] - 40.0).abs() < 1e-6 && (b[1][2] - 50.0).abs() < 1e-6, "{b:?}");
+        assert!(
+            (b[0][0] + 10.0).abs() < 1e-6 && (b[1][0] - 40.0).abs() < 1e-6 && (b[1][2] - 50.0).abs() < 1e-6,
+            "{b:?}"
+        );
         let hemi = Shape::Hemisphere { c: [0.0; 3], d: 50.0, axis: Axis::Z, up: true };
         assert_eq!(hemi.bounds(), [[-25.0, -25.0, 0.0], [25.0, 25.0, 25.0]]);
     }

@@ -16,7 +16,12 @@ pub enum Tk {
     Word(String),
     /// A number; `unit` its factor to mm when a length unit followed it; `pm` when it was
     /// written "±" or "+/-"; `signed` when it carried an explicit sign.
-    Num { v: f64, unit: Option<f64>, pm: bool, signed: bool },
+    Num {
+        v: f64,
+        unit: Option<f64>,
+        pm: bool,
+        signed: bool,
+    },
     /// An angle in degrees ("45°", "45-degree", "45 degrees").
     Deg(f64),
     Sym(char),
@@ -236,10 +241,18 @@ pub fn tokenize(text: &str) -> Vec<Token> {
             continue;
         }
         // "i.e." and "e.g.": one word, not two sentences.
-        if (c == 'i' || c == 'e' || c == 'I' || c == 'E') && at(i + 1) == Some('.') && at(i + 3) == Some('.') && !(i > 0 && at(i - 1).is_some_and(|p| p.is_alphanumeric())) {
+        if (c == 'i' || c == 'e' || c == 'I' || c == 'E')
+            && at(i + 1) == Some('.')
+            && at(i + 3) == Some('.')
+            && !(i > 0 && at(i - 1).is_some_and(|p| p.is_alphanumeric()))
+        {
             let pair: String = [Some(c), at(i + 2)].iter().flatten().collect::<String>().to_lowercase();
             if pair == "ie" || pair == "eg" {
-                toks.push(Token { kind: Tk::Word(if pair == "ie" { "i.e".into() } else { "e.g".into() }), start, end: pos(i + 4) });
+                toks.push(Token {
+                    kind: Tk::Word(if pair == "ie" { "i.e".into() } else { "e.g".into() }),
+                    start,
+                    end: pos(i + 4),
+                });
                 i += 4;
                 continue;
             }
@@ -389,7 +402,11 @@ fn inherit_units(toks: &mut [Token]) {
         let mut j = i;
         while j >= 2 {
             let sep_ok = toks[j - 1].is_sym(',') || toks[j - 1].is_word("and");
-            let (k, sep_ok) = if toks[j - 1].is_word("and") && j >= 3 && toks[j - 2].is_sym(',') { (j - 2, true) } else { (j - 1, sep_ok) };
+            let (k, sep_ok) = if toks[j - 1].is_word("and") && j >= 3 && toks[j - 2].is_sym(',') {
+                (j - 2, true)
+            } else {
+                (j - 1, sep_ok)
+            };
             if !sep_ok || k == 0 {
                 break;
             }
@@ -414,7 +431,8 @@ mod tests {
     #[test]
     fn units_lists_coordinates_and_angles() {
         let k = kinds("a plate 80 x 60 x 5 mm at (X=+25, Y=20)");
-        let lens: Vec<f64> = k.iter().filter_map(|t| if let Tk::Num { v, unit: Some(_), .. } = t { Some(*v) } else { None }).collect();
+        let lens: Vec<f64> =
+            k.iter().filter_map(|t| if let Tk::Num { v, unit: Some(_), .. } = t { Some(*v) } else { None }).collect();
         assert_eq!(lens, vec![80.0, 60.0, 5.0, 25.0, 20.0]);
         let k = kinds("at 0, 60, 120, 180, 240, and 300 degrees from the +X axis");
         assert_eq!(k.iter().filter(|t| matches!(t, Tk::Deg(_))).count(), 6);

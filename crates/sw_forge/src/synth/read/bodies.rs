@@ -31,7 +31,8 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
         // The part's name with no size of its own is only its name ("A hex bolt: …"); its
         // overall sizes are restatements of its bodies.
         let own = r.els[e].dims.iter().any(|k| !r.dim(*k).has("total") && !r.dim(*k).has("overall"));
-        let others = (0..r.els.len()).any(|o| o != e && matches!(r.els[o].kind, Noun::Body(_)) && !r.els[o].dims.is_empty());
+        let others =
+            (0..r.els.len()).any(|o| o != e && matches!(r.els[o].kind, Noun::Body(_)) && !r.els[o].dims.is_empty());
         if r.els[e].title && !own && (r.els.len() > 1 && (r.els[e].dims.is_empty() || others)) {
             r.mark_element(e);
             continue;
@@ -74,7 +75,8 @@ fn merge_faces(r: &mut Reader<'_>) {
             if e == t || r.els[e].noun != *f {
                 continue;
             }
-            let (dims, ranges, coords, tuples) = (r.els[e].dims.clone(), r.els[e].ranges.clone(), r.els[e].coords.clone(), r.els[e].tuples.clone());
+            let (dims, ranges, coords, tuples) =
+                (r.els[e].dims.clone(), r.els[e].ranges.clone(), r.els[e].coords.clone(), r.els[e].tuples.clone());
             r.els[t].dims.extend(dims);
             r.els[t].ranges.extend(ranges);
             r.els[t].coords.extend(coords);
@@ -91,7 +93,10 @@ fn axis_of(r: &Reader<'_>, e: usize, round: bool) -> Axis {
     if round {
         for &k in &el.dims {
             let d = r.dim(k);
-            if matches!(d.role, Role::Length | Role::Height) && !r.used_dims[k] && let Some(a) = d.axis {
+            if matches!(d.role, Role::Length | Role::Height)
+                && !r.used_dims[k]
+                && let Some(a) = d.axis
+            {
                 return a;
             }
         }
@@ -112,7 +117,13 @@ fn axis_of(r: &Reader<'_>, e: usize, round: bool) -> Axis {
             .filter(|m| m.prep.is_none())
             .map(|m| {
                 let (_, end) = r.doc.sentence(m.sent);
-                let next = r.mentions.iter().filter(|n| n.sent == m.sent && n.head > m.head && n.elem != e).map(|n| n.start).min().unwrap_or(end);
+                let next = r
+                    .mentions
+                    .iter()
+                    .filter(|n| n.sent == m.sent && n.head > m.head && n.elem != e)
+                    .map(|n| n.start)
+                    .min()
+                    .unwrap_or(end);
                 (m.head, next)
             })
             .collect();
@@ -230,7 +241,13 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
     // Tagged lengths first.
     for &k in &dims {
         let d = r.dim(k).clone();
-        if d.paren || treat(&d) || matches!(d.role, Role::Fillet | Role::Chamfer | Role::Inset | Role::Spacing | Role::Diameter | Role::Radius) {
+        if d.paren
+            || treat(&d)
+            || matches!(
+                d.role,
+                Role::Fillet | Role::Chamfer | Role::Inset | Role::Spacing | Role::Diameter | Role::Radius
+            )
+        {
             continue;
         }
         if let Some(a) = d.axis
@@ -241,7 +258,8 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
         }
     }
     // A list fills X, Y, Z in order of the free axes.
-    let list: Vec<usize> = dims.iter().copied().filter(|k| !r.used_dims[*k] && r.dim(*k).list.is_some() && !r.dim(*k).paren).collect();
+    let list: Vec<usize> =
+        dims.iter().copied().filter(|k| !r.used_dims[*k] && r.dim(*k).list.is_some() && !r.dim(*k).paren).collect();
     if list.len() >= 2 {
         for k in list {
             if let Some(i) = (0..3).find(|i| s[*i].is_none()) {
@@ -266,9 +284,9 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
     if let Some(k) = r.find(e, &[Role::Side], &[], &[]) {
         let v = r.dim(k).mm;
         r.used_dims[k] = true;
-        let cube = r.els[e].noun == "cube" || r.shape_of(e) == Some(ShapeHint::Rect) && r.els[e].noun == "cube";
-        for i in 0..if cube { 3 } else { 2 } {
-            s[i] = s[i].or(Some(v));
+        let cube = r.els[e].noun == "cube";
+        for x in s.iter_mut().take(if cube { 3 } else { 2 }) {
+            *x = x.or(Some(v));
         }
     }
     // A thickness fills Z, else the one free horizontal axis.
@@ -294,9 +312,12 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
 fn build(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let shape = r.shape_of(e).unwrap_or(ShapeHint::Rect);
     match shape {
-        ShapeHint::Round | ShapeHint::Ring | ShapeHint::Ngon(_) | ShapeHint::Star | ShapeHint::Ellipse | ShapeHint::Stadium => {
-            prism(r, e, shape)
-        }
+        ShapeHint::Round
+        | ShapeHint::Ring
+        | ShapeHint::Ngon(_)
+        | ShapeHint::Star
+        | ShapeHint::Ellipse
+        | ShapeHint::Stadium => prism(r, e, shape),
         ShapeHint::Rect => rect(r, e),
         ShapeHint::Cone => cone(r, e),
         ShapeHint::Sphere | ShapeHint::Hemisphere => sphere(r, e, shape == ShapeHint::Hemisphere),
@@ -308,18 +329,22 @@ fn build(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     }
 }
 
-const NOT_OUTER: &[&str] = &["inner", "bore", "hole", "pitch", "circle", "tip", "root", "counterbore", "bolt", "inscribed"];
+const NOT_OUTER: &[&str] =
+    &["inner", "bore", "hole", "pitch", "circle", "tip", "root", "counterbore", "bolt", "inscribed"];
 
 /// A profile extruded along an axis: cylinders, rings, polygons, stars, ellipses, stadiums.
 fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
-    let round = matches!(shape, ShapeHint::Round | ShapeHint::Ring | ShapeHint::Ngon(_) | ShapeHint::Star | ShapeHint::Ellipse);
+    let round =
+        matches!(shape, ShapeHint::Round | ShapeHint::Ring | ShapeHint::Ngon(_) | ShapeHint::Star | ShapeHint::Ellipse);
     let axis = axis_of(r, e, round);
     let (profile, od, id) = match shape {
         ShapeHint::Round | ShapeHint::Ring => {
             let od = r.take_diameter(e, &["outer"], &[]).or_else(|| r.take_diameter(e, &[], NOT_OUTER));
             // "of the same diameter", "has the same dimensions": as the round body before it.
             let same = if od.is_none() && (r.says(e, "same") || r.says(e, "identical")) {
-                (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.od.is_some()).map(|b| (b.od, b.id)))
+                (0..e)
+                    .rev()
+                    .find_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.od.is_some()).map(|b| (b.od, b.id)))
             } else {
                 None
             };
@@ -342,19 +367,27 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                 Some(i) if i > 0.0 && i < od && half => return half_pipe(r, e, od, i),
                 Some(i) if i > 0.0 && i < od => (Profile::Annulus { od, id: i }, od, Some(i)),
                 Some(i) => {
-                    return Err(Refusal::new(r.quote_element(e), format!("its inner diameter {i} mm does not fit inside {od} mm")));
+                    return Err(Refusal::new(
+                        r.quote_element(e),
+                        format!("its inner diameter {i} mm does not fit inside {od} mm"),
+                    ));
                 }
                 None => (Profile::Circle { d: od }, od, None),
             }
         }
-        ShapeHint::Ngon(3) if r.doc.toks.iter().any(|t| matches!(t.word(), Some("right" | "right-angle" | "right-angled"))) => {
+        ShapeHint::Ngon(3)
+            if r.doc.toks.iter().any(|t| matches!(t.word(), Some("right" | "right-angle" | "right-angled"))) =>
+        {
             return right_triangle(r, e);
         }
         ShapeHint::Ngon(n) => {
             let d = r
                 .take_diameter(e, &["circumscribed"], &[])
                 .or_else(|| r.take(e, &[Role::Bare, Role::Diameter], &["across", "corner"], &[]))
-                .or_else(|| r.take(e, &[Role::Bare, Role::Diameter, Role::Width], &["across", "flat"], &[]).map(|af| af / (std::f64::consts::PI / n as f64).cos()))
+                .or_else(|| {
+                    r.take(e, &[Role::Bare, Role::Diameter, Role::Width], &["across", "flat"], &[])
+                        .map(|af| af / (std::f64::consts::PI / n as f64).cos())
+                })
                 .or_else(|| r.take_diameter(e, &[], NOT_OUTER));
             let d = need(d, "circumscribed diameter", r, e)?;
             // A triangle stands on its base (a corner on +v); other polygons have a corner on +u.
@@ -364,9 +397,15 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
         ShapeHint::Star => {
             let tip = need(r.take_diameter(e, &["tip"], &[]), "tip diameter", r, e)?;
             let root = need(r.take_diameter(e, &["root"], &[]), "root diameter", r, e)?;
-            let teeth = r.els[e].teeth.or(r.els[e].count).ok_or_else(|| Refusal::new(r.quote_element(e), "no number of teeth is given"))?;
+            let teeth = r.els[e]
+                .teeth
+                .or(r.els[e].count)
+                .ok_or_else(|| Refusal::new(r.quote_element(e), "no number of teeth is given"))?;
             if !(3..=400).contains(&teeth) || root >= tip {
-                return Err(Refusal::new(r.quote_element(e), format!("{teeth} teeth between {root} and {tip} mm is not a gear")));
+                return Err(Refusal::new(
+                    r.quote_element(e),
+                    format!("{teeth} teeth between {root} and {tip} mm is not a gear"),
+                ));
             }
             (Profile::Star { n: teeth as usize, tip: tip / 2.0, root: root / 2.0 }, tip, None)
         }
@@ -400,7 +439,10 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
             len = r.take(e, &[Role::Width], &["face"], &[]);
         }
         // A flat part's thickness ("lying flat … (Z=0 to Z=3)") for a disc on it.
-        if len.is_none() && axis == Axis::Z && let Some(p) = part_span(r) {
+        if len.is_none()
+            && axis == Axis::Z
+            && let Some(p) = part_span(r)
+        {
             len = Some(p[1] - p[0]);
         }
     }
@@ -410,12 +452,24 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
 
 /// Adds the copies of a prism and records what it became.
 #[allow(clippy::too_many_arguments)]
-pub fn add(r: &mut Reader<'_>, e: usize, profile: Profile, axis: Axis, span: [f64; 2], od: Option<f64>, id: Option<f64>, size: Option<[f64; 2]>) -> Built {
+pub fn add(
+    r: &mut Reader<'_>,
+    e: usize,
+    profile: Profile,
+    axis: Axis,
+    span: [f64; 2],
+    od: Option<f64>,
+    id: Option<f64>,
+    size: Option<[f64; 2]>,
+) -> Built {
     let at = positions(r, e, axis).unwrap_or_else(|_| vec![[0.0, 0.0]]);
     let mut bodies = Vec::new();
     for p in &at {
         bodies.push(r.model.adds.len());
-        r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile: profile.clone(), axis, at: *p, rot: 0.0, from: span[0], to: span[1] }));
+        r.model.adds.push(Body::new(
+            r.els[e].noun.clone(),
+            Shape::Prism { profile: profile.clone(), axis, at: *p, rot: 0.0, from: span[0], to: span[1] },
+        ));
     }
     Built { axis, span, at, od, id, size, bodies, cut: false }
 }
@@ -430,7 +484,10 @@ fn rect(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             if let Some(v) = s[a.index()]
                 && (v - l).abs() > 1e-6 * l.max(1.0)
             {
-                return Err(Refusal::new(r.quote_element(e), format!("its size {v} mm and its span {}..{} along {} disagree", sp[0], sp[1], a.name())));
+                return Err(Refusal::new(
+                    r.quote_element(e),
+                    format!("its size {v} mm and its span {}..{} along {} disagree", sp[0], sp[1], a.name()),
+                ));
             }
             s[a.index()] = Some(l);
             iv[a.index()] = Some(sp);
@@ -485,7 +542,8 @@ fn rect(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 
 /// The Z span the whole part is given ("lying flat on the XY plane (Z=0 to Z=3)").
 pub fn part_span(r: &mut Reader<'_>) -> Option<[f64; 2]> {
-    let k = (0..r.doc.ranges.len()).find(|k| r.doc.ranges[*k].axis == Axis::Z && super::super::mention::is_part_range(r.doc, *k))?;
+    let k = (0..r.doc.ranges.len())
+        .find(|k| r.doc.ranges[*k].axis == Axis::Z && super::super::mention::is_part_range(r.doc, *k))?;
     r.used_ranges[k] = true;
     let rg = &r.doc.ranges[k];
     r.doc.mark_range(rg.toks.0, rg.toks.1);
@@ -493,7 +551,10 @@ pub fn part_span(r: &mut Reader<'_>) -> Option<[f64; 2]> {
 }
 
 fn cone(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    let base = r.take_diameter(e, &["base"], &[]).or_else(|| r.take_diameter(e, &["bottom"], &[])).or_else(|| r.take_diameter(e, &[], &["top", "tip"]));
+    let base = r
+        .take_diameter(e, &["base"], &[])
+        .or_else(|| r.take_diameter(e, &["bottom"], &[]))
+        .or_else(|| r.take_diameter(e, &[], &["top", "tip"]));
     let base = need(base, "base diameter", r, e)?;
     let top = r.take_diameter(e, &["top"], &[]).unwrap_or(0.0);
     let h = need(r.take(e, &[Role::Height, Role::Length], &[], &[]), "height", r, e)?;
@@ -502,7 +563,10 @@ fn cone(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let mut bodies = Vec::new();
     for p in &at {
         bodies.push(r.model.adds.len());
-        r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Cone { axis: Axis::Z, at: *p, from: span[0], to: span[1], d_from: base, d_to: top }));
+        r.model.adds.push(Body::new(
+            r.els[e].noun.clone(),
+            Shape::Cone { axis: Axis::Z, at: *p, from: span[0], to: span[1], d_from: base, d_to: top },
+        ));
     }
     Ok(Built { axis: Axis::Z, span, at, od: Some(base), id: None, size: None, bodies, cut: false })
 }
@@ -531,7 +595,12 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
                     up = false;
                     d.mark(i);
                 }
-                Some("dome") if d.word(i + 1).is_some_and(|w| matches!(w, "rising" | "pointing" | "facing" | "up" | "upward")) => d.mark(i),
+                Some("dome")
+                    if d.word(i + 1)
+                        .is_some_and(|w| matches!(w, "rising" | "pointing" | "facing" | "up" | "upward")) =>
+                {
+                    d.mark(i)
+                }
                 Some("flat") if d.is(i + 1, "face") => d.mark_range(i, i + 2),
                 _ => {}
             }
@@ -541,8 +610,23 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
     let shape = if half { Shape::Hemisphere { c, d: dia, axis: Axis::Z, up } } else { Shape::Sphere { c, d: dia } };
     let b = r.model.adds.len();
     r.model.adds.push(Body::new(r.els[e].noun.clone(), shape));
-    let span = if half && up { [z0, z0 + dia / 2.0] } else if half { [z0 - dia / 2.0, z0] } else { [z0 - dia / 2.0, z0 + dia / 2.0] };
-    Ok(Built { axis: Axis::Z, span, at: vec![[0.0, 0.0]], od: Some(dia), id: None, size: None, bodies: vec![b], cut: false })
+    let span = if half && up {
+        [z0, z0 + dia / 2.0]
+    } else if half {
+        [z0 - dia / 2.0, z0]
+    } else {
+        [z0 - dia / 2.0, z0 + dia / 2.0]
+    };
+    Ok(Built {
+        axis: Axis::Z,
+        span,
+        at: vec![[0.0, 0.0]],
+        od: Some(dia),
+        id: None,
+        size: None,
+        bodies: vec![b],
+        cut: false,
+    })
 }
 
 fn torus(r: &mut Reader<'_>, e: usize) -> Res<Built> {
@@ -562,7 +646,16 @@ fn torus(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let z = if r.centered { 0.0 } else { minor / 2.0 };
     let b = r.model.adds.len();
     r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Torus { c: [0.0, 0.0, z], axis: Axis::Z, major, minor }));
-    Ok(Built { axis: Axis::Z, span: [z - minor / 2.0, z + minor / 2.0], at: vec![[0.0, 0.0]], od: Some(major + minor), id: Some(major - minor), size: None, bodies: vec![b], cut: false })
+    Ok(Built {
+        axis: Axis::Z,
+        span: [z - minor / 2.0, z + minor / 2.0],
+        at: vec![[0.0, 0.0]],
+        od: Some(major + minor),
+        id: Some(major - minor),
+        size: None,
+        bodies: vec![b],
+        cut: false,
+    })
 }
 
 fn capsule(r: &mut Reader<'_>, e: usize) -> Res<Built> {
@@ -580,18 +673,31 @@ fn capsule(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 pub fn cylinder_with_caps(r: &mut Reader<'_>, e: usize, d: f64, l: f64) -> Res<Built> {
     let (z0, z1) = if r.centered { (-l / 2.0, l / 2.0) } else { (d / 2.0, d / 2.0 + l) };
     let mut bodies = vec![r.model.adds.len()];
-    r.model.adds.push(Body::new("cylinder", Shape::Prism { profile: Profile::Circle { d }, axis: Axis::Z, at: [0.0, 0.0], rot: 0.0, from: z0, to: z1 }));
+    r.model.adds.push(Body::new(
+        "cylinder",
+        Shape::Prism { profile: Profile::Circle { d }, axis: Axis::Z, at: [0.0, 0.0], rot: 0.0, from: z0, to: z1 },
+    ));
     bodies.push(r.model.adds.len());
     r.model.adds.push(Body::new("cap", Shape::Hemisphere { c: [0.0, 0.0, z1], d, axis: Axis::Z, up: true }));
     bodies.push(r.model.adds.len());
     r.model.adds.push(Body::new("cap", Shape::Hemisphere { c: [0.0, 0.0, z0], d, axis: Axis::Z, up: false }));
     let _ = e;
-    Ok(Built { axis: Axis::Z, span: [z0 - d / 2.0, z1 + d / 2.0], at: vec![[0.0, 0.0]], od: Some(d), id: None, size: None, bodies, cut: false })
+    Ok(Built {
+        axis: Axis::Z,
+        span: [z0 - d / 2.0, z1 + d / 2.0],
+        at: vec![[0.0, 0.0]],
+        od: Some(d),
+        id: None,
+        size: None,
+        bodies,
+        cut: false,
+    })
 }
 
 fn pyramid(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     // A rectangular frustum: two X-by-Y pairs, the base's and the top's.
-    let pairs: Vec<usize> = r.free_dims(e).into_iter().filter(|k| matches!(r.dim(*k).axis, Some(Axis::X | Axis::Y))).collect();
+    let pairs: Vec<usize> =
+        r.free_dims(e).into_iter().filter(|k| matches!(r.dim(*k).axis, Some(Axis::X | Axis::Y))).collect();
     if pairs.len() == 4 {
         let v: Vec<f64> = pairs.iter().map(|k| r.dim(*k).mm).collect();
         for k in &pairs {
@@ -600,13 +706,31 @@ fn pyramid(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         let h = need(r.take(e, &[Role::Height, Role::Length], &[], &[]), "height", r, e)?;
         let span = span(r, e, Axis::Z, Some(h))?;
         let bi = r.model.adds.len();
-        r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Loft { at: [0.0, 0.0], from: span[0], to: span[1], bottom: Profile::Rect { w: v[0], h: v[1] }, top: Profile::Rect { w: v[2], h: v[3] } }));
+        r.model.adds.push(Body::new(
+            r.els[e].noun.clone(),
+            Shape::Loft {
+                at: [0.0, 0.0],
+                from: span[0],
+                to: span[1],
+                bottom: Profile::Rect { w: v[0], h: v[1] },
+                top: Profile::Rect { w: v[2], h: v[3] },
+            },
+        ));
         for i in 0..r.doc.len() {
             if r.doc.is(i, "top") && r.doc.is(i + 1, "face") {
                 r.doc.mark_range(i, i + 2);
             }
         }
-        return Ok(Built { axis: Axis::Z, span, at: vec![[0.0, 0.0]], od: None, id: None, size: Some([v[0], v[1]]), bodies: vec![bi], cut: false });
+        return Ok(Built {
+            axis: Axis::Z,
+            span,
+            at: vec![[0.0, 0.0]],
+            od: None,
+            id: None,
+            size: Some([v[0], v[1]]),
+            bodies: vec![bi],
+            cut: false,
+        });
     }
     let s = box_sizes(r, e);
     let a = s[0].or(s[1]);
@@ -615,8 +739,20 @@ fn pyramid(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let h = need(s[2].or_else(|| r.take(e, &[Role::Height], &[], &[])), "height", r, e)?;
     let span = span(r, e, Axis::Z, Some(h))?;
     let bi = r.model.adds.len();
-    r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Pyramid { at: [0.0, 0.0], from: span[0], to: span[1], w: a, d: b }));
-    Ok(Built { axis: Axis::Z, span, at: vec![[0.0, 0.0]], od: None, id: None, size: Some([a, b]), bodies: vec![bi], cut: false })
+    r.model.adds.push(Body::new(
+        r.els[e].noun.clone(),
+        Shape::Pyramid { at: [0.0, 0.0], from: span[0], to: span[1], w: a, d: b },
+    ));
+    Ok(Built {
+        axis: Axis::Z,
+        span,
+        at: vec![[0.0, 0.0]],
+        od: None,
+        id: None,
+        size: Some([a, b]),
+        bodies: vec![bi],
+        cut: false,
+    })
 }
 
 /// A wedge: a triangle across Y (its ridge along X at the given height), extruded along X.
@@ -632,8 +768,20 @@ fn wedge(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     r.known.push(0.0);
     let bi = r.model.adds.len();
     let pts = vec![[-y / 2.0, 0.0], [y / 2.0, 0.0], [0.0, h]];
-    r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile: Profile::Poly(pts), axis: Axis::X, at: [0.0, 0.0], rot: 0.0, from: x0, to: x0 + x }));
-    Ok(Built { axis: Axis::X, span: [x0, x0 + x], at: vec![[0.0, 0.0]], od: None, id: None, size: Some([y, h]), bodies: vec![bi], cut: false })
+    r.model.adds.push(Body::new(
+        r.els[e].noun.clone(),
+        Shape::Prism { profile: Profile::Poly(pts), axis: Axis::X, at: [0.0, 0.0], rot: 0.0, from: x0, to: x0 + x },
+    ));
+    Ok(Built {
+        axis: Axis::X,
+        span: [x0, x0 + x],
+        at: vec![[0.0, 0.0]],
+        od: None,
+        id: None,
+        size: Some([y, h]),
+        bodies: vec![bi],
+        cut: false,
+    })
 }
 
 /// A right-triangle prism: legs along two axes from the right angle at the origin,
@@ -656,13 +804,32 @@ fn right_triangle(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     // In (u, v): the leg along u, the other along v.
     let (lu, lv) = if *a1 == u { (*l1, *l2) } else { (*l2, *l1) };
     let bi = r.model.adds.len();
-    r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile: Profile::Poly(vec![[0.0, 0.0], [lu, 0.0], [0.0, lv]]), axis: along, at: [0.0, 0.0], rot: 0.0, from: 0.0, to: h }));
+    r.model.adds.push(Body::new(
+        r.els[e].noun.clone(),
+        Shape::Prism {
+            profile: Profile::Poly(vec![[0.0, 0.0], [lu, 0.0], [0.0, lv]]),
+            axis: along,
+            at: [0.0, 0.0],
+            rot: 0.0,
+            from: 0.0,
+            to: h,
+        },
+    ));
     for i in 0..r.doc.len() {
         if matches!(r.doc.word(i), Some("right" | "angle" | "right-angle" | "triangle" | "leg")) {
             r.doc.mark(i);
         }
     }
-    Ok(Built { axis: along, span: [0.0, h], at: vec![[0.0, 0.0]], od: None, id: None, size: Some([lu, lv]), bodies: vec![bi], cut: false })
+    Ok(Built {
+        axis: along,
+        span: [0.0, h],
+        at: vec![[0.0, 0.0]],
+        od: None,
+        id: None,
+        size: Some([lu, lv]),
+        bodies: vec![bi],
+        cut: false,
+    })
 }
 
 /// A half pipe: a semicircular ring opening upward (+Z), extruded along its axis.
@@ -684,20 +851,34 @@ fn half_pipe(r: &mut Reader<'_>, e: usize, od: f64, id: f64) -> Res<Built> {
     let profile = Profile::Path { start: to_uv(hz[0]), segs };
     let from = if r.centered { -len / 2.0 } else { 0.0 };
     let bi = r.model.adds.len();
-    r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile, axis, at: [0.0, 0.0], rot: 0.0, from, to: from + len }));
+    r.model.adds.push(Body::new(
+        r.els[e].noun.clone(),
+        Shape::Prism { profile, axis, at: [0.0, 0.0], rot: 0.0, from, to: from + len },
+    ));
     for i in 0..r.doc.len() {
         if matches!(r.doc.word(i), Some("semicircular" | "arc" | "opening" | "upward" | "half-pipe" | "trough")) {
             r.doc.mark(i);
         }
     }
     r.known.push(ro - ri);
-    Ok(Built { axis, span: [from, from + len], at: vec![[0.0, 0.0]], od: Some(od), id: Some(id), size: None, bodies: vec![bi], cut: false })
+    Ok(Built {
+        axis,
+        span: [from, from + len],
+        at: vec![[0.0, 0.0]],
+        od: Some(od),
+        id: Some(id),
+        size: None,
+        bodies: vec![bi],
+        cut: false,
+    })
 }
 
 /// Hemispherical caps on the ends of the round body before them ("on both ends", "on
 /// top", "on the bottom"), as wide as it.
 fn caps(r: &mut Reader<'_>, e: usize) -> Res<()> {
-    let Some(p) = (0..e).rev().find(|p| r.built[*p].as_ref().is_some_and(|b| !b.cut && b.od.is_some() && b.id.is_none())) else {
+    let Some(p) =
+        (0..e).rev().find(|p| r.built[*p].as_ref().is_some_and(|b| !b.cut && b.od.is_some() && b.id.is_none()))
+    else {
         return Ok(());
     };
     let Some(b) = r.built[p].clone() else { return Ok(()) };
@@ -725,7 +906,8 @@ fn caps(r: &mut Reader<'_>, e: usize) -> Res<()> {
         }
     }
     mark_words(r, &["end", "both", "top", "bottom"]);
-    r.built[e] = Some(Built { axis: b.axis, span, at: b.at.clone(), od: Some(d), id: None, size: None, bodies, cut: false });
+    r.built[e] =
+        Some(Built { axis: b.axis, span, at: b.at.clone(), od: Some(d), id: None, size: None, bodies, cut: false });
     r.mark_element(e);
     Ok(())
 }
@@ -734,7 +916,11 @@ fn caps(r: &mut Reader<'_>, e: usize) -> Res<()> {
 /// coordinate (it runs from it), and this body stands on the base, flush with the edge.
 fn on_edge(r: &mut Reader<'_>, e: usize, size: [f64; 3]) -> Res<Option<Built>> {
     let d = r.doc;
-    let hit = r.els[e].coords.iter().copied().find(|k| !r.used_coords[*k] && d.is(d.coords[*k].tok + 3, "edge") && d.is(d.coords[*k].tok + 4, "of"));
+    let hit = r.els[e]
+        .coords
+        .iter()
+        .copied()
+        .find(|k| !r.used_coords[*k] && d.is(d.coords[*k].tok + 3, "edge") && d.is(d.coords[*k].tok + 4, "of"));
     let Some(k) = hit else { return Ok(None) };
     let c = d.coords[k].clone();
     let target = r.mentions.iter().find(|m| m.head > c.tok + 4 && m.head <= c.tok + 8).map(|m| m.elem);
@@ -766,7 +952,26 @@ fn on_edge(r: &mut Reader<'_>, e: usize, size: [f64; 3]) -> Res<Option<Built>> {
     at[ai] = c.v + size[ai] / 2.0;
     let span = [tb.span[1], tb.span[1] + size[2]];
     let bi = r.model.adds.len();
-    r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile: Profile::Rect { w: size[0], h: size[1] }, axis: Axis::Z, at, rot: 0.0, from: span[0], to: span[1] }));
+    r.model.adds.push(Body::new(
+        r.els[e].noun.clone(),
+        Shape::Prism {
+            profile: Profile::Rect { w: size[0], h: size[1] },
+            axis: Axis::Z,
+            at,
+            rot: 0.0,
+            from: span[0],
+            to: span[1],
+        },
+    ));
     r.known.push((tsize[1 - ai] - size[1 - ai]) / 2.0);
-    Ok(Some(Built { axis: Axis::Z, span, at: vec![at], od: None, id: None, size: Some([size[0], size[1]]), bodies: vec![bi], cut: false }))
+    Ok(Some(Built {
+        axis: Axis::Z,
+        span,
+        at: vec![at],
+        od: None,
+        id: None,
+        size: Some([size[0], size[1]]),
+        bodies: vec![bi],
+        cut: false,
+    }))
 }

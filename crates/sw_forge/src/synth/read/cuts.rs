@@ -67,7 +67,10 @@ fn check_cuts_something(r: &Reader<'_>, e: usize, bi: usize) -> Res<()> {
         }
     });
     if outside || swallowed {
-        return Err(Refusal::new(r.quote_element(e), "as placed by these words it would cut nothing: it lies in empty space"));
+        return Err(Refusal::new(
+            r.quote_element(e),
+            "as placed by these words it would cut nothing: it lies in empty space",
+        ));
     }
     // A cut that holds a whole body would remove it ("a 25mm bore" in a 20mm cylinder).
     let raw = c.bounds();
@@ -93,10 +96,12 @@ fn targets(r: &Reader<'_>, e: usize) -> Vec<usize> {
             if matches!(r.els[n.elem].kind, Noun::Cut(_)) && n.prep.is_none() {
                 break;
             }
-            if matches!(n.prep.as_deref(), Some("through" | "into" | "in" | "on" | "of" | "and")) || (n.prep.is_none() && out.last().is_some()) {
-                if r.built[n.elem].is_some() && !out.contains(&n.elem) {
-                    out.push(n.elem);
-                }
+            if (matches!(n.prep.as_deref(), Some("through" | "into" | "in" | "on" | "of" | "and"))
+                || (n.prep.is_none() && out.last().is_some()))
+                && r.built[n.elem].is_some()
+                && !out.contains(&n.elem)
+            {
+                out.push(n.elem);
             }
         }
     }
@@ -120,7 +125,13 @@ fn cut_axis(r: &Reader<'_>, e: usize) -> Option<Axis> {
             continue;
         }
         let (_, end) = d.sentence(m.sent);
-        let end = r.mentions.iter().filter(|n| n.sent == m.sent && n.head > m.head && n.elem != e && n.prep.is_none()).map(|n| n.start).min().unwrap_or(end);
+        let end = r
+            .mentions
+            .iter()
+            .filter(|n| n.sent == m.sent && n.head > m.head && n.elem != e && n.prep.is_none())
+            .map(|n| n.start)
+            .min()
+            .unwrap_or(end);
         for i in m.head..end.saturating_sub(1) {
             // "oriented along the X axis", "along the Y axis", "in the Y direction" — not a
             // row's "spaced 40mm apart along X".
@@ -129,7 +140,8 @@ fn cut_axis(r: &Reader<'_>, e: usize) -> Option<Axis> {
                 let pick = |j: usize| d.axis_at(j);
                 let a = if along {
                     let row = i > 0 && matches!(d.word(i - 1), Some("apart" | "spaced" | "interval"));
-                    let named = (i + 1..(i + 5).min(d.len())).any(|j| d.is(j, "axis") || d.is(j, "direction")) || d.is(i, "oriented");
+                    let named = (i + 1..(i + 5).min(d.len())).any(|j| d.is(j, "axis") || d.is(j, "direction"))
+                        || d.is(i, "oriented");
                     if row || !named { None } else { pick(i + 1).or_else(|| pick(i + 2)).or_else(|| pick(i + 3)) }
                 } else {
                     pick(i - 1)
@@ -174,7 +186,8 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let tg = targets(r, e);
     // Its axis: said; else the one its points do not name ("at (X=+12, Z=19)" → Y); else
     // across the thin side of the plate or wall it goes through; else Z.
-    let named: Vec<Axis> = r.els[e].tuples.iter().flat_map(|k| r.doc.tuples[*k].vals.iter().filter_map(|v| v.0)).collect();
+    let named: Vec<Axis> =
+        r.els[e].tuples.iter().flat_map(|k| r.doc.tuples[*k].vals.iter().filter_map(|v| v.0)).collect();
     let by_points = (named.len() >= 2).then(|| Axis::ALL.into_iter().find(|a| !named.contains(a))).flatten();
     // A plate or wall: a box at most half as thick as its next size.
     let thin = tg.iter().find_map(|t| {
@@ -191,7 +204,8 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     });
     let axis = cut_axis(r, e).or(by_points).or(thin).unwrap_or(Axis::Z);
     let count = place::count_of(r, e);
-    let radial = r.says(e, "radial") || r.says(e, "radially") || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
+    let radial =
+        r.says(e, "radial") || r.says(e, "radially") || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
     if radial && axis != Axis::Z {
         return radial_hole(r, e, d, axis, &tg);
     }
@@ -216,13 +230,24 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         let per = tg.iter().find_map(|t| r.built[*t].as_ref().filter(|b| b.at.len() > 1).map(|b| b.at.clone()));
         at = per.unwrap_or_else(|| vec![[0.0, 0.0]]);
     }
-    if count > 1 && at.len() != count as usize && !(count as usize == 1) {
-        return Err(Refusal::new(r.quote_element(e), format!("{count} of them asked for, {} placed by the words", at.len())));
+    if count > 1 && at.len() != count as usize {
+        return Err(Refusal::new(
+            r.quote_element(e),
+            format!("{count} of them asked for, {} placed by the words", at.len()),
+        ));
     }
     // Depth: blind ("8mm deep") from the top face, else through what it passes through. A
     // depth after a counterbore's or countersink's size is theirs.
-    let sink_at = r.els[e].dims.iter().map(|k| r.dim(*k)).filter(|d| d.has("counterbore") || d.has("countersink")).map(|d| d.tok).min();
-    let depth = r.find(e, &[Role::Depth], &[], &["counterbore", "countersink"]).filter(|k| sink_at.is_none_or(|s| r.dim(*k).tok < s));
+    let sink_at = r.els[e]
+        .dims
+        .iter()
+        .map(|k| r.dim(*k))
+        .filter(|d| d.has("counterbore") || d.has("countersink"))
+        .map(|d| d.tok)
+        .min();
+    let depth = r
+        .find(e, &[Role::Depth], &[], &["counterbore", "countersink"])
+        .filter(|k| sink_at.is_none_or(|s| r.dim(*k).tok < s));
     let depth = depth.map(|k| {
         r.used_dims[k] = true;
         r.dim(k).mm
@@ -230,7 +255,8 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let span = match r.take_range(e, axis) {
         Some(s) => s,
         None => {
-            let bodies: Vec<usize> = tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
+            let bodies: Vec<usize> =
+                tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
             let full = extent(r, &bodies, axis);
             let floor = tg.iter().find_map(|t| r.model.adds.get(r.built[*t].as_ref()?.bodies[0])?.shell.map(|s| s.t));
             match (depth, floor, r.says(e, "bottom")) {
@@ -242,7 +268,11 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     };
     let mut bodies = Vec::new();
     for p in &at {
-        bodies.push(push_cut(r, &r.els[e].noun.clone(), Shape::Prism { profile: Profile::Circle { d }, axis, at: *p, rot: 0.0, from: span[0], to: span[1] }));
+        bodies.push(push_cut(
+            r,
+            &r.els[e].noun.clone(),
+            Shape::Prism { profile: Profile::Circle { d }, axis, at: *p, rot: 0.0, from: span[0], to: span[1] },
+        ));
     }
     // A counterbore or countersink with them: on the face the holes open into (+ end).
     counterbore(r, e, d, axis, &at, span)?;
@@ -270,7 +300,10 @@ fn counterbore(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]]
     let depth = r.take(holder, &[Role::Depth], &[], &[]).or_else(|| r.take(e, &[Role::Depth], &["counterbore"], &[]));
     let depth = depth.ok_or_else(|| Refusal::new(r.quote_element(holder), "the counterbore's depth is not given"))?;
     if dia <= d || depth >= span[1] - span[0] {
-        return Err(Refusal::new(r.quote_element(holder), "the counterbore must be wider than its hole and shallower than the part"));
+        return Err(Refusal::new(
+            r.quote_element(holder),
+            "the counterbore must be wider than its hole and shallower than the part",
+        ));
     }
     // The hole below the counterbore stops where the counterbore begins (disjoint cuts).
     let n = at.len();
@@ -279,7 +312,18 @@ fn counterbore(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]]
         if let Some(Shape::Prism { to, .. }) = r.model.cuts.get_mut(first + k).map(|c| &mut c.shape) {
             *to = span[1] - depth;
         }
-        push_cut(r, "counterbore", Shape::Prism { profile: Profile::Circle { d: dia }, axis, at: *p, rot: 0.0, from: span[1] - depth, to: span[1] });
+        push_cut(
+            r,
+            "counterbore",
+            Shape::Prism {
+                profile: Profile::Circle { d: dia },
+                axis,
+                at: *p,
+                rot: 0.0,
+                from: span[1] - depth,
+                to: span[1],
+            },
+        );
     }
     r.known.push(span[1] - span[0]);
     if holder != e {
@@ -299,9 +343,16 @@ fn countersink(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]]
         },
         (None, None) => return Ok(()),
     };
-    let angle = place::take_angles(r, holder).first().copied().or_else(|| place::take_angles(r, e).first().copied()).unwrap_or(90.0);
+    let angle = place::take_angles(r, holder)
+        .first()
+        .copied()
+        .or_else(|| place::take_angles(r, e).first().copied())
+        .unwrap_or(90.0);
     if dia <= d || !(30.0..=150.0).contains(&angle) {
-        return Err(Refusal::new(r.quote_element(holder), "the countersink must be wider than its hole, at 30 to 150 degrees"));
+        return Err(Refusal::new(
+            r.quote_element(holder),
+            "the countersink must be wider than its hole, at 30 to 150 degrees",
+        ));
     }
     let depth = (dia - d) / 2.0 / (angle / 2.0).to_radians().tan();
     if depth >= span[1] - span[0] {
@@ -313,7 +364,11 @@ fn countersink(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]]
         if let Some(Shape::Prism { to, .. }) = r.model.cuts.get_mut(first + k).map(|c| &mut c.shape) {
             *to = span[1] - depth;
         }
-        push_cut(r, "countersink", Shape::Cone { axis, at: *p, from: span[1] - depth, to: span[1], d_from: d, d_to: dia });
+        push_cut(
+            r,
+            "countersink",
+            Shape::Cone { axis, at: *p, from: span[1] - depth, to: span[1], d_from: d, d_to: dia },
+        );
     }
     if holder != e {
         r.mark_element(holder);
@@ -336,7 +391,11 @@ fn radial_hole(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, tg: &[usize]) -
     let mut p = [0.0; 3];
     p[Axis::Z.index()] = z;
     let at = [p[u.index()], p[v.index()]];
-    let bi = push_cut(r, &r.els[e].noun.clone(), Shape::Prism { profile: Profile::Circle { d }, axis, at, rot: 0.0, from, to });
+    let bi = push_cut(
+        r,
+        &r.els[e].noun.clone(),
+        Shape::Prism { profile: Profile::Circle { d }, axis, at, rot: 0.0, from, to },
+    );
     // "at mid-height": the middle of what it passes through.
     r.known.push((zspan[0] + zspan[1]) / 2.0);
     for i in 0..r.doc.len() {
@@ -350,11 +409,17 @@ fn radial_hole(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, tg: &[usize]) -
 /// A keyway: on a shaft's outer surface, or in the wall of its bore, on the side named
 /// ("+X" unless said), as wide and deep as given, along the span given or the full length.
 fn keyway(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    let w = r.take(e, &[Role::Width], &[], &[]).ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;
-    let depth = r.take(e, &[Role::Depth], &[], &[]).ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
+    let w = r
+        .take(e, &[Role::Width], &[], &[])
+        .ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;
+    let depth = r
+        .take(e, &[Role::Depth], &[], &[])
+        .ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
     let in_bore = r.says(e, "bore");
     // The shaft or hub: the round body it is cut in.
-    let host = (0..r.els.len()).filter(|k| r.built[*k].as_ref().is_some_and(|b| !b.cut && b.axis == Axis::Z && b.od.is_some())).collect::<Vec<_>>();
+    let host = (0..r.els.len())
+        .filter(|k| r.built[*k].as_ref().is_some_and(|b| !b.cut && b.axis == Axis::Z && b.od.is_some()))
+        .collect::<Vec<_>>();
     let zspan = r.take_range(e, Axis::Z).unwrap_or_else(|| {
         let all: Vec<usize> = host.iter().filter_map(|h| r.built[*h].as_ref()).flat_map(|b| b.bodies.clone()).collect();
         extent(r, &all, Axis::Z)
@@ -364,7 +429,13 @@ fn keyway(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let mut side = (Axis::X, 1.0);
     for (a, b) in r.sentences_of(e) {
         for i in a..b.saturating_sub(1) {
-            let sign = if d.sym(i, '+') { 1.0 } else if d.sym(i, '-') { -1.0 } else { continue };
+            let sign = if d.sym(i, '+') {
+                1.0
+            } else if d.sym(i, '-') {
+                -1.0
+            } else {
+                continue;
+            };
             if let Some(ax) = d.axis_at(i + 1).filter(|ax| *ax != Axis::Z) {
                 side = (ax, sign);
                 d.mark_range(i, i + 2);
@@ -376,8 +447,16 @@ fn keyway(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         }
     }
     let (lo, hi) = if in_bore {
-        let bore = (0..r.els.len()).filter_map(|k| r.built[k].as_ref().filter(|b| b.cut && b.axis == Axis::Z && b.at.len() == 1).and_then(|b| b.od)).fold(f64::NAN, f64::max);
-        let bore = if bore.is_finite() { bore } else { host.iter().filter_map(|h| r.built[*h].as_ref()?.id).fold(f64::NAN, f64::max) };
+        let bore = (0..r.els.len())
+            .filter_map(|k| {
+                r.built[k].as_ref().filter(|b| b.cut && b.axis == Axis::Z && b.at.len() == 1).and_then(|b| b.od)
+            })
+            .fold(f64::NAN, f64::max);
+        let bore = if bore.is_finite() {
+            bore
+        } else {
+            host.iter().filter_map(|h| r.built[*h].as_ref()?.id).fold(f64::NAN, f64::max)
+        };
         if !bore.is_finite() {
             return Err(Refusal::new(r.quote_element(e), "a keyway in a bore, but no bore is given"));
         }
@@ -397,19 +476,45 @@ fn keyway(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let (u, _) = Axis::Z.uv();
     let at = if side.0 == u { [side.1 * rad, 0.0] } else { [0.0, side.1 * rad] };
     let (pw, ph) = if side.0 == u { (hi - lo, w) } else { (w, hi - lo) };
-    let bi = push_cut(r, "keyway", Shape::Prism { profile: Profile::Rect { w: pw, h: ph }, axis: Axis::Z, at, rot: 0.0, from: zspan[0], to: zspan[1] });
-    Ok(Built { axis: Axis::Z, span: zspan, at: vec![at], od: None, id: None, size: Some([pw, ph]), bodies: vec![bi], cut: true })
+    let bi = push_cut(
+        r,
+        "keyway",
+        Shape::Prism {
+            profile: Profile::Rect { w: pw, h: ph },
+            axis: Axis::Z,
+            at,
+            rot: 0.0,
+            from: zspan[0],
+            to: zspan[1],
+        },
+    );
+    Ok(Built {
+        axis: Axis::Z,
+        span: zspan,
+        at: vec![at],
+        od: None,
+        id: None,
+        size: Some([pw, ph]),
+        bodies: vec![bi],
+        cut: true,
+    })
 }
 
 /// A slot: cut from a face to a depth across the part ("a 10mm wide slot (in X) is cut from
 /// the top face, 15mm deep, … running the full Y width"), or a stadium-shaped slot through
 /// a plate ("a 30mm long, 8mm wide slot through the plate").
 fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    let w = r.take(e, &[Role::Width], &[], &[]).ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;
+    let w = r
+        .take(e, &[Role::Width], &[], &[])
+        .ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;
     let len = r.take(e, &[Role::Length], &[], &[]);
     let depth = r.take(e, &[Role::Depth], &[], &[]);
     let across = r.find(e, &[Role::Width], &[], &[]).map(|k| r.dim(k).axis);
-    let w_axis = r.els[e].dims.iter().find_map(|k| (r.dim(*k).role == Role::Width).then(|| r.dim(*k).axis).flatten()).unwrap_or(Axis::X);
+    let w_axis = r.els[e]
+        .dims
+        .iter()
+        .find_map(|k| (r.dim(*k).role == Role::Width).then(|| r.dim(*k).axis).flatten())
+        .unwrap_or(Axis::X);
     let _ = across;
     let b = r.model.bounds();
     let at_pts = place::points(r, e, Axis::Z)?;
@@ -421,7 +526,18 @@ fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             let cy = if w_axis == Axis::X { (b[0][1] + b[1][1]) / 2.0 } else { c[1] };
             let cx = if w_axis == Axis::X { c[0] } else { (b[0][0] + b[1][0]) / 2.0 };
             let span = [b[1][2] - dp, b[1][2]];
-            let bi = push_cut(r, "slot", Shape::Prism { profile: Profile::Rect { w: sx, h: sy }, axis: Axis::Z, at: [cx, cy], rot: 0.0, from: span[0], to: span[1] });
+            let bi = push_cut(
+                r,
+                "slot",
+                Shape::Prism {
+                    profile: Profile::Rect { w: sx, h: sy },
+                    axis: Axis::Z,
+                    at: [cx, cy],
+                    rot: 0.0,
+                    from: span[0],
+                    to: span[1],
+                },
+            );
             r.known.push(span[0]);
             r.known.push((span[0] + b[0][2]) / 2.0);
             r.known.push((span[0] + span[1]) / 2.0);
@@ -430,7 +546,16 @@ fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
                     r.doc.mark_range(i.saturating_sub(3), i + 1);
                 }
             }
-            Ok(Built { axis: Axis::Z, span, at: vec![[cx, cy]], od: None, id: None, size: Some([sx, sy]), bodies: vec![bi], cut: true })
+            Ok(Built {
+                axis: Axis::Z,
+                span,
+                at: vec![[cx, cy]],
+                od: None,
+                id: None,
+                size: Some([sx, sy]),
+                bodies: vec![bi],
+                cut: true,
+            })
         }
         (dp, Some(l)) => {
             if w >= l {
@@ -442,9 +567,24 @@ fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             };
             let rect = r.says(e, "rectangular");
             let profile = if rect { Profile::Rect { w: l, h: w } } else { Profile::Stadium { l, w } };
-            let rot = if r.els[e].dims.iter().any(|k| r.dim(*k).role == Role::Length && r.dim(*k).axis == Some(Axis::Y)) { 90.0 } else { 0.0 };
-            let bi = push_cut(r, "slot", Shape::Prism { profile, axis: Axis::Z, at: c, rot, from: span[0], to: span[1] });
-            Ok(Built { axis: Axis::Z, span, at: vec![c], od: None, id: None, size: Some([l, w]), bodies: vec![bi], cut: true })
+            let rot = if r.els[e].dims.iter().any(|k| r.dim(*k).role == Role::Length && r.dim(*k).axis == Some(Axis::Y))
+            {
+                90.0
+            } else {
+                0.0
+            };
+            let bi =
+                push_cut(r, "slot", Shape::Prism { profile, axis: Axis::Z, at: c, rot, from: span[0], to: span[1] });
+            Ok(Built {
+                axis: Axis::Z,
+                span,
+                at: vec![c],
+                od: None,
+                id: None,
+                size: Some([l, w]),
+                bodies: vec![bi],
+                cut: true,
+            })
         }
         (None, None) => Err(Refusal::new(r.quote_element(e), "a slot needs its length, or its depth from a face")),
     }
@@ -467,32 +607,68 @@ fn groove(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         }
         _ => {
             // Around a round body, at a height.
-            let w = r.take(e, &[Role::Width], &[], &[]).ok_or_else(|| Refusal::new(r.quote_element(e), "a groove needs its inner and outer diameters, or its width and depth"))?;
+            let w = r.take(e, &[Role::Width], &[], &[]).ok_or_else(|| {
+                Refusal::new(r.quote_element(e), "a groove needs its inner and outer diameters, or its width and depth")
+            })?;
             let dp = depth.ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
-            let host = (0..r.els.len()).filter_map(|k| r.built[k].as_ref().filter(|b| !b.cut && b.od.is_some())).map(|b| b.od.unwrap_or(0.0)).fold(0.0, f64::max);
-            let z = r.take_coord(e, Axis::Z).ok_or_else(|| Refusal::new(r.quote_element(e), "where along the shaft is not given (at Z=…)"))?;
+            let host = (0..r.els.len())
+                .filter_map(|k| r.built[k].as_ref().filter(|b| !b.cut && b.od.is_some()))
+                .map(|b| b.od.unwrap_or(0.0))
+                .fold(0.0, f64::max);
+            let z = r
+                .take_coord(e, Axis::Z)
+                .ok_or_else(|| Refusal::new(r.quote_element(e), "where along the shaft is not given (at Z=…)"))?;
             (host + 2.0 * EXTRA, host - 2.0 * dp, [z - w / 2.0, z + w / 2.0])
         }
     };
-    let bi = push_cut(r, "groove", Shape::Prism { profile: Profile::Annulus { od, id }, axis: Axis::Z, at: [0.0, 0.0], rot: 0.0, from: span[0], to: span[1] });
-    Ok(Built { axis: Axis::Z, span, at: vec![[0.0, 0.0]], od: Some(od), id: Some(id), size: None, bodies: vec![bi], cut: true })
+    let bi = push_cut(
+        r,
+        "groove",
+        Shape::Prism {
+            profile: Profile::Annulus { od, id },
+            axis: Axis::Z,
+            at: [0.0, 0.0],
+            rot: 0.0,
+            from: span[0],
+            to: span[1],
+        },
+    );
+    Ok(Built {
+        axis: Axis::Z,
+        span,
+        at: vec![[0.0, 0.0]],
+        od: Some(od),
+        id: Some(id),
+        size: None,
+        bodies: vec![bi],
+        cut: true,
+    })
 }
 
 /// A pocket, recess or socket cut into a face: hexagonal ("6.93mm across corners"),
 /// round or rectangular, to a depth, in the top face of the body named (or of the part).
 fn pocket(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let shape = r.els[e].shape;
-    let depth = r.take(e, &[Role::Depth], &[], &[]).ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
+    let depth = r
+        .take(e, &[Role::Depth], &[], &[])
+        .ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
     let profile = match shape {
         Some(ShapeHint::Ngon(n)) => {
             let d = r
                 .take(e, &[Role::Bare, Role::Diameter], &["across", "corner"], &[])
                 .or_else(|| r.take_diameter(e, &["circumscribed"], &[]))
-                .or_else(|| r.take(e, &[Role::Bare, Role::Width], &["across", "flat"], &[]).map(|af| af / (std::f64::consts::PI / n as f64).cos()));
-            let d = d.ok_or_else(|| Refusal::new(r.quote_element(e), "its size across corners (or flats) is not given"))?;
+                .or_else(|| {
+                    r.take(e, &[Role::Bare, Role::Width], &["across", "flat"], &[])
+                        .map(|af| af / (std::f64::consts::PI / n as f64).cos())
+                });
+            let d =
+                d.ok_or_else(|| Refusal::new(r.quote_element(e), "its size across corners (or flats) is not given"))?;
             Profile::Ngon { n, d, phase: 0.0 }
         }
-        Some(ShapeHint::Round) => Profile::Circle { d: r.take_diameter(e, &[], &[]).ok_or_else(|| Refusal::new(r.quote_element(e), "no diameter is given for it"))? },
+        Some(ShapeHint::Round) => Profile::Circle {
+            d: r.take_diameter(e, &[], &[])
+                .ok_or_else(|| Refusal::new(r.quote_element(e), "no diameter is given for it"))?,
+        },
         _ => {
             if let Some(dm) = r.take_diameter(e, &[], &[]) {
                 Profile::Circle { d: dm }
@@ -501,7 +677,12 @@ fn pocket(r: &mut Reader<'_>, e: usize) -> Res<Built> {
                 let w = r.take(e, &[Role::Width, Role::Bare], &[], &[]);
                 match (l, w) {
                     (Some(l), Some(w)) => Profile::Rect { w: l, h: w },
-                    _ => return Err(Refusal::new(r.quote_element(e), "its size is not given (a diameter, or length and width)")),
+                    _ => {
+                        return Err(Refusal::new(
+                            r.quote_element(e),
+                            "its size is not given (a diameter, or length and width)",
+                        ));
+                    }
                 }
             }
         }
@@ -513,7 +694,11 @@ fn pocket(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let z = extent(r, &bodies, Axis::Z);
     let span = if bottom { [z[0], z[0] + depth] } else { [z[1] - depth, z[1]] };
     let at = place::points(r, e, Axis::Z)?.first().copied().unwrap_or([0.0, 0.0]);
-    let bi = push_cut(r, &r.els[e].noun.clone(), Shape::Prism { profile, axis: Axis::Z, at, rot: 0.0, from: span[0], to: span[1] });
+    let bi = push_cut(
+        r,
+        &r.els[e].noun.clone(),
+        Shape::Prism { profile, axis: Axis::Z, at, rot: 0.0, from: span[0], to: span[1] },
+    );
     let _ = Tk::Sym('.');
     Ok(Built { axis: Axis::Z, span, at: vec![at], od: None, id: None, size: None, bodies: vec![bi], cut: true })
 }

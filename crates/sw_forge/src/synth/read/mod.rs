@@ -120,17 +120,33 @@ pub fn read(doc: &Doc) -> Res<Model> {
 fn join_pipes(r: &mut Reader<'_>) {
     use super::profile::Profile;
     use super::solid::{Body, Shape};
-    let rings: Vec<usize> = (0..r.model.adds.len()).filter(|i| matches!(&r.model.adds[*i].shape, Shape::Prism { profile: Profile::Annulus { .. }, .. })).collect();
+    let rings: Vec<usize> = (0..r.model.adds.len())
+        .filter(|i| matches!(&r.model.adds[*i].shape, Shape::Prism { profile: Profile::Annulus { .. }, .. }))
+        .collect();
     let meets = |a: usize, b: usize| {
         let (p, q) = (r.model.adds[a].bounds(), r.model.adds[b].bounds());
         (0..3).all(|k| p[0][k] < q[1][k] - 1e-9 && q[0][k] < p[1][k] - 1e-9)
     };
-    let crossing: Vec<usize> = rings.iter().copied().filter(|a| rings.iter().any(|b| b != a && meets(*a, *b) && r.model.adds[*a].shape.axis() != r.model.adds[*b].shape.axis())).collect();
+    let crossing: Vec<usize> = rings
+        .iter()
+        .copied()
+        .filter(|a| {
+            rings
+                .iter()
+                .any(|b| b != a && meets(*a, *b) && r.model.adds[*a].shape.axis() != r.model.adds[*b].shape.axis())
+        })
+        .collect();
     for i in crossing {
-        let Shape::Prism { profile: Profile::Annulus { od, id }, axis, at, rot, from, to } = r.model.adds[i].shape.clone() else { continue };
+        let Shape::Prism { profile: Profile::Annulus { od, id }, axis, at, rot, from, to } =
+            r.model.adds[i].shape.clone()
+        else {
+            continue;
+        };
         r.model.adds[i].shape = Shape::Prism { profile: Profile::Circle { d: od }, axis, at, rot, from, to };
         let label = format!("{} bore", r.model.adds[i].label);
-        r.model.cuts.push(Body::new(label, Shape::Prism { profile: Profile::Circle { d: id }, axis, at, rot, from, to }));
+        r.model
+            .cuts
+            .push(Body::new(label, Shape::Prism { profile: Profile::Circle { d: id }, axis, at, rot, from, to }));
     }
 }
 
@@ -187,7 +203,8 @@ impl Reader<'_> {
 
     /// The element's span along `axis` ("Z=0 to Z=10"), marking it used.
     pub fn take_range(&mut self, e: usize, axis: Axis) -> Option<[f64; 2]> {
-        let k = self.els[e].ranges.iter().copied().find(|k| !self.used_ranges[*k] && self.doc.ranges[*k].axis == axis)?;
+        let k =
+            self.els[e].ranges.iter().copied().find(|k| !self.used_ranges[*k] && self.doc.ranges[*k].axis == axis)?;
         self.used_ranges[k] = true;
         let r = &self.doc.ranges[k];
         self.doc.mark_range(r.toks.0, r.toks.1);
@@ -195,7 +212,8 @@ impl Reader<'_> {
     }
 
     pub fn take_coord(&mut self, e: usize, axis: Axis) -> Option<f64> {
-        let k = self.els[e].coords.iter().copied().find(|k| !self.used_coords[*k] && self.doc.coords[*k].axis == axis)?;
+        let k =
+            self.els[e].coords.iter().copied().find(|k| !self.used_coords[*k] && self.doc.coords[*k].axis == axis)?;
         self.used_coords[k] = true;
         let c = &self.doc.coords[k];
         self.doc.mark_range(c.tok, c.tok + 3);
@@ -223,7 +241,8 @@ impl Reader<'_> {
             return Some(ShapeHint::Star);
         }
         // An angle bracket (or iron) is an L.
-        if matches!(el.noun.as_str(), "bracket" | "iron" | "profile") && (el.has_mod("angle") || el.has_mod("l-shaped")) {
+        if matches!(el.noun.as_str(), "bracket" | "iron" | "profile") && (el.has_mod("angle") || el.has_mod("l-shaped"))
+        {
             return Some(ShapeHint::Section(super::lexicon::Section::L));
         }
         // A tapered or truncated rectangular block is a rectangular frustum.
@@ -231,7 +250,8 @@ impl Reader<'_> {
             return Some(ShapeHint::Pyramid);
         }
         // A rectangular or square tube or pipe is a hollow box section.
-        if matches!(el.noun.as_str(), "tube" | "pipe" | "sleeve") && (el.has_mod("rectangular") || el.has_mod("square")) {
+        if matches!(el.noun.as_str(), "tube" | "pipe" | "sleeve") && (el.has_mod("rectangular") || el.has_mod("square"))
+        {
             return Some(ShapeHint::Section(super::lexicon::Section::RectTube));
         }
         // A named solid ("cone", "sphere", "gear") keeps its kind; "hollow cylinder" is a ring.

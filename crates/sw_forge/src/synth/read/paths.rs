@@ -127,7 +127,10 @@ fn revolve(r: &mut Reader<'_>) -> Res<()> {
     }
     out.dedup_by(|p, q| (p[0] - q[0]).abs() < 1e-9 && (p[1] - q[1]).abs() < 1e-9);
     if out.len() < 2 || out.iter().any(|p| p[0] < 0.0) {
-        return Err(Refusal::new(d.quote(a, b.saturating_sub(1)), "the profile needs at least two points at radii of zero or more"));
+        return Err(Refusal::new(
+            d.quote(a, b.saturating_sub(1)),
+            "the profile needs at least two points at radii of zero or more",
+        ));
     }
     // Closed by the words, else through the axis.
     let closed = (a..b).any(|i| d.is(i, "closed"));
@@ -182,7 +185,11 @@ fn revolve(r: &mut Reader<'_>) -> Res<()> {
     // The profile's words are read: its reference nouns ("from the bore", "(bottom flange)",
     // "the V-groove root") and the words naming the points.
     for i in a..b {
-        if d.word(i).is_some_and(|w| super::super::lexicon::noun(w).is_some() || super::super::doc::QUALS.contains(&w) || matches!(w, "v-groove" | "back" | "closed" | "inward" | "outward" | "further" | "straight")) {
+        if d.word(i).is_some_and(|w| {
+            super::super::lexicon::noun(w).is_some()
+                || super::super::doc::QUALS.contains(&w)
+                || matches!(w, "v-groove" | "back" | "closed" | "inward" | "outward" | "further" | "straight")
+        }) {
             d.mark(i);
         }
     }
@@ -206,15 +213,20 @@ fn loft(r: &mut Reader<'_>) -> Res<()> {
     let (_, b) = d.sentence(d.sent[at]);
     let (a, _) = d.sentence(d.sent[at]);
     // Two sections after "from" … "to": a rectangle (two listed lengths) or a circle.
-    let from = d.find("from", at, b).ok_or_else(|| Refusal::new(d.quote(at, at), "a loft needs its two sections: from … to …"))?;
-    let to = d.find("to", from, b).ok_or_else(|| Refusal::new(d.quote(at, at), "a loft needs its two sections: from … to …"))?;
+    let from = d
+        .find("from", at, b)
+        .ok_or_else(|| Refusal::new(d.quote(at, at), "a loft needs its two sections: from … to …"))?;
+    let to = d
+        .find("to", from, b)
+        .ok_or_else(|| Refusal::new(d.quote(at, at), "a loft needs its two sections: from … to …"))?;
     let section = |r: &mut Reader<'_>, lo: usize, hi: usize| -> Option<(Profile, f64)> {
         let z = r.doc.coords.iter().position(|c| c.tok >= lo && c.tok < hi && c.axis == Axis::Z)?;
         let zv = r.doc.coords[z].v;
         r.used_coords[z] = true;
         let ct = r.doc.coords[z].tok;
         r.doc.mark_range(ct, ct + 3);
-        let dims: Vec<usize> = (0..r.doc.dims.len()).filter(|k| r.doc.dims[*k].tok >= lo && r.doc.dims[*k].tok < hi).collect();
+        let dims: Vec<usize> =
+            (0..r.doc.dims.len()).filter(|k| r.doc.dims[*k].tok >= lo && r.doc.dims[*k].tok < hi).collect();
         let is = |w: &str| (lo..hi).any(|i| r.doc.is(i, w));
         let p = if is("rectangle") || is("square") {
             let [x, y] = dims.as_slice() else { return None };
@@ -240,16 +252,31 @@ fn loft(r: &mut Reader<'_>) -> Res<()> {
     let stop = (to..b).find(|i| d.sym(*i, ';') || d.sym(*i, ')')).unwrap_or(b);
     let s1 = section(r, to, stop);
     let (Some((p0, z0)), Some((p1, z1))) = (s0, s1) else {
-        return Err(Refusal::new(d.quote(from, b.saturating_sub(1)), "a loft's sections must each be a rectangle (A x B) or a circle, at a Z"));
+        return Err(Refusal::new(
+            d.quote(from, b.saturating_sub(1)),
+            "a loft's sections must each be a rectangle (A x B) or a circle, at a Z",
+        ));
     };
     if z1 <= z0 {
-        return Err(Refusal::new(d.quote(from, b.saturating_sub(1)), "a loft must rise from its first section to its second"));
+        return Err(Refusal::new(
+            d.quote(from, b.saturating_sub(1)),
+            "a loft must rise from its first section to its second",
+        ));
     }
     let bi = r.model.adds.len();
     r.model.adds.push(Body::new("transition", Shape::Loft { at: [0.0, 0.0], from: z0, to: z1, bottom: p0, top: p1 }));
     // The sentence's own element (the transition) is this body.
     if let Some(e) = r.mentions.iter().find(|m| m.head >= a && m.head < b).map(|m| m.elem) {
-        r.built[e] = Some(Built { axis: Axis::Z, span: [z0, z1], at: vec![[0.0, 0.0]], od: None, id: None, size: None, bodies: vec![bi], cut: false });
+        r.built[e] = Some(Built {
+            axis: Axis::Z,
+            span: [z0, z1],
+            at: vec![[0.0, 0.0]],
+            od: None,
+            id: None,
+            size: None,
+            bodies: vec![bi],
+            cut: false,
+        });
         r.mark_element(e);
     }
     d.mark(at);
@@ -263,11 +290,16 @@ fn bend(r: &mut Reader<'_>) -> Res<()> {
     let d = r.doc;
     let t = title(r);
     // The pipe's diameters: the title's or a pipe element's.
-    let holder = (0..r.els.len()).find(|e| r.find(*e, &[Role::Diameter, Role::Radius], &["outer"], &[]).is_some()).unwrap_or(t);
-    let od = r.take_diameter(holder, &["outer"], &[]).ok_or_else(|| Refusal::new(r.quote_element(t), "no outer diameter is given for the pipe"))?;
+    let holder =
+        (0..r.els.len()).find(|e| r.find(*e, &[Role::Diameter, Role::Radius], &["outer"], &[]).is_some()).unwrap_or(t);
+    let od = r
+        .take_diameter(holder, &["outer"], &[])
+        .ok_or_else(|| Refusal::new(r.quote_element(t), "no outer diameter is given for the pipe"))?;
     let id = r.take_diameter(holder, &["inner"], &[]).unwrap_or(0.0);
     // The bend radius: a radius qualified by arc/bend, or "of 40mm radius".
-    let rk = (0..d.dims.len()).find(|k| !r.used_dims[*k] && d.dims[*k].role == Role::Radius && !d.dims[*k].has("outer") && !d.dims[*k].has("inner"));
+    let rk = (0..d.dims.len()).find(|k| {
+        !r.used_dims[*k] && d.dims[*k].role == Role::Radius && !d.dims[*k].has("outer") && !d.dims[*k].has("inner")
+    });
     let Some(rk) = rk else { return Err(Refusal::new(r.quote_element(t), "no bend radius is given")) };
     r.used_dims[rk] = true;
     let radius = d.dims[rk].mm;
@@ -304,16 +336,41 @@ fn bend(r: &mut Reader<'_>) -> Res<()> {
             d.mark(i);
         }
     }
-    super::bodies::mark_words(r, &["quarter-circle", "semicircular", "arc", "u-bend", "elbow", "bend", "swept", "sweeping", "first", "quadrant", "leg", "parallel"]);
+    super::bodies::mark_words(
+        r,
+        &[
+            "quarter-circle",
+            "semicircular",
+            "arc",
+            "u-bend",
+            "elbow",
+            "bend",
+            "swept",
+            "sweeping",
+            "first",
+            "quadrant",
+            "leg",
+            "parallel",
+        ],
+    );
     // Start heading and the way it turns: "heading in the +Z direction", "toward the +X".
     let mut dirs: Vec<(usize, Axis, f64)> = Vec::new();
     for i in 0..d.len().saturating_sub(1) {
-        let sign = if d.sym(i, '+') { 1.0 } else if d.sym(i, '-') { -1.0 } else { continue };
+        let sign = if d.sym(i, '+') {
+            1.0
+        } else if d.sym(i, '-') {
+            -1.0
+        } else {
+            continue;
+        };
         if let Some(a) = d.axis_at(i + 1) {
             dirs.push((i, a, sign));
         }
     }
-    let heading = dirs.first().copied().ok_or_else(|| Refusal::new(r.quote_element(t), "the bend's start heading (+X, +Z …) is not given"))?;
+    let heading = dirs
+        .first()
+        .copied()
+        .ok_or_else(|| Refusal::new(r.quote_element(t), "the bend's start heading (+X, +Z …) is not given"))?;
     // The way it turns: a direction on another axis, else toward the end point given
     // ("returning down to (X=70, Z=0)").
     let toward_end = || {
@@ -322,7 +379,12 @@ fn bend(r: &mut Reader<'_>) -> Res<()> {
             Some((tu.toks.0, v.0.unwrap_or(Axis::X), v.1.signum()))
         })
     };
-    let turn = dirs.iter().copied().find(|x| x.1 != heading.1).or_else(toward_end).ok_or_else(|| Refusal::new(r.quote_element(t), "the way the bend turns (toward +X …) is not given"))?;
+    let turn = dirs
+        .iter()
+        .copied()
+        .find(|x| x.1 != heading.1)
+        .or_else(toward_end)
+        .ok_or_else(|| Refusal::new(r.quote_element(t), "the way the bend turns (toward +X …) is not given"))?;
     for x in &dirs {
         d.mark_range(x.0, x.0 + 2);
     }
@@ -350,7 +412,16 @@ fn bend(r: &mut Reader<'_>) -> Res<()> {
     r.known.push(b[1][v.index()] - radius * 0.0);
     let bi = r.model.adds.len();
     r.model.adds.push(Body::new("bend", shape));
-    r.built[t] = Some(Built { axis: v, span: [0.0, 0.0], at: vec![[0.0, 0.0]], od: Some(od), id: Some(id), size: None, bodies: vec![bi], cut: false });
+    r.built[t] = Some(Built {
+        axis: v,
+        span: [0.0, 0.0],
+        at: vec![[0.0, 0.0]],
+        od: Some(od),
+        id: Some(id),
+        size: None,
+        bodies: vec![bi],
+        cut: false,
+    });
     r.mark_element(t);
     if holder != t {
         r.mark_element(holder);
@@ -364,7 +435,12 @@ fn bend(r: &mut Reader<'_>) -> Res<()> {
 /// Whether an element is a set of arms (or spokes) around a hub.
 pub fn is_radial(r: &Reader<'_>, e: usize) -> bool {
     let el = &r.els[e];
-    matches!(el.noun.as_str(), "arm" | "spoke" | "rib" | "leg" | "fin") && el.count.is_some_and(|c| c >= 2) && (!el.angles.is_empty() || r.says(e, "outward") || r.says(e, "radially") || r.doc.toks.iter().any(|t| t.kind == Tk::Sym('±')))
+    matches!(el.noun.as_str(), "arm" | "spoke" | "rib" | "leg" | "fin")
+        && el.count.is_some_and(|c| c >= 2)
+        && (!el.angles.is_empty()
+            || r.says(e, "outward")
+            || r.says(e, "radially")
+            || r.doc.toks.iter().any(|t| t.kind == Tk::Sym('±')))
         || (el.noun == "spoke" && el.count.is_some_and(|c| c >= 2))
 }
 
@@ -386,7 +462,11 @@ pub fn radial(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         if pm("y") {
             v.extend([90.0, 270.0]);
         }
-        angles = if v.len() == count as usize { v } else { (0..count).map(|i| 360.0 * f64::from(i) / f64::from(count)).collect() };
+        angles = if v.len() == count as usize {
+            v
+        } else {
+            (0..count).map(|i| 360.0 * f64::from(i) / f64::from(count)).collect()
+        };
     }
     if angles.len() != count as usize {
         return Err(Refusal::new(r.quote_element(e), format!("{} directions for {count} of them", angles.len())));
@@ -399,9 +479,15 @@ pub fn radial(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             from_centre.push((k, r.dim(k).mm));
         }
     }
-    let width = r.take(e, &[Role::Width], &[], &[]).ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for them"))?;
-    let hub = (0..e).rev().find(|p| r.built[*p].is_some() && (r.els[*p].noun == "hub" || r.els[*p].has_mod("hub") || r.els[*p].has_mod("central")));
-    let hub_r = hub.and_then(|h| r.built[h].as_ref()).map(|b| b.od.map_or_else(|| b.size.map_or(0.0, |s| s[0].min(s[1]) / 2.0), |d| d / 2.0));
+    let width = r
+        .take(e, &[Role::Width], &[], &[])
+        .ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for them"))?;
+    let hub = (0..e).rev().find(|p| {
+        r.built[*p].is_some() && (r.els[*p].noun == "hub" || r.els[*p].has_mod("hub") || r.els[*p].has_mod("central"))
+    });
+    let hub_r = hub
+        .and_then(|h| r.built[h].as_ref())
+        .map(|b| b.od.map_or_else(|| b.size.map_or(0.0, |s| s[0].min(s[1]) / 2.0), |d| d / 2.0));
     let (r0, r1) = match from_centre.as_slice() {
         [(k0, a), (k1, b)] => {
             r.used_dims[*k0] = true;
@@ -413,7 +499,9 @@ pub fn radial(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             (hub_r.unwrap_or(0.0), *b)
         }
         _ => {
-            let l = r.take(e, &[Role::Length], &[], &[]).ok_or_else(|| Refusal::new(r.quote_element(e), "their span from the centre is not given"))?;
+            let l = r
+                .take(e, &[Role::Length], &[], &[])
+                .ok_or_else(|| Refusal::new(r.quote_element(e), "their span from the centre is not given"))?;
             let h = hub_r.ok_or_else(|| Refusal::new(r.quote_element(e), "they start at no hub of known size"))?;
             (h, h + l)
         }
@@ -423,7 +511,9 @@ pub fn radial(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let thick = r.take(e, &[Role::Height, Role::Thickness], &[], &[]);
     let span = match thick {
         Some(t) => [0.0, t],
-        None => part_span(r).or_else(|| hub.and_then(|h| r.built[h].as_ref()).map(|b| b.span)).ok_or_else(|| Refusal::new(r.quote_element(e), "no thickness is given for them"))?,
+        None => part_span(r)
+            .or_else(|| hub.and_then(|h| r.built[h].as_ref()).map(|b| b.span))
+            .ok_or_else(|| Refusal::new(r.quote_element(e), "no thickness is given for them"))?,
     };
     // Join: into a round hub (its corners inside the disc) and into a rim they reach.
     let mut inner = r0;
@@ -436,7 +526,8 @@ pub fn radial(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         }
     }
     let mut outer = r1;
-    let rim = (0..r.els.len()).find(|p| r.built[*p].as_ref().is_some_and(|b| b.id.is_some_and(|i| (i / 2.0 - r1).abs() < 1e-6)));
+    let rim = (0..r.els.len())
+        .find(|p| r.built[*p].as_ref().is_some_and(|b| b.id.is_some_and(|i| (i / 2.0 - r1).abs() < 1e-6)));
     if let Some(rim) = rim
         && let Some(b) = &r.built[rim]
         && let (Some(od), Some(id)) = (b.od, b.id)
@@ -451,7 +542,17 @@ pub fn radial(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     for a in &angles {
         let p = [mid * a.to_radians().cos(), mid * a.to_radians().sin()];
         bodies.push(r.model.adds.len());
-        r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Prism { profile: Profile::Rect { w: len, h: width }, axis: Axis::Z, at: p, rot: *a, from: span[0], to: span[1] }));
+        r.model.adds.push(Body::new(
+            r.els[e].noun.clone(),
+            Shape::Prism {
+                profile: Profile::Rect { w: len, h: width },
+                axis: Axis::Z,
+                at: p,
+                rot: *a,
+                from: span[0],
+                to: span[1],
+            },
+        ));
         at.push([r1 * a.to_radians().cos(), r1 * a.to_radians().sin()]);
         r.known_points.push([r1 * a.to_radians().cos(), r1 * a.to_radians().sin(), span[0]]);
     }

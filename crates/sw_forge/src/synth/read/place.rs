@@ -9,10 +9,42 @@ use super::{Reader, Refusal, Res};
 
 /// Words that name the shape of a section ("an equilateral triangle cross-section").
 const SECTION_WORDS: &[&str] = &[
-    "triangle", "rectangle", "square", "circle", "hexagon", "octagon", "pentagon", "polygon", "star", "u-shaped",
-    "t-shaped", "l-shaped", "z-shaped", "i-shaped", "semicircular", "circular", "rectangular", "hexagonal",
-    "triangular", "annular", "equilateral", "right", "rounded-rectangle", "star-polygon", "tooth", "v-shaped", "t", "i",
-    "l", "u", "z", "c", "h", "shaped", "outer", "inner",
+    "triangle",
+    "rectangle",
+    "square",
+    "circle",
+    "hexagon",
+    "octagon",
+    "pentagon",
+    "polygon",
+    "star",
+    "u-shaped",
+    "t-shaped",
+    "l-shaped",
+    "z-shaped",
+    "i-shaped",
+    "semicircular",
+    "circular",
+    "rectangular",
+    "hexagonal",
+    "triangular",
+    "annular",
+    "equilateral",
+    "right",
+    "rounded-rectangle",
+    "star-polygon",
+    "tooth",
+    "v-shaped",
+    "t",
+    "i",
+    "l",
+    "u",
+    "z",
+    "c",
+    "h",
+    "shaped",
+    "outer",
+    "inner",
 ];
 
 /// Reads the words that orient the whole part, describe its section in words, or
@@ -32,7 +64,10 @@ pub fn read_frame(r: &mut Reader<'_>) {
         // "resembling a hockey puck", "shaped like a coin": a likeness, up to the clause's end.
         if matches!(d.word(i), Some("resembling" | "like")) {
             let mut j = i;
-            while j < d.len() && !(d.toks[j].kind == super::super::text::Tk::Sym(',') || d.toks[j].kind == super::super::text::Tk::Sym('.')) {
+            while j < d.len()
+                && !(d.toks[j].kind == super::super::text::Tk::Sym(',')
+                    || d.toks[j].kind == super::super::text::Tk::Sym('.'))
+            {
                 d.mark(j);
                 j += 1;
             }
@@ -46,7 +81,8 @@ pub fn read_frame(r: &mut Reader<'_>) {
         }
         // "viewed from the side in the XZ plane": a point of view.
         if d.is(i, "viewed") || d.is(i, "seen") {
-            let end = (i + 1..(i + 4).min(d.len())).find(|j| matches!(d.word(*j), Some("side" | "front" | "top" | "above" | "end")));
+            let end = (i + 1..(i + 4).min(d.len()))
+                .find(|j| matches!(d.word(*j), Some("side" | "front" | "top" | "above" | "end")));
             if let Some(end) = end {
                 d.mark_range(i, end + 1);
             }
@@ -66,7 +102,15 @@ pub fn read_frame(r: &mut Reader<'_>) {
         // "in a plus (+) configuration", "an H-frame configuration": the layout's name.
         if d.is(i, "configuration") || d.is(i, "layout") {
             let mut j = i;
-            while j > 0 && (d.word(j - 1).is_some_and(|w| matches!(w, "plus" | "x" | "h" | "h-frame" | "cross" | "star" | "y" | "t")) || d.sym(j - 1, '(') || d.sym(j - 1, ')') || d.sym(j - 1, '+') || d.sym(j - 1, 'x')) {
+            while j > 0
+                && (d
+                    .word(j - 1)
+                    .is_some_and(|w| matches!(w, "plus" | "x" | "h" | "h-frame" | "cross" | "star" | "y" | "t"))
+                    || d.sym(j - 1, '(')
+                    || d.sym(j - 1, ')')
+                    || d.sym(j - 1, '+')
+                    || d.sym(j - 1, 'x'))
+            {
                 j -= 1;
                 d.mark(j);
             }
@@ -98,12 +142,13 @@ pub fn count_of(r: &Reader<'_>, e: usize) -> u32 {
 pub fn take_angles(r: &mut Reader<'_>, e: usize) -> Vec<f64> {
     let a: Vec<(usize, f64)> = r.els[e].angles.iter().copied().filter(|(t, _)| !r.used_angles.contains(t)).collect();
     // A single "45-degree" before a noun is a chamfer or bend angle, not a position.
-    a.into_iter().map(|(t, v)| {
-        r.used_angles.insert(t);
-        r.doc.mark(t);
-        v
-    })
-    .collect()
+    a.into_iter()
+        .map(|(t, v)| {
+            r.used_angles.insert(t);
+            r.doc.mark(t);
+            v
+        })
+        .collect()
 }
 
 /// Explicit points from the element's tuples and coordinates, in the plane of `axis`:
@@ -127,7 +172,12 @@ pub fn points(r: &mut Reader<'_>, e: usize, axis: Axis) -> Res<Vec<[f64; 2]>> {
                 Some(a) => {
                     return Err(Refusal::new(
                         r.doc.quote(t.toks.0, t.toks.1 - 1),
-                        format!("a point given in {} where the feature is placed in {}{}", a.name(), u.name(), v.name()),
+                        format!(
+                            "a point given in {} where the feature is placed in {}{}",
+                            a.name(),
+                            u.name(),
+                            v.name()
+                        ),
                     ));
                 }
                 None => unnamed.push((*val, *pm)),
@@ -224,7 +274,10 @@ pub fn rect_pattern(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
     let dims = r.free_dims(e);
     let list: Vec<usize> = dims.iter().copied().filter(|k| r.doc.dims[*k].list.is_some()).collect();
     let [a, b] = list.as_slice() else { return None };
-    let said = r.sentences_of(e).iter().any(|(s, t)| (*s..*t).any(|i| r.doc.is(i, "pattern") || r.doc.is(i, "square") || r.doc.is(i, "rectangle")));
+    let said = r
+        .sentences_of(e)
+        .iter()
+        .any(|(s, t)| (*s..*t).any(|i| r.doc.is(i, "pattern") || r.doc.is(i, "square") || r.doc.is(i, "rectangle")));
     if !said {
         return None;
     }
@@ -250,12 +303,18 @@ pub fn grid(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
     let d = r.doc;
     for (s, t) in r.sentences_of(e) {
         for i in s..t.saturating_sub(2) {
-            let (Some((nx, _)), true, Some((ny, _))) = (int_at(r, i), d.sym(i + 1, 'x'), int_at(r, i + 2)) else { continue };
+            let (Some((nx, _)), true, Some((ny, _))) = (int_at(r, i), d.sym(i + 1, 'x'), int_at(r, i + 2)) else {
+                continue;
+            };
             let sx = r.find(e, &[Role::Spacing], &[], &[]).filter(|k| d.dims[*k].axis != Some(Axis::Y));
             let Some(sx) = sx else { continue };
             r.used_dims[sx] = true;
             let sy = r.find(e, &[Role::Spacing], &[], &[]).or_else(|| {
-                r.els[e].dims.iter().copied().find(|k| !r.used_dims[*k] && d.dims[*k].axis == Some(Axis::Y) && d.dims[*k].role == Role::Bare)
+                r.els[e]
+                    .dims
+                    .iter()
+                    .copied()
+                    .find(|k| !r.used_dims[*k] && d.dims[*k].axis == Some(Axis::Y) && d.dims[*k].role == Role::Bare)
             });
             let (px, py) = (d.dims[sx].mm, sy.map_or(d.dims[sx].mm, |k| d.dims[k].mm));
             if let Some(k) = sy {
@@ -284,7 +343,9 @@ pub fn grid(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
 
 fn int_at(r: &Reader<'_>, i: usize) -> Option<(u32, usize)> {
     match r.doc.toks.get(i)?.kind {
-        super::super::text::Tk::Num { v, unit: None, .. } if v.fract() == 0.0 && (1.0..=100.0).contains(&v) => Some((v as u32, i)),
+        super::super::text::Tk::Num { v, unit: None, .. } if v.fract() == 0.0 && (1.0..=100.0).contains(&v) => {
+            Some((v as u32, i))
+        }
         _ => None,
     }
 }

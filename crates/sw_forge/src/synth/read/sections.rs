@@ -30,7 +30,8 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
 }
 
 fn need(v: Option<f64>, what: &str, r: &Reader<'_>, e: usize) -> Res<f64> {
-    v.filter(|x| x.is_finite() && *x > 0.0).ok_or_else(|| Refusal::new(r.quote_element(e), format!("no {what} is given for it")))
+    v.filter(|x| x.is_finite() && *x > 0.0)
+        .ok_or_else(|| Refusal::new(r.quote_element(e), format!("no {what} is given for it")))
 }
 
 /// A length of the part or of its named piece: the piece's own first, then the part's
@@ -70,8 +71,20 @@ fn length(r: &mut Reader<'_>, t: usize) -> Res<(f64, Axis)> {
 fn extrude(r: &mut Reader<'_>, t: usize, pts: Vec<[f64; 2]>, len: f64, axis: Axis) -> Built {
     let from = if r.centered { -len / 2.0 } else { 0.0 };
     let b = r.model.adds.len();
-    r.model.adds.push(Body::new(r.els[t].noun.clone(), Shape::Prism { profile: Profile::Poly(pts), axis, at: [0.0, 0.0], rot: 0.0, from, to: from + len }));
-    Built { axis, span: [from, from + len], at: vec![[0.0, 0.0]], od: None, id: None, size: None, bodies: vec![b], cut: false }
+    r.model.adds.push(Body::new(
+        r.els[t].noun.clone(),
+        Shape::Prism { profile: Profile::Poly(pts), axis, at: [0.0, 0.0], rot: 0.0, from, to: from + len },
+    ));
+    Built {
+        axis,
+        span: [from, from + len],
+        at: vec![[0.0, 0.0]],
+        od: None,
+        id: None,
+        size: None,
+        bodies: vec![b],
+        cut: false,
+    }
 }
 
 fn beam(r: &mut Reader<'_>, t: usize, s: Section) -> Res<()> {
@@ -87,7 +100,20 @@ fn beam(r: &mut Reader<'_>, t: usize, s: Section) -> Res<()> {
     let (y, a) = (w / 2.0, tw / 2.0);
     let pts = if s == Section::I {
         let z = h / 2.0;
-        vec![[-y, -z], [y, -z], [y, -z + tf], [a, -z + tf], [a, z - tf], [y, z - tf], [y, z], [-y, z], [-y, z - tf], [-a, z - tf], [-a, -z + tf], [-y, -z + tf]]
+        vec![
+            [-y, -z],
+            [y, -z],
+            [y, -z + tf],
+            [a, -z + tf],
+            [a, z - tf],
+            [y, z - tf],
+            [y, z],
+            [-y, z],
+            [-y, z - tf],
+            [-a, z - tf],
+            [-a, -z + tf],
+            [-y, -z + tf],
+        ]
     } else {
         vec![[-a, 0.0], [a, 0.0], [a, h - tf], [y, h - tf], [y, h], [-y, h], [-y, h - tf], [-a, h - tf]]
     };
@@ -116,7 +142,8 @@ fn channel(r: &mut Reader<'_>, t: usize) -> Res<()> {
         return Err(Refusal::new(r.quote_element(t), "its walls do not fit its width and height"));
     }
     let (y, z) = (w / 2.0, h / 2.0);
-    let pts = vec![[-y, -z], [y, -z], [y, z], [y - tw, z], [y - tw, -z + tb], [-y + tw, -z + tb], [-y + tw, z], [-y, z]];
+    let pts =
+        vec![[-y, -z], [y, -z], [y, z], [y - tw, z], [y - tw, -z + tb], [-y + tw, -z + tb], [-y + tw, z], [-y, z]];
     let b = extrude(r, t, pts, len, axis);
     r.built[t] = Some(b);
     r.mark_element(t);
@@ -143,7 +170,8 @@ fn mark_open_words(r: &mut Reader<'_>) {
 
 fn rect_tube(r: &mut Reader<'_>, t: usize) -> Res<()> {
     let (len, axis) = length(r, t)?;
-    let w = need(r.take(t, &[Role::Width], &[], &[]).or_else(|| r.take(t, &[Role::Bare], &["outer"], &[])), "width", r, t)?;
+    let w =
+        need(r.take(t, &[Role::Width], &[], &[]).or_else(|| r.take(t, &[Role::Bare], &["outer"], &[])), "width", r, t)?;
     let h = need(r.take(t, &[Role::Height], &[], &[]).or_else(|| r.take(t, &[Role::Bare], &[], &[])), "height", r, t)?;
     let wall = need(r.take(t, &[Role::Thickness], &[], &[]), "wall thickness", r, t)?;
     if 2.0 * wall >= w.min(h) {
@@ -151,9 +179,31 @@ fn rect_tube(r: &mut Reader<'_>, t: usize) -> Res<()> {
     }
     let from = if r.centered { -len / 2.0 } else { 0.0 };
     let outer = r.model.adds.len();
-    r.model.adds.push(Body::new("tube", Shape::Prism { profile: Profile::Rect { w, h }, axis, at: [0.0, 0.0], rot: 0.0, from, to: from + len }));
-    r.model.cuts.push(Body::new("tube bore", Shape::Prism { profile: Profile::Rect { w: w - 2.0 * wall, h: h - 2.0 * wall }, axis, at: [0.0, 0.0], rot: 0.0, from, to: from + len }));
-    r.built[t] = Some(Built { axis, span: [from, from + len], at: vec![[0.0, 0.0]], od: None, id: None, size: Some([w, h]), bodies: vec![outer], cut: false });
+    r.model.adds.push(Body::new(
+        "tube",
+        Shape::Prism { profile: Profile::Rect { w, h }, axis, at: [0.0, 0.0], rot: 0.0, from, to: from + len },
+    ));
+    r.model.cuts.push(Body::new(
+        "tube bore",
+        Shape::Prism {
+            profile: Profile::Rect { w: w - 2.0 * wall, h: h - 2.0 * wall },
+            axis,
+            at: [0.0, 0.0],
+            rot: 0.0,
+            from,
+            to: from + len,
+        },
+    ));
+    r.built[t] = Some(Built {
+        axis,
+        span: [from, from + len],
+        at: vec![[0.0, 0.0]],
+        od: None,
+        id: None,
+        size: Some([w, h]),
+        bodies: vec![outer],
+        cut: false,
+    });
     r.mark_element(t);
     mark_open_words(r);
     // "on all four sides".
@@ -176,7 +226,8 @@ fn l_bracket(r: &mut Reader<'_>, t: usize) -> Res<()> {
         return Ok(());
     };
     // The pieces must be plain boxes given by their sizes (not coordinates of their own).
-    let plain = |r: &Reader<'_>, e: usize| r.els[e].ranges.is_empty() && r.els[e].coords.is_empty() && r.els[e].noun != "plate";
+    let plain =
+        |r: &Reader<'_>, e: usize| r.els[e].ranges.is_empty() && r.els[e].coords.is_empty() && r.els[e].noun != "plate";
     if !plain(r, wl) || !plain(r, bs) {
         r.mark_element(t);
         return Ok(());
@@ -188,15 +239,56 @@ fn l_bracket(r: &mut Reader<'_>, t: usize) -> Res<()> {
     let base_w = need(r.take(bs, &[Role::Width], &[], &[]), "base width", r, bs)?;
     let base_t = need(r.take(bs, &[Role::Thickness], &[], &[]), "base thickness", r, bs)?;
     if (wall_w - base_w).abs() > 1e-9 {
-        return Err(Refusal::new(r.quote_element(bs), format!("the base is {base_w} mm wide and the wall {wall_w} mm: an L of two widths")));
+        return Err(Refusal::new(
+            r.quote_element(bs),
+            format!("the base is {base_w} mm wide and the wall {wall_w} mm: an L of two widths"),
+        ));
     }
     let x = wall_w;
     let base = r.model.adds.len();
-    r.model.adds.push(Body::new("base", Shape::Prism { profile: Profile::Rect { w: x, h: base_d }, axis: Axis::Z, at: [0.0, base_d / 2.0], rot: 0.0, from: 0.0, to: base_t }));
+    r.model.adds.push(Body::new(
+        "base",
+        Shape::Prism {
+            profile: Profile::Rect { w: x, h: base_d },
+            axis: Axis::Z,
+            at: [0.0, base_d / 2.0],
+            rot: 0.0,
+            from: 0.0,
+            to: base_t,
+        },
+    ));
     let wall = r.model.adds.len();
-    r.model.adds.push(Body::new("wall", Shape::Prism { profile: Profile::Rect { w: x, h: wall_t }, axis: Axis::Z, at: [0.0, -wall_t / 2.0], rot: 0.0, from: 0.0, to: wall_h }));
-    r.built[bs] = Some(Built { axis: Axis::Z, span: [0.0, base_t], at: vec![[0.0, base_d / 2.0]], od: None, id: None, size: Some([x, base_d]), bodies: vec![base], cut: false });
-    r.built[wl] = Some(Built { axis: Axis::Z, span: [0.0, wall_h], at: vec![[0.0, -wall_t / 2.0]], od: None, id: None, size: Some([x, wall_t]), bodies: vec![wall], cut: false });
+    r.model.adds.push(Body::new(
+        "wall",
+        Shape::Prism {
+            profile: Profile::Rect { w: x, h: wall_t },
+            axis: Axis::Z,
+            at: [0.0, -wall_t / 2.0],
+            rot: 0.0,
+            from: 0.0,
+            to: wall_h,
+        },
+    ));
+    r.built[bs] = Some(Built {
+        axis: Axis::Z,
+        span: [0.0, base_t],
+        at: vec![[0.0, base_d / 2.0]],
+        od: None,
+        id: None,
+        size: Some([x, base_d]),
+        bodies: vec![base],
+        cut: false,
+    });
+    r.built[wl] = Some(Built {
+        axis: Axis::Z,
+        span: [0.0, wall_h],
+        at: vec![[0.0, -wall_t / 2.0]],
+        od: None,
+        id: None,
+        size: Some([x, wall_t]),
+        bodies: vec![wall],
+        cut: false,
+    });
     r.mark_element(t);
     r.mark_element(wl);
     r.mark_element(bs);

@@ -11,7 +11,11 @@ use super::{Reader, Refusal, Res};
 /// The body treatments apply to: the part's own (its name's), else the first one made.
 fn main_body(r: &Reader<'_>) -> Option<usize> {
     let t = r.els.iter().position(|e| e.title)?;
-    r.built[t].as_ref().and_then(|b| b.bodies.first().copied()).filter(|_| !r.built[t].as_ref().is_some_and(|b| b.cut)).or((!r.model.adds.is_empty()).then_some(0))
+    r.built[t]
+        .as_ref()
+        .and_then(|b| b.bodies.first().copied())
+        .filter(|_| !r.built[t].as_ref().is_some_and(|b| b.cut))
+        .or((!r.model.adds.is_empty()).then_some(0))
 }
 
 pub fn read(r: &mut Reader<'_>) -> Res<()> {
@@ -71,7 +75,10 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
             .map(|i| bb[1][i] - bb[0][i])
             .fold(f64::INFINITY, f64::min);
         if size <= 0.0 || 2.0 * size >= thin {
-            return Err(Refusal::new(r.quote_dim(k), format!("an edge treatment of {size} mm does not fit a body {thin} mm thin")));
+            return Err(Refusal::new(
+                r.quote_dim(k),
+                format!("an edge treatment of {size} mm does not fit a body {thin} mm thin"),
+            ));
         }
         r.model.adds[bi].edges.push(EdgeOp { edges, kind, size });
         let dm = &d.dims[k];
@@ -95,7 +102,8 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Edges {
     for w in ["edge", "all", "four", "both", "only", "on"] {
         mark(w);
     }
-    let round = matches!(&r.model.adds[bi].shape, Shape::Prism { profile: super::super::profile::Profile::Circle { .. }, .. });
+    let round =
+        matches!(&r.model.adds[bi].shape, Shape::Prism { profile: super::super::profile::Profile::Circle { .. }, .. });
     if has("vertical") {
         mark("vertical");
         // "with rounded vertical corners" anywhere.
@@ -110,7 +118,13 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Edges {
         mark("long");
         let bb = r.model.adds[bi].bounds();
         let s = [bb[1][0] - bb[0][0], bb[1][1] - bb[0][1], bb[1][2] - bb[0][2]];
-        let k = if s[0] >= s[1] && s[0] >= s[2] { Axis::X } else if s[1] >= s[2] { Axis::Y } else { Axis::Z };
+        let k = if s[0] >= s[1] && s[0] >= s[2] {
+            Axis::X
+        } else if s[1] >= s[2] {
+            Axis::Y
+        } else {
+            Axis::Z
+        };
         return Edges::Parallel(k);
     }
     if has("circular") || has("end") || (has("top") && has("bottom")) {
@@ -134,10 +148,14 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Edges {
 /// is removed", "open on top").
 fn shell(r: &mut Reader<'_>) -> Res<()> {
     let d = r.doc;
-    let Some(at) = (0..d.len()).find(|i| matches!(d.word(*i), Some("shelled" | "shell" | "hollowed"))) else { return Ok(()) };
+    let Some(at) = (0..d.len()).find(|i| matches!(d.word(*i), Some("shelled" | "shell" | "hollowed"))) else {
+        return Ok(());
+    };
     let s = d.sent[at];
     let (a, b) = d.sentence(s);
-    let k = (0..d.dims.len()).find(|k| !r.used_dims[*k] && d.sent[d.dims[*k].tok] == s && matches!(d.dims[*k].role, Role::Thickness | Role::Bare));
+    let k = (0..d.dims.len()).find(|k| {
+        !r.used_dims[*k] && d.sent[d.dims[*k].tok] == s && matches!(d.dims[*k].role, Role::Thickness | Role::Bare)
+    });
     let Some(k) = k else { return Err(Refusal::new(d.quote(at, at), "the shell's wall thickness is not given")) };
     let t = d.dims[k].mm;
     r.used_dims[k] = true;
@@ -164,9 +182,14 @@ fn shell(r: &mut Reader<'_>) -> Res<()> {
     }
     for i in 0..d.len() {
         let w = d.word(i).unwrap_or("");
-        if matches!(w, "top" | "face" | "removed" | "open" | "open-top" | "inward" | "wall" | "opening" | "neck") && d.sent[i] <= s {
+        if matches!(w, "top" | "face" | "removed" | "open" | "open-top" | "inward" | "wall" | "opening" | "neck")
+            && d.sent[i] <= s
+        {
             // Only the words that say which face is open.
-            if matches!(w, "removed" | "open" | "open-top" | "inward") || (i + 1 < d.len() && d.is(i + 1, "face")) || w == "face" {
+            if matches!(w, "removed" | "open" | "open-top" | "inward")
+                || (i + 1 < d.len() && d.is(i + 1, "face"))
+                || w == "face"
+            {
                 d.mark(i);
                 if d.is(i + 1, "face") {
                     d.mark(i + 1);

@@ -17,8 +17,8 @@ fn close(a: f64, b: f64, tol: f64) -> bool {
 fn lengths(r: &Reader<'_>) -> Vec<f64> {
     let mut v = r.known.clone();
     let b = r.model.bounds();
-    for k in 0..3 {
-        v.extend([b[1][k] - b[0][k], b[0][k], b[1][k], (b[1][k] - b[0][k]) / 2.0]);
+    for (lo, hi) in b[0].iter().zip(&b[1]) {
+        v.extend([hi - lo, *lo, *hi, (hi - lo) / 2.0]);
     }
     for built in r.built.iter().flatten() {
         v.extend([built.span[1] - built.span[0], built.span[0], built.span[1]]);
@@ -35,7 +35,12 @@ fn lengths(r: &Reader<'_>) -> Vec<f64> {
             v.extend(s);
         }
         for p in &built.at {
-            v.extend([p[0].abs(), p[1].abs(), (p[0] * p[0] + p[1] * p[1]).sqrt(), 2.0 * (p[0] * p[0] + p[1] * p[1]).sqrt()]);
+            v.extend([
+                p[0].abs(),
+                p[1].abs(),
+                (p[0] * p[0] + p[1] * p[1]).sqrt(),
+                2.0 * (p[0] * p[0] + p[1] * p[1]).sqrt(),
+            ]);
         }
         // Copies' spacing and the pattern's extent.
         if built.at.len() > 1 {
@@ -77,13 +82,20 @@ fn lengths(r: &Reader<'_>) -> Vec<f64> {
     }
     // Stars' tip and root circles.
     for b in r.model.adds.iter() {
-        if let super::super::solid::Shape::Prism { profile: super::super::profile::Profile::Star { tip, root, .. }, .. } = &b.shape {
+        if let super::super::solid::Shape::Prism {
+            profile: super::super::profile::Profile::Star { tip, root, .. },
+            ..
+        } = &b.shape
+        {
             v.extend([*tip, *root, 2.0 * tip, 2.0 * root]);
         }
     }
     // Polygons' width across flats and their sides.
     for b in r.model.adds.iter().chain(r.model.cuts.iter()) {
-        if let super::super::solid::Shape::Prism { profile: super::super::profile::Profile::Ngon { n, d, .. }, .. } = &b.shape {
+        if let super::super::solid::Shape::Prism {
+            profile: super::super::profile::Profile::Ngon { n, d, .. }, ..
+        } = &b.shape
+        {
             let n = *n as f64;
             v.extend([d * (std::f64::consts::PI / n).cos(), d * (std::f64::consts::PI / n).sin()]);
         }
@@ -105,7 +117,8 @@ fn coordinates(r: &Reader<'_>, axis: usize) -> Vec<f64> {
 }
 
 fn approx_near(r: &Reader<'_>, tok: usize) -> bool {
-    (tok.saturating_sub(4)..tok).any(|i| matches!(r.doc.word(i), Some("approximately" | "about" | "approx" | "roughly" | "around" | "nearly")))
+    (tok.saturating_sub(4)..tok)
+        .any(|i| matches!(r.doc.word(i), Some("approximately" | "about" | "approx" | "roughly" | "around" | "nearly")))
 }
 
 pub fn check(r: &mut Reader<'_>) -> Res<()> {
@@ -120,7 +133,10 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                 if std::env::var_os("SW_SYNTH_DEBUG").is_some() {
                     eprintln!("unplaced length {} ({:?}); candidates {lens:?}", dm.mm, dm.role);
                 }
-                return Err(Refusal::new(r.quote_dim(k), "a length the part does not have, or one the synthesizer could not place"));
+                return Err(Refusal::new(
+                    r.quote_dim(k),
+                    "a length the part does not have, or one the synthesizer could not place",
+                ));
             }
             r.used_dims[k] = true;
         }
@@ -187,7 +203,8 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
         d.mark_range(t.toks.0, t.toks.1);
     }
     // Angles: used, or the same as one used ("the spokes at 0 and 180 degrees are …").
-    let used: Vec<f64> = r.used_angles.iter().filter_map(|i| if let Tk::Deg(a) = d.toks[*i].kind { Some(a) } else { None }).collect();
+    let used: Vec<f64> =
+        r.used_angles.iter().filter_map(|i| if let Tk::Deg(a) = d.toks[*i].kind { Some(a) } else { None }).collect();
     for (i, t) in d.toks.iter().enumerate() {
         if let Tk::Deg(a) = t.kind
             && !r.used_angles.contains(&i)
@@ -215,10 +232,16 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                     // not as something the part has ("with four holes").
                     let referenced = m.iter().all(|mi| {
                         let x = &r.mentions[*mi];
-                        x.prep.as_deref().is_some_and(|p| p != "with") || (x.definite && x.prep.as_deref() != Some("with"))
+                        x.prep.as_deref().is_some_and(|p| p != "with")
+                            || (x.definite && x.prep.as_deref() != Some("with"))
                     });
-                    let same_noun_made = (0..r.els.len()).any(|o| o != e && r.done[o] && (r.els[o].noun == r.els[e].noun || r.els[o].has_mod(&r.els[e].noun)));
-                    if referenced || same_noun_made || r.built.iter().flatten().count() > 0 && is_place_noun(&r.els[e].noun) {
+                    let same_noun_made = (0..r.els.len()).any(|o| {
+                        o != e && r.done[o] && (r.els[o].noun == r.els[e].noun || r.els[o].has_mod(&r.els[e].noun))
+                    });
+                    if referenced
+                        || same_noun_made
+                        || r.built.iter().flatten().count() > 0 && is_place_noun(&r.els[e].noun)
+                    {
                         r.mark_element(e);
                         continue;
                     }
@@ -230,19 +253,25 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
     // "the base at Z=0", "the top at Z=30": the part's bottom and top.
     let pb = r.model.bounds();
     for i in 0..d.len().saturating_sub(4) {
-        if matches!(d.word(i), Some("base" | "bottom" | "top")) && d.is(i + 1, "at") && d.axis_at(i + 2) == Some(super::super::solid::Axis::Z) {
-            if let Some(c) = d.coords.iter().find(|c| c.tok == i + 2) {
-                let z = if d.is(i, "top") { pb[1][2] } else { pb[0][2] };
-                if (c.v - z).abs() < 1e-6 {
-                    d.mark(i);
-                }
+        if matches!(d.word(i), Some("base" | "bottom" | "top"))
+            && d.is(i + 1, "at")
+            && d.axis_at(i + 2) == Some(super::super::solid::Axis::Z)
+            && let Some(c) = d.coords.iter().find(|c| c.tok == i + 2)
+        {
+            let z = if d.is(i, "top") { pb[1][2] } else { pb[0][2] };
+            if (c.v - z).abs() < 1e-6 {
+                d.mark(i);
             }
         }
     }
     // "on top of the web", "sitting on top of the shaft": of a made thing.
     for i in 0..d.len().saturating_sub(2) {
-        if (d.is(i, "top") || d.is(i, "end") || d.is(i, "tip") || d.is(i, "center")) && d.is(i + 1, "of") && !d.is_used(i) {
-            let of_made = r.mentions.iter().any(|m| m.start <= i + 3 && m.head > i + 1 && m.head <= i + 5 && r.done[m.elem]);
+        if (d.is(i, "top") || d.is(i, "end") || d.is(i, "tip") || d.is(i, "center"))
+            && d.is(i + 1, "of")
+            && !d.is_used(i)
+        {
+            let of_made =
+                r.mentions.iter().any(|m| m.start <= i + 3 && m.head > i + 1 && m.head <= i + 5 && r.done[m.elem]);
             if of_made {
                 d.mark_range(i, i + 2);
             }
@@ -273,8 +302,19 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
     // Words.
     let runs = d.unread_runs(|i| match &d.toks[i].kind {
         // A qualifier naming a length with no number ("(inner diameter)").
-        Tk::Word(w) if QUALS.contains(&w.as_str()) && d.word(i + 1).is_some_and(|n| role_of(n).is_some() || matches!(n, "surface" | "face" | "dimension" | "size" | "edge")) => true,
-        Tk::Word(w) => is_filler(w) || (role_of(w).is_some() && w != "side" && w != "sided") || matches!(w.as_str(), "x" | "y" | "z" | "xy" | "xz" | "yz" | "degree" | "mm"),
+        Tk::Word(w)
+            if QUALS.contains(&w.as_str())
+                && d.word(i + 1).is_some_and(|n| {
+                    role_of(n).is_some() || matches!(n, "surface" | "face" | "dimension" | "size" | "edge")
+                }) =>
+        {
+            true
+        }
+        Tk::Word(w) => {
+            is_filler(w)
+                || (role_of(w).is_some() && w != "side" && w != "sided")
+                || matches!(w.as_str(), "x" | "y" | "z" | "xy" | "xz" | "yz" | "degree" | "mm")
+        }
         Tk::Sym(_) => true,
         Tk::Num { unit: None, .. } => true,
         _ => false,
@@ -287,5 +327,22 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
 
 /// Nouns that, said of a made part, name a place on it rather than a new body.
 fn is_place_noun(w: &str) -> bool {
-    matches!(w, "base" | "body" | "head" | "floor" | "wall" | "rim" | "section" | "seat" | "shoulder" | "neck" | "hub" | "prong" | "ear" | "tip" | "leg")
+    matches!(
+        w,
+        "base"
+            | "body"
+            | "head"
+            | "floor"
+            | "wall"
+            | "rim"
+            | "section"
+            | "seat"
+            | "shoulder"
+            | "neck"
+            | "hub"
+            | "prong"
+            | "ear"
+            | "tip"
+            | "leg"
+    )
 }
