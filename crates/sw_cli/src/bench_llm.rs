@@ -183,6 +183,8 @@ fn client(server: &MockServer, run: usize) -> Client {
         let mut e = Endpoint::new(base.clone(), model);
         e.timeout = Duration::from_secs(120);
         e.max_retries = 0;
+        // The loopback server stands for a provider serving calls in parallel.
+        e.endpoint_concurrency = Some(64);
         cfg = cfg.with(stage, e);
     }
     Client::new(cfg)

@@ -97,6 +97,21 @@ pub(crate) enum BenchCommand {
         #[arg(long)]
         json: bool,
     },
+    /// The plan, relations and edit stages against a real server and model (see
+    /// `scripts/setup.sh --real-llm`): calls accepted, cut off, slowest, and whether each
+    /// plan keeps what the prompt states (`bench/llm/grounding.jsonl`).
+    LlmReal {
+        /// The server's API root, e.g. http://127.0.0.1:8080/v1.
+        #[arg(long)]
+        base_url: String,
+        #[arg(long, default_value = "smollm2-135m-instruct")]
+        model: String,
+        /// An annotated suite (JSON lines) instead of bench/llm/grounding.jsonl.
+        #[arg(long)]
+        suite: Option<PathBuf>,
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 #[derive(Debug, Serialize)]
@@ -147,6 +162,9 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
         BenchCommand::AssetIndex { assets, json } => crate::bench_index::run(assets, json),
         BenchCommand::LlmLatency { runs, time_scale, seed, json } => {
             crate::bench_llm::run(runs, time_scale, seed, json)
+        }
+        BenchCommand::LlmReal { base_url, model, suite, json } => {
+            crate::bench_llm_real::run(&base_url, &model, suite, json)
         }
     }
 }

@@ -1,18 +1,20 @@
 //! `scenewright llm …`: the pipeline with a language model for L1 (`llm generate`), the
-//! plan alone (`llm plan`) and the configured endpoints (`llm status`). Endpoints come
-//! from `--llm-config FILE` or the environment (`SCENEWRIGHT_LLM_*`, see the README);
-//! `scenewright generate` stays offline.
+//! plan alone (`llm plan`) and the configured endpoints, probed (`llm status`: the models
+//! a server lists, a one-token call, whether it takes our schemas and in which dialect).
+//! Endpoints come from `--llm-config FILE` or the environment (`SCENEWRIGHT_LLM_*`, see
+//! the README); `scenewright generate` stays offline. The CAD runner and the asset
+//! library start only when the first part is to be made, not before the first model call.
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use clap::Subcommand;
 use serde_json::json;
 use sw_forge::generate::{LlmWriter, LoopConfig};
 use sw_forge::runner::{CadRunner, RunnerConfig};
 use sw_llm::{Client, LlmConfig, LlmStage};
-use sw_pipeline::{Event, ForgeSource, LlmRun, Options};
-use sw_plan::{LlmCall, LlmOutcome, Status};
+use sw_pipeline::{AssetSource, CatalogSource, Event, ForgeSource, GroupAssets, LlmRun, Options};
+use sw_plan::{LlmCall, LlmOutcome, ObjectPlan, Status};
 
 use crate::Failure;
 use crate::output::{print, print_json};
@@ -50,10 +52,14 @@ pub(crate) enum LlmCommand {
         #[arg(long, value_name = "FILE")]
         llm_config: Option<PathBuf>,
     },
-    /// The configured endpoints per stage (never the keys).
+    /// The configured endpoints per stage (never the keys), each server probed: the
+    /// models it lists, a one-token call, and whether it takes a JSON Schema.
     Status {
         #[arg(long, value_name = "FILE")]
         llm_config: Option<PathBuf>,
+        /// Only print the configuration; ask the servers nothing.
+        #[arg(long)]
+        no_probe: bool,
         #[arg(long)]
         json: bool,
     },
@@ -119,6 +125,41 @@ fn forge_source(client: &Client) -> Result<ForgeSource, String> {
     }
 }
 
+/// The forge, started when the first group the catalog lacks is to be made: a prompt
+/// whose objects are all in the catalog never pays for the CAD runner (4–7 s).
+struct LazyForge {
+    client: Client,
+    source: OnceLock<Result<ForgeSource, String>>,
+}
+
+impl AssetSource for LazyForge {
+    fn name(&self) -> &str {
+        "forge"
+    }
+
+    fn is_cached(&self, group: &ObjectPlan) -> bool {
+        group.proxy.is_none() || self.source.get().and_then(|s| s.as_ref().ok()).is_some_and(|s| s.is_cached(group))
+    }
+
+    fn make(&self, group: &ObjectPlan, seed: u64) -> GroupAssets {
+        if group.proxy.is_none() {
+            return CatalogSource.make(group, seed);
+        }
+        match self.source.get_or_init(|| forge_source(&self.client)) {
+            Ok(source) => source.make(group, seed),
+            Err(why) => {
+                let mut out = CatalogSource.make(group, seed);
+                out.warnings.push(sw_plan::Warning::new(
+                    sw_plan::Stage::Forge,
+                    "asset_forge_unavailable",
+                    format!("{}: kept the labelled proxy; the asset forge could not start ({why})", group.phrase),
+                ));
+                out
+            }
+        }
+    }
+}
+
 /// One line per stage of calls: "plan 1 call · 2.31 s · 1203 tokens in / 356 out".
 pub(crate) fn calls_summary(calls: &[LlmCall]) -> Vec<String> {
     let mut out = Vec::new();
@@ -156,10 +197,7 @@ pub(crate) fn run(c: LlmCommand) -> Result<u8, Failure> {
             let mut run = LlmRun::new(Client::new(cfg));
             run.fallback = !no_fallback;
             if !no_forge && run.client.has(LlmStage::Cad) {
-                match forge_source(&run.client) {
-                    Ok(source) => run.assets = Arc::new(source),
-                    Err(why) => eprintln!("warning: objects the catalog lacks stay labelled proxies: {why}"),
-                }
+                run.assets = Arc::new(LazyForge { client: run.client.clone(), source: OnceLock::new() });
             }
             let opts = Options { seed, verify: !no_verify, ..Options::default() };
             let o = sw_pipeline::generate_with_llm(&prompt, &out, &opts, &run, &mut progress(json)).map_err(failure)?;
@@ -218,43 +256,101 @@ pub(crate) fn run(c: LlmCommand) -> Result<u8, Failure> {
             print_json(&plan);
             Ok(0)
         }
-        LlmCommand::Status { llm_config, json } => {
-            let cfg = config(llm_config.as_deref())?;
-            let stages: Vec<serde_json::Value> = LlmStage::ALL
-                .iter()
-                .map(|s| match cfg.endpoint(*s) {
-                    Some(e) => json!({
-                        "stage": s.name(), "configured": true, "endpoint": e.origin(), "model": e.model,
-                        "key": e.api_key.is_some(), "timeout_s": e.timeout.as_secs_f64(), "retries": e.max_retries,
-                        "stream": e.stream, "structured": e.structured,
-                    }),
-                    None => json!({ "stage": s.name(), "configured": false }),
-                })
-                .collect();
-            if json {
-                print_json(&json!({ "stages": stages }));
-            } else {
-                let lines: Vec<String> = stages
-                    .iter()
-                    .map(|s| {
-                        if s["configured"] == true {
-                            format!(
-                                "{:<11} {} model {} · key {} · timeout {} s · {} retries",
-                                s["stage"].as_str().unwrap_or(""),
-                                s["endpoint"].as_str().unwrap_or(""),
-                                s["model"].as_str().unwrap_or(""),
-                                if s["key"] == true { "set" } else { "none" },
-                                s["timeout_s"],
-                                s["retries"]
-                            )
-                        } else {
-                            format!("{:<11} offline", s["stage"].as_str().unwrap_or(""))
-                        }
-                    })
-                    .collect();
-                print(&lines.join("\n"));
-            }
-            Ok(0)
-        }
+        LlmCommand::Status { llm_config, no_probe, json } => status(llm_config.as_deref(), !no_probe, json),
     }
+}
+
+/// `llm status`: the configuration per stage and, unless told not to, what each distinct
+/// server answers.
+fn status(file: Option<&Path>, probe: bool, json: bool) -> Result<u8, Failure> {
+    let cfg = config(file)?;
+    let mut probes: Vec<((String, String), serde_json::Value)> = Vec::new();
+    let mut stages = Vec::new();
+    for s in LlmStage::ALL {
+        let Some(e) = cfg.endpoint(s) else {
+            stages.push(json!({ "stage": s.name(), "configured": false }));
+            continue;
+        };
+        let mut row = json!({
+            "stage": s.name(), "configured": true, "endpoint": e.origin(), "model": e.model,
+            "key": e.api_key.is_some(), "timeout_s": e.timeout.as_secs_f64(), "retries": e.max_retries,
+            "stream": e.stream, "structured": e.structured,
+            "max_tokens": e.max_tokens.or_else(|| sw_llm::default_max_tokens(s)),
+            "endpoint_concurrency": sw_llm::limits::limit(e),
+        });
+        if probe && s != LlmStage::Embeddings {
+            let k = (e.completions_url(), e.model.clone());
+            let found = probes.iter().find(|(key, _)| *key == k).map(|(_, v)| v.clone());
+            let p = found.unwrap_or_else(|| {
+                let r = sw_llm::probe::probe(s, e);
+                let v = json!({
+                    "models": r.models.as_ref().ok(), "models_error": r.models.as_ref().err(),
+                    "model_listed": r.model_listed,
+                    "ping_ms": r.ping.as_ref().ok().map(|p| p.0), "served_model": r.ping.as_ref().ok().and_then(|p| p.1.clone()),
+                    "ping_error": r.ping.as_ref().err(),
+                    "dialect": r.schema.as_ref().ok().map(|s| s.0.clone()),
+                    "schema_followed": r.schema.as_ref().ok().map(|s| s.1),
+                    "schema_error": r.schema.as_ref().err(),
+                });
+                probes.push((k, v.clone()));
+                v
+            });
+            row["probe"] = p;
+        }
+        stages.push(row);
+    }
+    if json {
+        print_json(&json!({ "stages": stages }));
+        return Ok(0);
+    }
+    let str_of = |v: &serde_json::Value| v.as_str().unwrap_or("").to_string();
+    let mut lines = Vec::new();
+    for s in &stages {
+        if s["configured"] != true {
+            lines.push(format!("{:<11} offline", str_of(&s["stage"])));
+            continue;
+        }
+        lines.push(format!(
+            "{:<11} {} model {} · key {} · silence limit {} s · {} retries · max_tokens {} · {} in flight",
+            str_of(&s["stage"]),
+            str_of(&s["endpoint"]),
+            str_of(&s["model"]),
+            if s["key"] == true { "set" } else { "none" },
+            s["timeout_s"],
+            s["retries"],
+            s["max_tokens"],
+            s["endpoint_concurrency"].as_u64().map_or("any number".to_string(), |n| n.to_string()),
+        ));
+        let p = &s["probe"];
+        if p.is_null() {
+            continue;
+        }
+        let models = match (p["models"].as_array(), p["models_error"].as_str()) {
+            (Some(m), _) => {
+                let names: Vec<String> = m.iter().map(str_of).collect();
+                let listed = if p["model_listed"] == false { " (the configured model is not among them)" } else { "" };
+                format!("lists {}{listed}", names.join(", "))
+            }
+            (None, Some(e)) => format!("no model list ({e})"),
+            _ => "no model list".into(),
+        };
+        let ping = match (p["ping_ms"].as_f64(), p["ping_error"].as_str()) {
+            (Some(ms), _) => format!(
+                "answers in {ms:.0} ms as {}",
+                p["served_model"].as_str().unwrap_or("(the server does not say which model)")
+            ),
+            (None, Some(e)) => format!("does not answer: {e}"),
+            _ => String::new(),
+        };
+        let schema = match (p["dialect"].as_str(), p["schema_error"].as_str()) {
+            (Some(d), _) => {
+                format!("schema as {d}{}", if p["schema_followed"] == true { ", followed" } else { ", NOT followed" })
+            }
+            (None, Some(e)) => format!("schema call failed: {e}"),
+            _ => String::new(),
+        };
+        lines.push(format!("{:<11} {models} · {ping} · {schema}", ""));
+    }
+    print(&lines.join("\n"));
+    Ok(0)
 }

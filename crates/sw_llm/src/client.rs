@@ -203,12 +203,17 @@ impl Client {
             return a.clone();
         }
         // Chat calls are bounded by the caller's deadlines; the agent's global timeout
-        // only ends the threads of exchanges the caller walked away from.
+        // only ends the threads of exchanges the caller walked away from. No connection is
+        // kept for the next call: a local server closes a kept-alive connection after a
+        // streamed answer (llama.cpp's did, and the next request on it was lost), and a
+        // connection per call costs nothing next to a model's answer.
         let global = if stage == LlmStage::Embeddings { ep.timeout } else { ep.max_call.max(ep.timeout) };
         let agent: ureq::Agent = ureq::Agent::config_builder()
             .http_status_as_error(false)
             .timeout_global(Some(global + Duration::from_secs(1)))
             .timeout_connect(Some(ep.connect_timeout))
+            .max_idle_connections(0)
+            .max_idle_connections_per_host(0)
             .user_agent(format!("scenewright/{}", env!("CARGO_PKG_VERSION")))
             .build()
             .into();

@@ -92,10 +92,10 @@ pub struct Endpoint {
 /// cut off in bounded time.
 pub fn default_max_tokens(stage: LlmStage) -> Option<u32> {
     match stage {
-        LlmStage::Plan => Some(1024),
-        LlmStage::Relations => Some(512),
-        LlmStage::Cad => Some(1536),
-        LlmStage::Edit => Some(384),
+        LlmStage::Plan => Some(640),
+        LlmStage::Relations => Some(384),
+        LlmStage::Cad => Some(1024),
+        LlmStage::Edit => Some(256),
         LlmStage::Refine => Some(512),
         LlmStage::Embeddings => None,
     }

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use serde::Serialize;
 use serde_json::{Value, json};
-use sw_plan::LlmStage;
+use sw_plan::{LlmOutcome, LlmStage};
 
 use crate::client::ms;
 use crate::config::{Endpoint, LlmConfig};
@@ -78,7 +78,13 @@ pub fn probe(stage: LlmStage, ep: &Endpoint) -> ProbeReport {
             "probe: one token",
         )
         .map(|c| (ms(t0.elapsed()), c.served_model))
-        .map_err(|e| e.to_string());
+        .or_else(|e| match e.outcome() {
+            // One token asked, one given: an answer cut at its limit is an answer.
+            LlmOutcome::Length => {
+                Ok((ms(t0.elapsed()), client.telemetry().calls().last().and_then(|c| c.served_model.clone())))
+            }
+            _ => Err(e.to_string()),
+        });
     dialect::forget(&once);
     let schema_req = ChatRequest::new(vec![
         Message::system("Answer with JSON."),

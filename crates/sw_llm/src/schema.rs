@@ -15,7 +15,7 @@
 //! - objects with properties get `additionalProperties: false`;
 //! - every string without a length, enum, const or pattern gets `maxLength`
 //!   ([`DEFAULT_MAX_LENGTH`]), every array without `maxItems` gets [`DEFAULT_MAX_ITEMS`];
-//!   bounds the caller set (matching its reader's limits) are kept;
+//!   bounds the caller set (matching its reader's limits) are kept, up to [`MAX_REPEAT`];
 //! - `null` alternatives of optional properties are dropped (an absent property says
 //!   the same), and so are schemars' numeric `format`s and `default`s, which converters
 //!   do not know.
@@ -31,6 +31,11 @@ use serde_json::{Map, Value};
 pub const DEFAULT_MAX_LENGTH: u64 = 200;
 /// `maxItems` of arrays the caller left unbounded.
 pub const DEFAULT_MAX_ITEMS: u64 = 64;
+/// The largest `maxLength`/`maxItems` sent: llama.cpp's grammar parser refuses a
+/// repetition of more than 2000 rules, and llama-cpp-python 0.3.36's converter unrolls a
+/// `maxLength` of 1500 into a grammar its server dies on (checked here); bigger bounds are
+/// lowered to this.
+pub const MAX_REPEAT: u64 = 1000;
 
 /// The schema rewritten for grammar-constrained servers (see the module docs).
 /// Idempotent.
@@ -138,6 +143,11 @@ fn rewrite_object(o: &mut Map<String, Value>) {
             o.entry("additionalProperties").or_insert(Value::Bool(false));
         }
         _ => {}
+    }
+    for key in ["maxLength", "maxItems"] {
+        if o.get(key).and_then(Value::as_u64).is_some_and(|n| n > MAX_REPEAT) {
+            o.insert(key.into(), Value::from(MAX_REPEAT));
+        }
     }
     match ty.as_deref() {
         Some("string") if !["maxLength", "enum", "const", "pattern", "format"].iter().any(|k| o.contains_key(*k)) => {
@@ -250,9 +260,11 @@ mod tests {
     fn caller_bounds_are_kept_and_arrays_are_bounded() {
         let s = json!({"type": "object", "properties": {
             "a": {"type": "array", "items": {"type": "string", "maxLength": 5}, "maxItems": 3},
-            "b": {"type": "array", "items": {"type": "string", "enum": ["x"]}}
+            "b": {"type": "array", "items": {"type": "string", "enum": ["x"]}},
+            "c": {"type": "string", "maxLength": 4000}
         }});
         let m = for_model(&s);
+        assert_eq!(m["properties"]["c"]["maxLength"], MAX_REPEAT, "what a converter can take");
         assert_eq!(m["properties"]["a"]["maxItems"], 3);
         assert_eq!(m["properties"]["a"]["items"]["maxLength"], 5);
         assert_eq!(m["properties"]["b"]["maxItems"], DEFAULT_MAX_ITEMS);

@@ -96,12 +96,12 @@ fn a_looping_model_costs_one_bounded_attempt() {
     let c = client(endpoint(&server));
     let e = within(Duration::from_secs(3), || c.complete(LlmStage::Plan, &request(), "plan")).unwrap_err();
     assert_eq!(e.outcome(), LlmOutcome::Length, "{e}");
-    assert!(e.to_string().contains("token limit (1024 tokens)"), "{e}");
+    assert!(e.to_string().contains("token limit (640 tokens)"), "{e}");
     let reqs = server.requests();
     assert_eq!(reqs.len(), 1, "never asked again unchanged");
-    assert_eq!(reqs[0].json().unwrap()["max_tokens"], 1024, "the plan stage's default limit");
+    assert_eq!(reqs[0].json().unwrap()["max_tokens"], 640, "the plan stage's default limit");
     let call = &c.telemetry().calls()[0];
-    assert_eq!((call.outcome, call.max_tokens, call.tokens_out), (LlmOutcome::Length, Some(1024), 40));
+    assert_eq!((call.outcome, call.max_tokens, call.tokens_out), (LlmOutcome::Length, Some(640), 40));
     assert!(call.tokens_estimated);
 }
 

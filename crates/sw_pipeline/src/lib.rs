@@ -47,7 +47,7 @@ pub use edit::{EditOutcome, EditReader, edit_package, edit_structured};
 pub use edit_pose::StructuredEdit;
 pub use forge::{Forged, ForgedObject, forge};
 pub use forge_source::ForgeSource;
-pub use llm_generate::{LlmRun, Structure, generate_with_llm, plan_with_llm};
+pub use llm_generate::{LlmRun, Structure, generate_with_llm, plan_with_llm, relations_with_llm};
 pub use package::{OutputError, discard_staged_packages, validate_dir};
 pub use refine::{MAX_TURNS as REFINE_MAX_TURNS, Refined, Refiner, Turn};
 pub use robot_facts::measure as measure_robot;

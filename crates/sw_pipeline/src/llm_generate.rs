@@ -428,8 +428,9 @@ fn prompt_states_relations(prompt: &str) -> bool {
     sw_planner::plan(prompt).is_ok_and(|p| !p.relations.is_empty())
 }
 
-/// Asks the relations stage for relations between the plan's groups.
-fn ask_relations(client: &Client, plan: &mut ScenePlan) -> Result<usize, String> {
+/// Asks the relations stage for relations between the plan's groups and adds those it
+/// can read (the rest are notes); the number added, or why none could be.
+pub fn relations_with_llm(client: &Client, plan: &mut ScenePlan) -> Result<usize, String> {
     let m = relations_messages(plan);
     let req = ChatRequest::new(vec![Message::system(m.system), Message::user(m.user)])
         .with_schema(RELATIONS_SCHEMA_NAME, relations_schema());
@@ -487,7 +488,7 @@ pub fn generate_with_llm(
         && plan.objects.len() >= 2
         && client.has(LlmStage::Relations)
         && prompt_states_relations(prompt)
-        && let Err(e) = ask_relations(&client, &mut plan)
+        && let Err(e) = relations_with_llm(&client, &mut plan)
     {
         warnings.push(Warning::new(
             Stage::Plan,
@@ -521,7 +522,7 @@ pub fn generate_with_llm(
             // The paper's L3: a layout call after every asset (kept for its latency).
             if finish_client.has(LlmStage::Relations) {
                 let mut copy = plan.clone();
-                let _ = ask_relations(&finish_client, &mut copy);
+                let _ = relations_with_llm(&finish_client, &mut copy);
             }
         }
         workers.finish(plan)

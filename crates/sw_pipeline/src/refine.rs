@@ -64,7 +64,7 @@ fn refine_schema() -> Value {
         "properties": {
             "done": { "type": "boolean" },
             "question": { "type": "string", "maxLength": 300 },
-            "final_prompt": { "type": "string", "maxLength": 4000 }
+            "final_prompt": { "type": "string", "maxLength": 1000 }
         },
         "required": ["done"]
     })

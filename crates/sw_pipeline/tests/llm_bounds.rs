@@ -95,7 +95,7 @@ fn a_looping_model_costs_one_bounded_attempt_before_the_fallback() {
     assert_eq!(server.requests().len(), 1, "no retry, no repair round");
     assert!(codes(&o).contains(&"llm_answer_cut_off".to_string()), "{:?}", o.report.warnings);
     let call = &o.report.llm_calls[0];
-    assert_eq!((call.outcome, call.max_tokens), (LlmOutcome::Length, Some(1024)));
+    assert_eq!((call.outcome, call.max_tokens), (LlmOutcome::Length, Some(640)));
     assert_eq!(count(&o, "bin"), 2, "the offline plan");
 }
 
@@ -164,14 +164,15 @@ fn the_schema_the_model_is_sent_keeps_every_subject_and_bounds_every_string() {
     assert!(variants.len() >= 13);
     for v in variants {
         assert_eq!(v["required"][0], "subject", "{v}");
-        assert_eq!(v["properties"]["subject"]["maxLength"], 40, "{v}");
+        assert_eq!(v["properties"]["subject"]["pattern"], "^[a-z][a-z0-9_]{0,39}$", "{v}");
         assert_eq!(v["additionalProperties"], false, "{v}");
     }
     fn walk(v: &Value, path: &str, loose: &mut Vec<String>) {
         match v {
             Value::Object(o) => {
                 let ty = o.get("type").and_then(Value::as_str);
-                if ty == Some("string") && !["maxLength", "enum", "const"].iter().any(|k| o.contains_key(*k)) {
+                if ty == Some("string") && !["maxLength", "enum", "const", "pattern"].iter().any(|k| o.contains_key(*k))
+                {
                     loose.push(path.to_string());
                 }
                 if ty == Some("array") && !o.contains_key("maxItems") {

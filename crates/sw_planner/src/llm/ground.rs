@@ -14,6 +14,7 @@
 //! | an unknown noun (a proxy) | the model's group for those words (it may know them), else the reader's proxy |
 //! | a named robot | that model with its count; robots the prompt does not name are dropped |
 //! | a stated relation | kept, between the matching groups |
+//! | an anomaly request | exactly that request; none when the prompt asks for none |
 //!
 //! What the reader could not see stays the model's: open-vocabulary objects, implicit
 //! furniture, relations it inferred, colours, sizes and mounts.
@@ -128,6 +129,12 @@ fn redirect(plan: &mut ScenePlan, from: &str, to: &str) {
             *target = to.to_string();
         }
     }
+}
+
+/// Some words of the prompt (one to three in a row) name the robot `model`.
+fn mentions(prompt: &str, model: &str) -> bool {
+    let words = vocab::words(prompt);
+    (1..=3).any(|n| words.windows(n).any(|w| vocab::robot_model(&w.join(" ")).is_some_and(|(m, _)| m == model)))
 }
 
 fn plausible(model: f64, typical: f64) -> bool {
@@ -264,11 +271,10 @@ pub fn ground(mut plan: ScenePlan, reading: &ScenePlan) -> (ScenePlan, Grounding
         .iter()
         .map(|r| (r.model.as_str(), (r.count, r.phrase.as_str(), count_stated(reading, &r.phrase))))
         .collect();
-    let prompt_words: BTreeSet<String> = vocab::words(&reading.prompt).into_iter().collect();
     let mut kept = Vec::new();
     for r in plan.robots.drain(..) {
-        let in_prompt = named.contains_key(r.model.as_str())
-            || (named.is_empty() && vocab::words(&r.phrase).iter().any(|w| prompt_words.contains(w)));
+        let in_prompt =
+            named.contains_key(r.model.as_str()) || (named.is_empty() && mentions(&reading.prompt, &r.model));
         if in_prompt {
             kept.push(r);
         } else {
@@ -316,6 +322,19 @@ pub fn ground(mut plan: ScenePlan, reading: &ScenePlan) -> (ScenePlan, Grounding
         if let Some(r) = plan.robots.iter().find(|r| r.model == rr.model) {
             ids.insert(rr.id.clone(), r.id.clone());
         }
+    }
+    // Anomalies are injected only when the prompt asks for them, as it asks.
+    if plan.anomaly != reading.anomaly {
+        let what = |a: &Option<sw_plan::AnomalyRequest>| {
+            a.as_ref().map_or("none".to_string(), |a| format!("{:?} at {}", a.kinds, a.rate))
+        };
+        note(
+            &mut g,
+            &format!("anomalies: {}", what(&plan.anomaly)),
+            &what(&reading.anomaly),
+            "as the prompt asks".into(),
+        );
+        plan.anomaly = reading.anomaly.clone();
     }
     // Relations the prompt states.
     let object_ids: BTreeSet<String> =

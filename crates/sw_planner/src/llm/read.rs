@@ -20,7 +20,7 @@ use crate::vocab::{self, Noun};
 /// The most object instances a plan may hold (as the offline planner).
 pub(crate) const MAX_TOTAL: u32 = 2000;
 /// The most object groups read from one answer.
-pub(crate) const MAX_GROUPS: usize = 64;
+pub(crate) const MAX_GROUPS: usize = 32;
 /// The most relations read from one answer.
 pub(crate) const MAX_RELATIONS: usize = 128;
 /// The most robot entries read from one answer.
@@ -394,7 +394,7 @@ pub fn read_plan(prompt: &str, answer: &Value) -> Result<ScenePlan, PlanError> {
             &mut notes,
             &format!("{} object groups", list.len()),
             &MAX_GROUPS.to_string(),
-            "at most 64 object groups per plan",
+            "at most 32 object groups per plan",
         );
     }
     for (i, v) in list.iter().take(MAX_GROUPS).enumerate() {

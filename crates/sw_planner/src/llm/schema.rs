@@ -2,7 +2,7 @@
 //! from `sw_plan`'s types, so a new relation kind or field appears here by itself), with
 //! what the readers need of them written in:
 //!
-//! - the bounds the readers keep (ids, phrases and labels cut to length, at most 64 object
+//! - the bounds the readers keep (ids, phrases and labels cut to length, at most 32 object
 //!   groups, 128 relations, 16 robot entries, counts up to 2000, four size words): a
 //!   grammar-constrained model cannot write past them, so it cannot loop inside a string;
 //! - categories, robot models and rules profiles as enums of what the catalog, the robot
@@ -19,7 +19,14 @@
 use serde_json::{Value, json};
 use sw_plan::RoomKind;
 
-use super::fields::{MAX_ID, MAX_LABEL, MAX_TEXT};
+use super::fields::{MAX_LABEL, MAX_TEXT};
+
+/// The shape of an id: what [`super::sanitize_id`] keeps, a letter first (small models
+/// otherwise write `"1234567890…"`), at most 40 characters.
+pub const ID_PATTERN: &str = "^[a-z][a-z0-9_]{0,39}$";
+/// The longest phrase a model may copy from the prompt for one group (the reader keeps
+/// up to 200 characters from servers that do not enforce the schema).
+const MAX_PHRASE: usize = 80;
 use super::read::{MAX_GROUPS, MAX_NOTES, MAX_RELATIONS, MAX_ROBOT_GROUPS, MAX_TOTAL};
 
 /// Sets `key` of the schema at `pointer` (nothing when the contract no longer has it).
@@ -69,8 +76,8 @@ pub fn plan_schema() -> Value {
     // Object groups.
     let d = "/$defs/ObjectPlan";
     order(&mut schema, d, &["phrase", "id", "category", "count"]);
-    set(&mut schema, &format!("{d}/properties/id"), "maxLength", json!(MAX_ID));
-    set(&mut schema, &format!("{d}/properties/phrase"), "maxLength", json!(MAX_TEXT));
+    set(&mut schema, &format!("{d}/properties/id"), "pattern", json!(ID_PATTERN));
+    set(&mut schema, &format!("{d}/properties/phrase"), "maxLength", json!(MAX_PHRASE));
     let mut categories: Vec<String> = sw_catalog::categories().iter().map(|c| c.name.to_string()).collect();
     categories.push("proxy".into());
     set(&mut schema, &format!("{d}/properties/category"), "enum", strings(categories));
@@ -83,16 +90,16 @@ pub fn plan_schema() -> Value {
     // Robots.
     let d = "/$defs/RobotPlan";
     order(&mut schema, d, &["phrase", "id", "model", "count", "mount"]);
-    set(&mut schema, &format!("{d}/properties/id"), "maxLength", json!(MAX_ID));
-    set(&mut schema, &format!("{d}/properties/phrase"), "maxLength", json!(MAX_TEXT));
-    set(&mut schema, &format!("{d}/properties/near"), "maxLength", json!(MAX_ID));
+    set(&mut schema, &format!("{d}/properties/id"), "pattern", json!(ID_PATTERN));
+    set(&mut schema, &format!("{d}/properties/phrase"), "maxLength", json!(MAX_PHRASE));
+    set(&mut schema, &format!("{d}/properties/near"), "pattern", json!(ID_PATTERN));
     let mut models: Vec<String> = sw_robots::registry().iter().map(|r| r.name.to_string()).collect();
     models.sort();
     set(&mut schema, &format!("{d}/properties/model"), "enum", strings(models));
     set(&mut schema, &format!("{d}/properties/count"), "maximum", json!(sw_plan::MAX_ROBOTS));
 
     // Every plain string of a relation or a mount is an id.
-    set(&mut schema, "/$defs/Relation/properties/subject", "maxLength", json!(MAX_ID));
+    set(&mut schema, "/$defs/Relation/properties/subject", "pattern", json!(ID_PATTERN));
     for def in ["Relation", "Mount"] {
         if let Some(Value::Array(variants)) = schema.pointer_mut(&format!("/$defs/{def}/oneOf")) {
             for v in variants.iter_mut() {
@@ -101,7 +108,7 @@ pub fn plan_schema() -> Value {
                     let plain = p.get("type").and_then(Value::as_str) == Some("string")
                         && !p.as_object().is_some_and(|o| o.contains_key("const") || o.contains_key("enum"));
                     if plain && let Some(o) = p.as_object_mut() {
-                        o.insert("maxLength".into(), json!(MAX_ID));
+                        o.insert("pattern".into(), json!(ID_PATTERN));
                     }
                 }
             }
@@ -139,13 +146,14 @@ pub fn relations_schema() -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::llm::fields::MAX_ID;
 
     /// Every `"type": "string"` without a bound, enum or const, with its path.
     fn unbounded(v: &Value, path: String, out: &mut Vec<String>) {
         match v {
             Value::Object(o) => {
                 if o.get("type").and_then(Value::as_str) == Some("string")
-                    && !["maxLength", "enum", "const"].iter().any(|k| o.contains_key(*k))
+                    && !["maxLength", "enum", "const", "pattern"].iter().any(|k| o.contains_key(*k))
                 {
                     out.push(path.clone());
                 }
@@ -175,6 +183,7 @@ mod tests {
         assert_eq!(s["properties"]["objects"]["maxItems"], MAX_GROUPS);
         assert!(s.get("properties").unwrap().get("prompt").is_none());
         let r = relations_schema();
-        assert_eq!(r["$defs"]["Relation"]["properties"]["subject"]["maxLength"], MAX_ID);
+        assert_eq!(r["$defs"]["Relation"]["properties"]["subject"]["pattern"], ID_PATTERN);
+        assert!(ID_PATTERN.ends_with(&format!("{{0,{}}}$", MAX_ID - 1)), "ids bounded as the reader cuts them");
     }
 }
