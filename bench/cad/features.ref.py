@@ -212,3 +212,48 @@ for k in range(24):
     teeth.append((r * math.cos(a), r * math.sin(a)))
 gear = cq.Workplane("XY").polyline(teeth).close().extrude(6)
 result = gear.union(cyl(12, 0, 16)).cut(cyl(8, 0, 16))
+
+# ref: F_049
+result = cyl(50, 0, 20)
+for k in range(4):
+    a = math.radians(90 * k)
+    result = result.cut(cyl(5, 0, 20, 17.5 * math.cos(a), 17.5 * math.sin(a)))
+
+# ref: F_050
+result = slab(-40, 40, -20, 20, 0, 30).cut(slab(-25, 25, -10, 10, 20, 30))
+
+# ref: F_051
+result = cyl(30, 0, 50).cut(cyl(20, 0, 50))
+
+# ref: F_052
+result = slab(0, 100, -15, 15, 0, 4).union(slab(0, 100, -15, 15, 46, 50)).union(slab(0, 100, -1.5, 1.5, 4, 46))
+
+# ref: F_053
+result = cq.Workplane("XY").sphere(20)
+
+# ref: F_054
+result = cq.Workplane("XY").polygon(6, 10 / math.cos(math.radians(30))).extrude(5).cut(cyl(6, 0, 5))
+
+# ref: F_055
+result = slab(-100, 100, -50, 50, 0, 10).cut(cyl(12, 0, 10, -25, 0)).cut(cyl(12, 0, 10, 25, 0))
+
+# ref: F_056
+result = cq.Workplane("XY").box(25, 25, 25).cut(xcyl(10, -12.5, 12.5))
+
+# ref: F_057
+result = cyl(100, 0, 10).union(cyl(40, 10, 25))
+
+# ref: F_058
+result = cyl(120, 0, 12).cut(cyl(60, 0, 12))
+for k in range(8):
+    a = math.radians(45 * k)
+    result = result.cut(cyl(10, 0, 12, 47.5 * math.cos(a), 47.5 * math.sin(a)))
+
+# ref: F_059
+result = cq.Workplane("XY").add(cq.Solid.makeCone(15, 0, 50))
+
+# ref: F_060
+result = cq.Workplane("XY").box(100, 100, 8).edges("|Z").fillet(2).cut(cyl(30, -4, 4))
+
+# ref: F_061
+result = cyl(25.4, 0, 304.8).cut(cyl(25.4 - 2 * 25.4 / 16, 0, 304.8))

@@ -574,7 +574,14 @@ impl Doc {
                 .and_then(|(_, w)| role_of(w))
                 .or_else(|| before.last().and_then(|(_, w)| role_of(w)))
                 .or_else(|| upto_noun.iter().find_map(|(_, w)| role_of(w)))
-                .or_else(|| before.iter().rev().find_map(|(_, w)| role_of(w)))
+                // Before it, back to a noun ("10 mm deep pocket 50 mm": not the pocket's depth).
+                .or_else(|| {
+                    before
+                        .iter()
+                        .rev()
+                        .take_while(|(_, w)| super::lexicon::noun(w).is_none())
+                        .find_map(|(_, w)| role_of(w))
+                })
                 .unwrap_or(Role::Bare);
             // "extruded to a height of", "pitch circle diameter": the later, more specific word wins.
             let role = match role {
@@ -609,7 +616,11 @@ impl Doc {
             let mut quals: Vec<String> = before
                 .iter()
                 .chain(after.iter())
-                .map(|(_, w)| w.clone())
+                .map(|(_, w)| match w.as_str() {
+                    "inside" => "inner".to_string(),
+                    "outside" => "outer".to_string(),
+                    _ => w.clone(),
+                })
                 .filter(|w| QUALS.contains(&w.as_str()))
                 .collect();
             // "(22.5mm radius from center)": a distance from the centre, not a size.
@@ -623,8 +634,14 @@ impl Doc {
                     quals.push("from-center".into());
                 }
             }
-            // "M4 clearance holes": the screw's clearance diameter.
-            let role = if quals.iter().any(|w| w == "metric") { Role::Diameter } else { role };
+            // "M4 clearance holes": the screw's clearance diameter; "a 95 mm bolt circle": the
+            // circle's diameter.
+            let role =
+                if quals.iter().any(|w| w == "metric") || (role == Role::Bare && quals.iter().any(|w| w == "circle")) {
+                    Role::Diameter
+                } else {
+                    role
+                };
             // "counterbored to 14mm diameter", "countersunk to 8mm".
             for (from, to) in [("counterbored", "counterbore"), ("countersunk", "countersink")] {
                 if before.iter().chain(after.iter()).any(|(_, w)| w == from) && !quals.iter().any(|q| q == to) {

@@ -236,6 +236,37 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 i = e;
                 continue;
             }
+            // "1/16 inch": a fraction.
+            if at(j) == Some('/') && at(j + 1).is_some_and(|d| d.is_ascii_digit()) && v.fract() == 0.0 {
+                let mut k = j + 1;
+                while at(k).is_some_and(|d| d.is_ascii_digit()) {
+                    k += 1;
+                }
+                let den: String = chars[j + 1..k].iter().map(|c| c.1).collect();
+                if let Ok(d) = den.parse::<f64>()
+                    && d > 0.0
+                {
+                    // Put the fraction back as one number and read its unit again.
+                    let value = v / d;
+                    let mut e = k;
+                    while at(e) == Some(' ') {
+                        e += 1;
+                    }
+                    let mut f = e;
+                    while at(f).is_some_and(|c| c.is_ascii_alphabetic()) {
+                        f += 1;
+                    }
+                    let unit: String = chars[e..f].iter().map(|c| c.1).collect::<String>().to_ascii_lowercase();
+                    if let Some(u) = unit_factor(&unit) {
+                        toks.push(Token { kind: Tk::Num { v: value, unit: Some(u), pm, signed }, start, end: pos(f) });
+                        i = f;
+                    } else {
+                        toks.push(Token { kind: Tk::Num { v: value, unit: None, pm, signed }, start, end: pos(k) });
+                        i = k;
+                    }
+                    continue;
+                }
+            }
             toks.push(Token { kind: Tk::Num { v, unit: None, pm, signed }, start, end: pos(j) });
             i = j;
             continue;

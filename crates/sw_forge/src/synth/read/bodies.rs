@@ -555,6 +555,8 @@ fn cone(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         .take_diameter(e, &["base"], &[])
         .or_else(|| r.take_diameter(e, &["bottom"], &[]))
         .or_else(|| r.take_diameter(e, &[], &["top", "tip"]));
+    // "a 30mm base": a bare length named for the base.
+    let base = base.or_else(|| r.take(e, &[Role::Bare], &["base"], &[]));
     let base = need(base, "base diameter", r, e)?;
     let top = r.take_diameter(e, &["top"], &[]).unwrap_or(0.0);
     let h = need(r.take(e, &[Role::Height, Role::Length], &[], &[]), "height", r, e)?;

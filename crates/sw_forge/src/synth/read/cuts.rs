@@ -384,7 +384,18 @@ fn radial_hole(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, tg: &[usize]) -
     let full = extent(r, &bodies, axis);
     let zspan = extent(r, &bodies, Axis::Z);
     let z = r.take_coord(e, Axis::Z).unwrap_or((zspan[0] + zspan[1]) / 2.0);
-    let both = r.says(e, "both") || r.says(e, "across");
+    // Through one wall of a ring (a set screw), else right through: "both walls", "a
+    // through hole", or a host with no bore.
+    let bored =
+        r.built.iter().flatten().any(|b| {
+            b.cut && b.axis == Axis::Z && b.at.len() == 1 && b.at[0][0].abs() < 1e-9 && b.at[0][1].abs() < 1e-9
+        });
+    let ring = host.and_then(|h| r.built[h].as_ref()).is_some_and(|b| b.id.is_some()) || bored;
+    let both = r.says(e, "both")
+        || r.says(e, "across")
+        || r.els[e].has_mod("through")
+        || r.els[e].noun == "through-hole"
+        || !ring;
     let from = if both { full[0] - EXTRA } else { (full[0] + full[1]) / 2.0 };
     let to = full[1] + EXTRA;
     let (u, v) = axis.uv();

@@ -244,11 +244,17 @@ pub fn circle(r: &mut Reader<'_>, e: usize, count: u32) -> Option<Vec<[f64; 2]>>
         .or_else(|| r.find(e, &[Role::Diameter, Role::Radius], &["bolt"], &["hole"]))?;
     let d = &r.doc.dims[k];
     let pcd = if d.role == Role::Radius { 2.0 * d.mm } else { d.mm };
+    // The angles given, when there are as many as copies; none given, equal spacing from 0;
+    // another number of them is not a circle of these copies (left to be refused).
+    let given = r.els[e].angles.iter().filter(|(t, _)| !r.used_angles.contains(t)).count();
+    let angles = if given == count as usize {
+        take_angles(r, e)
+    } else if given == 0 {
+        (0..count).map(|i| 360.0 * f64::from(i) / f64::from(count)).collect()
+    } else {
+        return None;
+    };
     r.used_dims[k] = true;
-    let mut angles = take_angles(r, e);
-    if angles.len() != count as usize {
-        angles = (0..count).map(|i| 360.0 * f64::from(i) / f64::from(count)).collect();
-    }
     Some(angles.iter().map(|a| [pcd / 2.0 * a.to_radians().cos(), pcd / 2.0 * a.to_radians().sin()]).collect())
 }
 

@@ -93,7 +93,13 @@ fn beam(r: &mut Reader<'_>, t: usize, s: Section) -> Res<()> {
     let w = piece(r, t, "flange", &[Role::Width]).or_else(|| r.take(t, &[Role::Width], &[], &[]));
     let w = need(w, "flange width", r, t)?;
     let tf = need(piece(r, t, "flange", &[Role::Thickness]), "flange thickness", r, t)?;
-    let tw = need(piece(r, t, "web", &[Role::Thickness]), "web thickness", r, t)?;
+    // "a 3 mm web": a bare length before it is its thickness.
+    let tw = need(
+        piece(r, t, "web", &[Role::Thickness]).or_else(|| piece(r, t, "web", &[Role::Bare])),
+        "web thickness",
+        r,
+        t,
+    )?;
     if tw >= w || (s == Section::I && 2.0 * tf >= h) || tf >= h {
         return Err(Refusal::new(r.quote_element(t), "its flanges or web do not fit its height and width"));
     }
