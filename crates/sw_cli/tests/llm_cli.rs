@@ -339,3 +339,35 @@ fn llm_generate_forges_what_the_catalog_lacks_and_stores_it() {
     let found = String::from_utf8_lossy(&search.stdout);
     assert!(found.contains("spectrum analyzer"), "{found}\n{}", String::from_utf8_lossy(&search.stderr));
 }
+
+#[test]
+fn llm_status_probes_each_server_once() {
+    // A llama-cpp-python-like server: it lists its model, answers a token, refuses
+    // `json_schema` with a 500 naming response_format and follows the schema inside
+    // `json_object`.
+    let server = MockServer::start(|req| {
+        if req.method == "GET" {
+            return Reply::models(&["smollm2"]);
+        }
+        match req.response_format().as_deref() {
+            Some("json_schema") => {
+                Reply::status(500, "('body', 'response_format', 'type'): Input should be 'text' or 'json_object'")
+            }
+            Some(_) => Reply::answer(r#"{"answer": "yes"}"#),
+            None => Reply::answer("OK"),
+        }
+    })
+    .unwrap();
+    let o = run(&["llm", "status"], Some(&server.base_url()), "");
+    assert_eq!(o.code, Some(0), "{o:?}");
+    assert!(o.stdout.contains("lists smollm2 (the configured model is not among them)"), "{}", o.stdout);
+    assert!(o.stdout.contains("schema as json_object_schema, followed"), "{}", o.stdout);
+    assert!(o.stdout.contains("1 in flight"), "a loopback server takes one call at a time: {}", o.stdout);
+    // Every stage shares the server: it is probed once (a model list, a token, a refused
+    // and an accepted schema call).
+    assert_eq!(server.requests().len(), 4, "{:?}", server.requests().iter().map(|r| &r.path).collect::<Vec<_>>());
+    let j = run(&["llm", "status", "--json"], Some(&server.base_url()), "").json();
+    assert_eq!(j["stages"][0]["probe"]["dialect"], "json_object_schema");
+    let quiet = run(&["llm", "status", "--no-probe"], Some(&server.base_url()), "");
+    assert!(quiet.code == Some(0) && !quiet.stdout.contains("lists"), "{quiet:?}");
+}
