@@ -255,19 +255,30 @@ pub(crate) fn beside(ctx: &Ctx<'_>, b: &Aabb, target: &str, k: usize) -> Vec<Spo
 }
 
 pub(crate) fn beside_bodies(b: &Aabb, targets: &[Body]) -> Vec<Spot> {
+    let gaps: Vec<f64> = [0.0, 0.1, 0.25, 0.45, 0.8].iter().map(|e| FLOOR_GAP + 0.01 + e).collect();
+    apart(b, targets, &gaps)
+}
+
+/// Poses beside each target at each of `gaps` (footprint to footprint), on its four
+/// sides, centred and slid along each side.
+pub(crate) fn apart(b: &Aabb, targets: &[Body], gaps: &[f64]) -> Vec<Spot> {
     let mut out = Vec::new();
-    for extra in [0.0, 0.1, 0.25, 0.5, 0.8] {
+    for &g in gaps {
         for t in targets {
             let f = axis(t.front);
             let side = [-f[1], f[0]];
             let tc = t.center();
-            let g = FLOOR_GAP + 0.01 + extra;
             let yaw = yaw_facing(f[0], f[1]);
             for (dir, shift_dir) in [(side, f), ([-side[0], -side[1]], f), (f, side), ([-f[0], -f[1]], side)] {
                 let face = tc[0] * dir[0] + tc[1] * dir[1] + t.half_along(dir) + g;
                 let mid = tc[0] * shift_dir[0] + tc[1] * shift_dir[1];
-                for turn in [0.0, PI, PI / 2.0, -PI / 2.0] {
-                    out.push(aligned(b, yaw + turn, dir, face, shift_dir, mid));
+                // Centred on the side, then slid along it (to reach two things at once,
+                // or to step out of a corner).
+                let half = t.half_along(shift_dir);
+                for shift in [0.0, 0.5, -0.5, 1.0, -1.0] {
+                    for turn in [0.0, PI, PI / 2.0, -PI / 2.0] {
+                        out.push(aligned(b, yaw + turn, dir, face, shift_dir, mid + shift * half));
+                    }
                 }
             }
         }
@@ -399,7 +410,7 @@ fn under(ctx: &Ctx<'_>, target: &str, k: usize) -> Vec<Spot> {
 /// piece): on the side `k` first, facing the target.
 fn around_one(ctx: &Ctx<'_>, b: &Aabb, target: &str, k: usize) -> Vec<Spot> {
     let Some(t) = relate::target_bodies(ctx, target).into_iter().next() else { return Vec::new() };
-    around_body(b, &t, k, &OUTSIDE)
+    around_body(b, &t, &sides_from(k), &OUTSIDE)
 }
 
 /// Gaps to a target's face for pieces standing around it, m.
@@ -407,21 +418,28 @@ pub(crate) const OUTSIDE: [f64; 4] = [0.07, 0.22, 0.42, 0.67];
 /// Gaps for seats around a table: tucked under its top first (negative), then out.
 pub(crate) const TUCKED: [f64; 8] = [-0.3, -0.2, -0.1, 0.0, 0.07, 0.2, 0.35, 0.6];
 
-/// Poses on the four sides of a body, side `k % 4` first (every gap in `tucks`), then
-/// the others in turn, each facing the body.
-pub(crate) fn around_body(b: &Aabb, t: &Body, k: usize, tucks: &[f64]) -> Vec<Spot> {
+/// The four sides of a body, side `k % 4` first: 0 front, 1 right, 2 back, 3 left.
+pub(crate) fn sides_from(k: usize) -> [usize; 4] {
+    [k % 4, (k + 1) % 4, (k + 2) % 4, (k + 3) % 4]
+}
+
+/// Poses on the given sides of a body (0 front, 1 right, 2 back, 3 left), in that
+/// order, every gap in `tucks` on a side before the next, each facing the body.
+pub(crate) fn around_body(b: &Aabb, t: &Body, sides: &[usize], tucks: &[f64]) -> Vec<Spot> {
     let f = axis(t.front);
     let dirs = [f, [f[1], -f[0]], [-f[0], -f[1]], [-f[1], f[0]]];
     let tc = t.center();
     let mut out = Vec::new();
-    for s in 0..4 {
-        let n = dirs[(k + s) % 4];
+    for &s in sides {
+        let n = dirs[s % 4];
         let side = [-n[1], n[0]];
         let mid = tc[0] * side[0] + tc[1] * side[1];
-        let half = t.half_along(side);
+        // Shifts along the side: within the target's length, or by the piece's own width
+        // when the target is small (a robot) and several pieces share a side.
+        let half = t.half_along(side).max(0.5 * (b.max[0] - b.min[0]) + 0.03);
         for tuck in tucks {
             let face = tc[0] * n[0] + tc[1] * n[1] + t.half_along(n) + tuck;
-            for shift in [0.0, -0.5, 0.5, -0.8, 0.8] {
+            for shift in [0.0, -0.5, 0.5, -0.8, 0.8, -1.1, 1.1] {
                 let yaw = yaw_facing(-n[0], -n[1]);
                 out.push(aligned(b, yaw, n, face, side, mid + shift * half));
             }

@@ -87,6 +87,15 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
         });
         companion = Some(rel);
     }
+    // "a workbench between the lathe and the drill press": the second of the two keeps
+    // room for what goes between them.
+    specific.extend(room_between(ctx, &group, k, &b));
+    // The instances an arm works at stay together, within its reach ("two pallets").
+    let tended =
+        k > 0 && ctx.input.robots.iter().any(|r| crate::reach::work_group(ctx, r).as_deref() == Some(group.as_str()));
+    if tended && rels.is_empty() {
+        specific.extend(candidates::beside(ctx, &b, &group, 0));
+    }
     for r in &rels {
         specific.extend(candidates::for_relation(ctx, &b, &group, k, r));
     }
@@ -169,6 +178,55 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     }
     ctx.commit(idx, spot, Support::Floor);
     true
+}
+
+/// Poses for an instance of `group` that leave room between it and the other target of
+/// a "between" whose subject is still to be placed: as far from the other as the
+/// subject is wide (and a robot's clearance), on any side of it.
+fn room_between(ctx: &Ctx<'_>, group: &str, k: usize, b: &Aabb) -> Vec<Spot> {
+    let mut out = Vec::new();
+    for r in &ctx.input.plan.relations {
+        let RelationKind::Between { first, second } = &r.kind else { continue };
+        let other = if first == group && second == group {
+            if k == 0 {
+                continue;
+            }
+            group
+        } else if first == group {
+            second.as_str()
+        } else if second == group {
+            first.as_str()
+        } else {
+            continue;
+        };
+        let others: Vec<Body> = relate::bodies(ctx, other).into_iter().map(|(_, b)| b).collect();
+        if others.is_empty() {
+            continue;
+        }
+        // How wide the subject is, and the room it needs.
+        let robot = ctx.input.robots.iter().find(|x| x.group == r.subject);
+        let width = match robot {
+            Some(rb) => {
+                let k = union(&rb.keepout);
+                k.size()[0].min(k.size()[1]) + if rb.is_arm { 0.1 } else { 2.0 * 0.25 }
+            }
+            None => ctx.instances(&r.subject).first().map_or(0.6, |&i| {
+                let s = ctx.bounds[i].size();
+                s[0].min(s[1])
+            }),
+        };
+        // The targets' own keep-clear space stays clear of it too.
+        let zone = |g: &str| {
+            ctx.instances(g).first().map_or(0.0, |&i| {
+                let c = &ctx.clearances[i];
+                c.front.max(c.back).max(c.sides)
+            })
+        };
+        let width = width + zone(group) + zone(other);
+        let gaps: Vec<f64> = [0.15, 0.3, 0.5, 0.8].iter().map(|e| width + e).collect();
+        out.extend(candidates::apart(b, &others, &gaps));
+    }
+    out
 }
 
 /// Names each relation of the object that its final pose does not keep.
@@ -300,5 +358,5 @@ fn seats_at_tables(ctx: &Ctx<'_>, idx: usize, k: usize) -> Vec<Spot> {
     let all: Vec<Body> = tables.iter().flat_map(|t| relate::bodies(ctx, t)).map(|(_, b)| b).collect();
     let n = all.len().max(1);
     let t = all[k % n];
-    candidates::around_body(&ctx.bounds[idx], &t, k / n, &candidates::TUCKED)
+    candidates::around_body(&ctx.bounds[idx], &t, &candidates::sides_from(k / n), &candidates::TUCKED)
 }

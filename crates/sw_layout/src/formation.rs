@@ -571,37 +571,63 @@ fn stacks(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
     true
 }
 
-/// Around a target: members spread over its sides in turn, facing it.
+/// Around a target: members spread over its sides in turn, facing it. Barriers
+/// (screens, fences, 1.2 m and taller) keep to three sides, leaving the fourth open to
+/// walk in; a fourth side is used only when the three are full.
 fn around(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize], target: &str) -> bool {
     let targets = relate::bodies(ctx, target);
     if targets.is_empty() {
         return false;
     }
     let guard = crate::guards::is_guard_of_arm(ctx, idxs[0], target);
+    let barrier = ctx.bounds[idxs[0]].max[2] - ctx.bounds[idxs[0]].min[2] >= 1.2;
     let n_targets = targets.len();
-    let per = idxs.len().div_ceil(n_targets);
+    let per = idxs.len().div_ceil(n_targets).max(1);
     let start = (candidates::group_rng(ctx, group) % 4) as usize;
+    let mut used: Vec<Vec<usize>> = vec![Vec::new(); n_targets];
     let mut all_ok = true;
     for (k, &idx) in idxs.iter().enumerate() {
-        let t = targets[(k / per.max(1)).min(n_targets - 1)].1;
-        let local_k = k % per.max(1);
+        let ti = (k / per).min(n_targets - 1);
+        let t = targets[ti].1;
+        let local_k = k % per;
         let b = ctx.bounds[idx];
-        // Barriers (screens, fences) on three sides, leaving the fourth open to walk in.
-        let barrier = b.max[2] - b.min[2] >= 1.2;
-        let cands = if guard {
-            crate::guards::ring(ctx, idx, target, if barrier { start + local_k % 3 } else { start + local_k })
-        } else {
-            // Opposite sides first for two, then round the remaining sides.
-            let side = if barrier { [0, 2, 1][local_k % 3] + start } else { [0, 2, 1, 3][local_k % 4] + start };
-            let tucks: &[f64] =
-                if ctx.input.objects[idx].has_tag("seating") { &candidates::TUCKED } else { &candidates::OUTSIDE };
-            candidates::around_body(&b, &t, side, tucks)
-        };
+        // Opposite sides first for two, then round the others.
+        let pattern: &[usize] = if barrier { &[0, 2, 1] } else { &[0, 2, 1, 3] };
+        let want = (pattern[local_k % pattern.len()] + start) % 4;
+        let mut order: Vec<usize> = vec![want];
+        for s in pattern.iter().map(|p| (p + start) % 4) {
+            if !order.contains(&s) {
+                order.push(s);
+            }
+        }
+        if barrier && used[ti].len() >= 3 {
+            // Three sides are taken: the open fourth stays open unless nothing else fits.
+            order.retain(|s| used[ti].contains(s));
+        }
+        let open = (3 + start) % 4;
+        if barrier && !order.contains(&open) {
+            order.push(open);
+        }
+        let tucks: &[f64] =
+            if ctx.input.objects[idx].has_tag("seating") { &candidates::TUCKED } else { &candidates::OUTSIDE };
         let mut done = false;
-        for spot in cands {
-            if floor::fits_floor(ctx, idx, &spot, &[]) && floor::keeps_egress(ctx, idx, &spot) {
-                ctx.commit(idx, spot, Support::Floor);
-                done = true;
+        for side in order {
+            let cands = if guard {
+                crate::guards::ring(ctx, idx, target, &[side])
+            } else {
+                candidates::around_body(&b, &t, &[side], tucks)
+            };
+            for spot in cands {
+                if floor::fits_floor(ctx, idx, &spot, &[]) && floor::keeps_egress(ctx, idx, &spot) {
+                    ctx.commit(idx, spot, Support::Floor);
+                    if !used[ti].contains(&side) {
+                        used[ti].push(side);
+                    }
+                    done = true;
+                    break;
+                }
+            }
+            if done {
                 break;
             }
         }

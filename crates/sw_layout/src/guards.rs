@@ -19,8 +19,9 @@ pub(crate) fn arm_at(r: &RobotItem, group: &str) -> bool {
     matches!(&r.mount, RobotMount::Surface { group: g } if g == group) || r.near.as_deref() == Some(group)
 }
 
-/// Guard poses on a square ring around the target, side `k % 4` first, fronts inwards.
-pub(crate) fn ring(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spot> {
+/// Guard poses on a square ring around the target, on the given sides in that order
+/// (0 south, 1 east, 2 north, 3 west), fronts inwards.
+pub(crate) fn ring(ctx: &Ctx<'_>, idx: usize, target: &str, sides: &[usize]) -> Vec<Spot> {
     let Some((_, _, distance, _)) = ctx.profile.fence_distance() else { return Vec::new() };
     let arms: Vec<&RobotItem> =
         ctx.input.robots.iter().filter(|r| r.is_arm && (arm_at(r, target) || r.group == target)).collect();
@@ -46,9 +47,8 @@ pub(crate) fn ring(ctx: &Ctx<'_>, idx: usize, target: &str, k: usize) -> Vec<Spo
     }
     // Side k first (every radius, every shift), then the others; a little further out
     // when something stands where the ring is (the machine the arm tends).
-    for s in 0..4 {
-        let side = (k + s) % 4;
-        let (nx, ny) = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)][side];
+    for &side in sides {
+        let (nx, ny) = [(0.0, -1.0), (1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)][side % 4];
         for (_, c, extent) in &centres {
             for extra in [0.0, 0.25, 0.5] {
                 let radius = extent + reach + distance + 0.05 + extra;

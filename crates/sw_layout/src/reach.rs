@@ -1,18 +1,31 @@
-//! An arm's reach of its work. An arm works at the instance it is mounted on, or at the
-//! nearest instance of the group it tends ("a Panda picking from the belt"); everything
-//! resting on that instance must be within its reach, and so must a conveyor's
-//! centreline. Distances are 3D, from the arm's base origin (its mount point) to the
-//! work point: an item's footprint centre where it rests, or the nearest point of the
-//! belt's centreline at the belt's top. The solver keeps them within [`REACH_USE`] of
-//! the registry's reach; the report measures the same on the written scene.
+//! An arm's reach of its work. An arm works at the group it is mounted on or tends ("a
+//! Panda picking from the belt"); everything resting on that group must be within the
+//! reach of an arm that works there (of every arm said to reach it), and so must a
+//! conveyor's centreline. Distances are 3D from the shoulder — the registry has no
+//! shoulder heights, so the solver takes a point [`SHOULDER`] above the base and keeps
+//! work within [`REACH_USE`] of the registry's reach, which holds for shoulders 0.16–0.33 m
+//! high (UR, Kinova, Panda) — to an item's centre, or the nearest point of a belt's
+//! centreline at its top. The report measures from the arm's real shoulder.
 
 use sw_geom::SupportSurface;
 
 use crate::attempt::Ctx;
 use crate::{RobotItem, RobotMount};
 
-/// Share of the registry reach the solver uses, leaving a margin for the arm's wrist.
-pub(crate) const REACH_USE: f64 = 0.85;
+/// Share of the registry reach the solver uses.
+pub(crate) const REACH_USE: f64 = 0.92;
+/// Height of the solver's shoulder point above the arm's base, m.
+pub(crate) const SHOULDER: f64 = 0.25;
+
+/// The solver's shoulder point of an arm whose base is at `base`.
+pub(crate) fn shoulder(base: [f64; 3]) -> [f64; 3] {
+    [base[0], base[1], base[2] + SHOULDER]
+}
+
+/// Whether an arm at `base` with `reach` reaches `p`.
+pub(crate) fn reaches(base: [f64; 3], reach: f64, p: [f64; 3]) -> bool {
+    dist(shoulder(base), p) <= REACH_USE * reach
+}
 
 /// The group an arm works at: the surface it is mounted on, else the group it tends
 /// (`near`), else the target of a reach relation.
@@ -94,7 +107,8 @@ pub(crate) fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// machine's side within reach.
 pub(crate) fn can_work_at(ctx: &Ctx<'_>, base: [f64; 3], reach: f64, idx: usize) -> bool {
     if let Some((a, b)) = belt_line(ctx, idx) {
-        return dist(base, nearest_on_segment(a, b, base)) <= REACH_USE * reach;
+        let sh = shoulder(base);
+        return reaches(base, reach, nearest_on_segment(a, b, sh));
     }
     let Some(spot) = ctx.placed[idx].as_ref().map(|p| p.spot) else { return false };
     match top_surface(ctx, idx) {
@@ -110,7 +124,7 @@ pub(crate) fn can_work_at(ctx: &Ctx<'_>, base: [f64; 3], reach: f64, idx: usize)
                 w.iter().map(|p| p[1]).fold(f64::NEG_INFINITY, f64::max),
             );
             let p = [base[0].clamp(x0, x1), base[1].clamp(y0, y1), spot.z + s.z];
-            dist(base, p) <= 0.5 * reach
+            dist(shoulder(base), p) <= 0.75 * reach
         }
         None => {
             let b = ctx.bounds[idx].transformed(&spot.pose());
@@ -131,22 +145,43 @@ pub(crate) fn work_point(ctx: &Ctx<'_>, base: [f64; 3], idx: usize) -> Option<[f
     Some(spot.apply([0.5 * (b.min[0] + b.max[0]), 0.5 * (b.min[1] + b.max[1]), b.max[2]]))
 }
 
-/// The placed arms working at object `idx`: their base positions and reaches.
-pub(crate) fn arms_at(ctx: &Ctx<'_>, idx: usize) -> Vec<([f64; 3], f64)> {
-    let host = &ctx.input.objects[idx];
-    ctx.input
+/// The placed arms an item on object `idx` must be in reach of: every arm said to reach
+/// the item's group (`reaching`), else those that work at `idx`'s group (any one will do).
+/// Returns the arms (base, reach) and whether all of them must reach.
+pub(crate) fn arms_for(ctx: &Ctx<'_>, idx: usize, item_group: &str) -> (Vec<([f64; 3], f64)>, bool) {
+    let placed = |ri: usize| ctx.robots[ri].as_ref().map(|p| (p.pos, ctx.input.robots[ri].reach));
+    let said: Vec<([f64; 3], f64)> = ctx
+        .input
         .robots
         .iter()
         .enumerate()
-        .filter_map(|(ri, r)| {
-            let p = ctx.robots[ri].as_ref()?;
-            let group = work_group(ctx, r)?;
-            if group != host.group {
-                return None;
-            }
-            let on_it = p.mounted_on.as_deref() == Some(host.name.as_str());
-            let works = on_it || work_instance(ctx, &group, p.pos) == Some(idx);
-            works.then_some((p.pos, r.reach))
+        .filter(|(_, r)| {
+            r.is_arm
+                && ctx
+                    .relations(&r.group)
+                    .iter()
+                    .any(|k| matches!(k, sw_plan::RelationKind::Reach { target } if target == item_group))
         })
-        .collect()
+        .filter_map(|(ri, _)| placed(ri))
+        .collect();
+    if !said.is_empty() {
+        return (said, true);
+    }
+    let host = &ctx.input.objects[idx];
+    let at: Vec<([f64; 3], f64)> = ctx
+        .input
+        .robots
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| work_group(ctx, r).as_deref() == Some(host.group.as_str()))
+        .filter_map(|(ri, _)| placed(ri))
+        .collect();
+    (at, false)
+}
+
+/// How many instances of `group` an arm at `base` can work at.
+pub(crate) fn instances_in_reach(ctx: &Ctx<'_>, base: [f64; 3], reach: f64, group: &str) -> (usize, usize) {
+    let all = ctx.placed_instances(group);
+    let n = all.iter().filter(|(i, _)| can_work_at(ctx, base, reach, *i)).count();
+    (n, all.len())
 }

@@ -237,8 +237,10 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         candidates
             .extend(crate::candidates::for_relation(ctx, &cb, &robot.group, turn, r).into_iter().map(|s| (s, true)));
     }
+    // With no work named and nothing said, open floor is as good as anywhere.
+    let anywhere = named.is_none() && rels.is_empty();
     for s in free_grid(ctx, &cb, &format!("{}#carrier", robot.group), true).iter().copied() {
-        candidates.push((s, false));
+        candidates.push((s, anywhere));
     }
     // The arm's stand is the operator's place at its work: it may stand in the work's
     // keep-clear space.
@@ -249,19 +251,30 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
     let ignore: Vec<&str> = exempt.iter().map(String::as_str).collect();
     let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
     let mut fallback: Option<CarrierSpot> = None;
+    let mut fallback_score = 0u8;
     for (spot, preferred) in candidates {
+        // Past the places beside its work, a place in reach found there is the best left.
+        if !preferred && fallback_score >= 2 {
+            break;
+        }
         if !fits_floor(ctx, ci, &spot, &ignore) {
             continue;
         }
         let base = spot.apply([0.0, 0.0, top]);
         // The instance it works at, and that it can: a belt within reach, a surface at hand.
         let work = work_groups.iter().find_map(|g| reach::work_instance(ctx, g, base));
-        let in_reach =
-            !robot.is_arm || named.is_none() || work.is_some_and(|w| reach::can_work_at(ctx, base, robot.reach, w));
+        // Every instance of its work within reach ("next to two pallets"), else at least one.
+        let (reached, instances) = match (&named, robot.is_arm) {
+            (Some(g), true) => reach::instances_in_reach(ctx, base, robot.reach, g),
+            _ => (1, 1),
+        };
+        let in_reach = reached > 0;
         let body = crate::relate::Body::object(&ctx.local[ci], &spot);
         let holds = checks.iter().all(|c| c.holds(ctx, &body, 1));
-        let good = preferred && in_reach && holds;
-        if !good && fallback.is_some() {
+        let good = preferred && reached == instances && holds;
+        // A fallback is replaced only by a better one: in reach beats out of reach.
+        let score = u8::from(preferred && in_reach) * 2 + u8::from(holds);
+        if !good && fallback_score >= score && fallback.is_some() {
             continue;
         }
         let (tx, ty) = work.and_then(|w| reach::work_point(ctx, base, w)).map_or((0.0, 0.0), |p| (p[0], p[1]));
@@ -276,6 +289,7 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         }
         if !good {
             fallback = Some((spot, rspot, boxes, work, in_reach, holds));
+            fallback_score = score;
             continue;
         }
         drop(checks);
@@ -353,7 +367,7 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
     let mut pts: Vec<(f64, f64, Option<f64>)> = Vec::new();
     for r in &rels {
         for s in crate::candidates::for_relation(ctx, &keep, &robot.group, ri, r) {
-            pts.push((s.x, s.y, None));
+            pts.push((s.x, s.y, Some(s.yaw)));
         }
     }
     let step = 0.1;
@@ -377,11 +391,18 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
     };
     grid.sort_by(|a, b| key(a).total_cmp(&key(b)));
     pts.extend(grid);
+    let names: Vec<String> = ctx.input.objects.iter().map(|o| o.name.clone()).collect();
+    let object_names: Vec<&str> = names.iter().map(String::as_str).collect();
     let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
     let mut fallback: Option<(Spot, Vec<Aabb>)> = None;
-    for (x, y, _) in pts {
+    for (x, y, given) in pts {
         let (tx, ty) = targets.first().copied().unwrap_or((0.0, 0.0));
-        let yaw = if (tx - x).hypot(ty - y) < 1e-6 { 0.0 } else { robot_yaw_facing(tx - x, ty - y) };
+        // A relation's pose keeps its yaw (along an aisle); else facing its work.
+        let yaw = match given {
+            Some(y) => y,
+            None if (tx - x).hypot(ty - y) < 1e-6 => 0.0,
+            None => robot_yaw_facing(tx - x, ty - y),
+        };
         let spot = Spot::new(x, y, 0.0, yaw);
         let boxes = robot_boxes(robot, &spot);
         let body = crate::relate::robot_body(robot, &spot);
@@ -398,10 +419,15 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
             .collect();
         let inside = ctx.space.inside(&crate::space::union(&inflated));
         let fronts = ctx.access.clone();
+        // A mobile robot moves out of the way: it blocks no exit route (an arm standing
+        // on the floor does).
         let keeps_routes = || -> bool {
-            ctx.egress.clone().is_none_or(|mut g| g.keeps_connected(&crate::space::union(&boxes), &fronts))
+            !robot.is_arm
+                || ctx.egress.clone().is_none_or(|mut g| g.keeps_connected(&crate::space::union(&boxes), &fronts))
         };
-        if inside && ctx.space.fits(&boxes, MOBILE_GAP.max(FLOOR_GAP), &[], true, &[]) && keeps_routes() {
+        // A mobile robot may stand in the access space in front of shelving (that is
+        // what the space is for), not in the doorway.
+        if inside && ctx.space.fits(&boxes, MOBILE_GAP.max(FLOOR_GAP), &[], true, &object_names) && keeps_routes() {
             if all_hold {
                 drop(checks);
                 commit(ctx, ri, robot, spot, boxes, "floor", None, None);

@@ -119,9 +119,10 @@ fn place_on_group(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize, in_reac
             let fb = fill(&used[b]) / surfaces[b].area().max(1e-6);
             lower(a).cmp(&lower(b)).then(fa.total_cmp(&fb)).then(a.cmp(&b))
         });
-        let arms = if in_reach { reach::arms_at(ctx, hi) } else { Vec::new() };
+        let item_group = ctx.input.objects[idx].group.clone();
+        let (arms, all) = if in_reach { reach::arms_for(ctx, hi, &item_group) } else { (Vec::new(), false) };
         for si in order {
-            if try_surface(ctx, idx, hi, si, &arms) {
+            if try_surface(ctx, idx, hi, si, &arms, all) {
                 return true;
             }
         }
@@ -134,8 +135,8 @@ fn fill(rects: &[[f64; 4]]) -> f64 {
 }
 
 /// Puts the item on surface `si` of `host`, within the reach of one of `arms` (base,
-/// reach) when there are any.
-fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize, arms: &[([f64; 3], f64)]) -> bool {
+/// reach) — of every one with `all` — when there are any.
+fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize, arms: &[([f64; 3], f64)], all: bool) -> bool {
     let Some(host_spot) = ctx.placed[host].as_ref().map(|p| p.spot) else {
         return false;
     };
@@ -183,8 +184,9 @@ fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize, arms: &[([
                     continue;
                 }
                 if !arms.is_empty() {
-                    let rest = host_spot.apply([x, y, surf.z]);
-                    if !arms.iter().any(|(base, r)| reach::dist(*base, rest) <= reach::REACH_USE * r) {
+                    let centre = host_spot.apply([x, y, surf.z + 0.5 * height]);
+                    let ok = |(base, r): &([f64; 3], f64)| reach::reaches(*base, *r, centre);
+                    if !(if all { arms.iter().all(ok) } else { arms.iter().any(ok) }) {
                         continue;
                     }
                 }

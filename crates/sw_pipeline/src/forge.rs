@@ -55,6 +55,7 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
         let mut noted = false;
         let filled = crate::loads::is_filled(plan, &group.id);
         let fills = crate::loads::host_of(plan, &group.id);
+        let workpiece = crate::loads::on_arm_surface(plan, &group.id);
         // "tires leaning on the wall": flat things stand on edge.
         let leaning =
             plan.relations.iter().any(|r| r.subject == group.id && matches!(r.kind, RelationKind::Leaning { .. }));
@@ -86,6 +87,7 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
             if filled && k == 0 {
                 levels.insert(group.id.clone(), asset.surfaces.clone());
             }
+            let asset = if workpiece { crate::loads::fit_workpiece(asset) } else { asset };
             let asset = match fills.as_ref().and_then(|h| levels.get(h)) {
                 Some(l) => crate::loads::fit_item(asset, l),
                 None => asset,

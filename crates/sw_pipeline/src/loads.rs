@@ -41,6 +41,32 @@ pub(crate) fn pin_levels(a: Asset) -> Asset {
     remade(&a, &change).unwrap_or(a)
 }
 
+/// Whether `group` rests on a surface an arm is mounted on (its workpieces).
+pub(crate) fn on_arm_surface(plan: &ScenePlan, group: &str) -> bool {
+    plan.relations.iter().any(|r| {
+        r.subject == group
+            && matches!(&r.kind, RelationKind::On { target }
+                if plan.robots.iter().any(|b| matches!(&b.mount, sw_plan::Mount::OnSurface { target: t } if t == target)))
+    })
+}
+
+/// A workpiece on an arm's surface sized to be worked on: at most 0.42 m across and
+/// 0.28 m high (under the forearm of an arm at its home pose), so that what the prompt
+/// puts there fits within the arm's reach beside it.
+pub(crate) fn fit_workpiece(a: Asset) -> Asset {
+    let s = a.bounds().size();
+    let mut change: BTreeMap<&str, f64> = BTreeMap::new();
+    for (name, v, cap) in [("width", s[0], 0.42), ("depth", s[1], 0.42), ("height", s[2], 0.28)] {
+        if v > cap {
+            change.insert(name, cap);
+        }
+    }
+    if change.is_empty() {
+        return a;
+    }
+    remade(&a, &change).unwrap_or(a)
+}
+
 /// An item small enough that two fit side by side on each of `levels` and under the
 /// level above.
 pub(crate) fn fit_item(a: Asset, levels: &[SupportSurface]) -> Asset {

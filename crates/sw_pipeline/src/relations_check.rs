@@ -23,27 +23,55 @@ pub(crate) const DOOR: f64 = 2.5;
 pub(crate) const REST: f64 = 0.02;
 
 /// The relations a plan states, with what it implies for robots: an arm mounted on a
-/// surface is "on" it and reaches it; an arm that tends a group reaches it.
-pub(crate) fn stated(plan: &ScenePlan) -> Vec<Relation> {
+/// surface, a pedestal or a cart is "on" it and reaches what it works at; the pedestal
+/// under an arm stands where the arm was said to ("a UR10 on a pedestal next to the
+/// pallets").
+pub(crate) fn stated(plan: &ScenePlan, layout: &LaidOutScene) -> Vec<Relation> {
     let mut out = plan.relations.clone();
+    let add = |r: Relation, out: &mut Vec<Relation>| {
+        if !out.contains(&r) {
+            out.push(r);
+        }
+    };
     for r in &plan.robots {
         let arm = sw_robots::find(&r.model).is_some_and(|d| d.kind == sw_robots::RobotKind::Arm);
         if !arm {
             continue;
         }
-        let work = match (&r.mount, &r.near) {
-            (Mount::OnSurface { target }, _) => {
-                out.push(Relation { subject: r.id.clone(), kind: RelationKind::On { target: target.clone() } });
-                Some(target.clone())
-            }
-            (_, Some(n)) => Some(n.clone()),
-            _ => None,
+        let carrier = format!("{}_mount", r.id);
+        let has_carrier = layout.objects.iter().any(|o| o.group == carrier);
+        // Where the layout mounted an arm the prompt did not say where to put.
+        let mounted_group = layout
+            .robots
+            .iter()
+            .find(|p| p.group == r.id)
+            .and_then(|p| p.mounted_on.as_ref())
+            .and_then(|o| layout.objects.iter().find(|x| &x.name == o))
+            .map(|o| o.group.clone())
+            .filter(|g| plan.object(g).is_some());
+        let mount = match (&r.mount, mounted_group) {
+            (Mount::Auto, Some(g)) => Mount::OnSurface { target: g },
+            (m, _) => m.clone(),
         };
-        if let Some(t) = work {
-            let rel = Relation { subject: r.id.clone(), kind: RelationKind::Reach { target: t } };
-            if !out.contains(&rel) {
-                out.push(rel);
+        match &mount {
+            Mount::OnSurface { target } => {
+                add(Relation { subject: r.id.clone(), kind: RelationKind::On { target: target.clone() } }, &mut out);
             }
+            _ if has_carrier => {
+                add(Relation { subject: r.id.clone(), kind: RelationKind::On { target: carrier.clone() } }, &mut out);
+                for rel in plan.relations.iter().filter(|x| x.subject == r.id) {
+                    if matches!(rel.kind, RelationKind::NextTo { .. } | RelationKind::Near { .. }) {
+                        add(Relation { subject: carrier.clone(), kind: rel.kind.clone() }, &mut out);
+                    }
+                }
+            }
+            _ => {}
+        }
+        if let Mount::OnSurface { target } = &mount {
+            add(Relation { subject: r.id.clone(), kind: RelationKind::Reach { target: target.clone() } }, &mut out);
+        }
+        if let Some(n) = &r.near {
+            add(Relation { subject: r.id.clone(), kind: RelationKind::Reach { target: n.clone() } }, &mut out);
         }
     }
     out
@@ -103,7 +131,7 @@ impl Written {
         let p = base.pos;
         let bounds =
             Aabb { min: [p[0] - radius, p[1] - radius, p[2]], max: [p[0] + radius, p[1] + radius, p[2] + 0.3] };
-        let body = BodyGeom { pos: p, yaw: base.yaw, bounds, sites: Vec::new() };
+        let body = BodyGeom { pos: p, yaw: base.yaw, bounds, sites: Vec::new(), joints: base.joints.clone() };
         Some(Thing { name: r.name.clone(), body, robot: Some(r.model.clone()) })
     }
 
@@ -127,6 +155,7 @@ impl Written {
         plan.object(id)
             .map(|o| o.category.clone())
             .or_else(|| plan.robot(id).map(|r| r.model.clone()))
+            .or_else(|| self.layout.objects.iter().find(|o| o.group == id).map(|o| o.category.clone()))
             .unwrap_or_default()
     }
 }
@@ -262,17 +291,25 @@ pub(crate) fn attach(report: &mut sw_plan::Report, plan: &ScenePlan, dir: &Path)
     }
 }
 
+/// The words of the prompt behind a group, robot or robot's stand.
+fn phrase_of(plan: &ScenePlan, w: &Written, id: &str) -> String {
+    if plan.object(id).is_some() || plan.robot(id).is_some() {
+        return plan.phrase_of(id);
+    }
+    format!("{} under {}", w.category_of(plan, id), plan.phrase_of(id.trim_end_matches("_mount")))
+}
+
 /// Measures every stated relation of `plan` on the package written in `dir`.
 pub(crate) fn check(plan: &ScenePlan, dir: &Path) -> Result<Vec<RelationCheck>, String> {
     let w = Written::read(dir)?;
-    Ok(stated(plan).into_iter().map(|r| check_one(plan, &w, r)).collect())
+    Ok(stated(plan, &w.layout).into_iter().map(|r| check_one(plan, &w, r)).collect())
 }
 
 fn check_one(plan: &ScenePlan, w: &Written, relation: Relation) -> RelationCheck {
     let subjects = w.things(&relation.subject);
     let mut v = Verdict::new();
     if subjects.is_empty() {
-        v.fail(format!("no \"{}\" in the scene", plan.phrase_of(&relation.subject)));
+        v.fail(format!("no \"{}\" in the scene", phrase_of(plan, w, &relation.subject)));
     } else {
         crate::relations_measure::measure(plan, w, &relation, &subjects, &mut v);
     }
@@ -280,10 +317,19 @@ fn check_one(plan: &ScenePlan, w: &Written, relation: Relation) -> RelationCheck
         RelationKind::Between { first, second } => vec![w.category_of(plan, first), w.category_of(plan, second)],
         k => k.targets().iter().map(|t| w.category_of(plan, t)).collect(),
     };
+    let phrase = if plan.object(&relation.subject).is_some() || plan.robot(&relation.subject).is_some() {
+        plan.describe(&relation)
+    } else {
+        // A robot's pedestal: "the pedestal under \"a UR10\"".
+        let robot = relation.subject.trim_end_matches("_mount");
+        let mut r = relation.clone();
+        r.subject = robot.to_string();
+        format!("the stand under {}", plan.describe(&r))
+    };
     RelationCheck {
         subject_category: w.category_of(plan, &relation.subject),
         target_categories,
-        phrase: plan.describe(&relation),
+        phrase,
         held: v.held,
         measured: v.measured,
         reason: v.reason,

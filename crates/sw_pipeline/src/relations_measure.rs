@@ -569,55 +569,79 @@ fn each_with(w: &Written, subjects: &[Thing], companions: &[Thing], v: &mut Verd
     }
 }
 
-/// An arm's reach of everything on the instance it works at (and a belt's centreline).
+/// An arm's reach of what it works at, from its shoulder: everything resting on the
+/// instance it stands on or is nearest (a belt: its centreline at belt height; nothing
+/// on it: the nearest point of its top; no surface: the nearest point of its box), and
+/// every instance of the target within the reach of this arm or another of its model.
 fn reach(w: &Written, arm: &Thing, targets: &[Thing], v: &mut Verdict) {
-    let reach = arm.robot.as_deref().and_then(sw_robots::find).map_or(0.0, |d| d.reach);
-    let base = arm.body.pos;
-    // The instance it works at: the one it stands on, else the nearest.
-    let work = targets.iter().min_by(|a, b| {
-        let da = gap(&a.body.bounds, &Aabb { min: base, max: base });
-        let db = gap(&b.body.bounds, &Aabb { min: base, max: base });
-        da.total_cmp(&db)
-    });
-    let Some(work) = work else { return };
-    let mut points: Vec<[f64; 3]> = Vec::new();
-    for (name, site) in w.resting_on(work) {
-        if let Some(b) = w.geom.bodies.get(&name) {
-            let c = b.center();
-            points.push([c[0], c[1], site.z]);
-        }
-    }
-    let conveyor = w.layout.objects.iter().any(|o| o.name == work.name && o.category == "conveyor");
-    if let Some(top) = work.body.sites.iter().max_by(|a, b| a.z.total_cmp(&b.z)) {
-        let r = top.rect;
-        if conveyor {
-            // The belt's centreline, nearest point.
-            let (a, b) = if r[2] - r[0] >= r[3] - r[1] {
-                let y = 0.5 * (r[1] + r[3]);
-                ([r[0], y], [r[2], y])
-            } else {
-                let x = 0.5 * (r[0] + r[2]);
-                ([x, r[1]], [x, r[3]])
-            };
-            let along = [b[0] - a[0], b[1] - a[1]];
-            let len2 = dot(along, along).max(1e-12);
-            let k = (dot([base[0] - a[0], base[1] - a[1]], along) / len2).clamp(0.0, 1.0);
-            points.push([a[0] + k * along[0], a[1] + k * along[1], top.z]);
-        } else if points.is_empty() {
-            points.push([base[0].clamp(r[0], r[2]), base[1].clamp(r[1], r[3]), top.z]);
-        }
-    }
-    let far = points
+    let model = arm.robot.as_deref().unwrap_or_default();
+    let reach = sw_robots::find(model).map_or(0.0, |d| d.reach);
+    let shoulder_of = |t: &Thing| t.body.shoulder().unwrap_or([t.body.pos[0], t.body.pos[1], t.body.pos[2] + 0.2]);
+    let me = shoulder_of(arm);
+    // The arms of the same model that may share the work.
+    let arms: Vec<[f64; 3]> = w
+        .layout
+        .robots
         .iter()
-        .map(|p| ((p[0] - base[0]).powi(2) + (p[1] - base[1]).powi(2) + (p[2] - base[2]).powi(2)).sqrt())
-        .fold(0.0, f64::max);
-    v.set("distance_m", far);
+        .filter(|r| r.model == model)
+        .filter_map(|r| w.robot_thing(r))
+        .map(|t| shoulder_of(&t))
+        .collect();
+    let mut worst: f64 = 0.0;
+    let mut mine: f64 = f64::INFINITY;
+    for t in targets {
+        let d_me = work_distance(w, t, me);
+        mine = mine.min(d_me);
+        let best = arms.iter().map(|s| work_distance(w, t, *s)).fold(d_me, f64::min);
+        worst = worst.max(best);
+    }
+    v.set("distance_m", worst);
+    v.set("nearest_work_m", mine);
     v.set("reach_m", reach);
-    v.set("work_points", points.len() as f64);
-    if points.is_empty() {
-        v.fail(format!("{} has no work surface to reach", work.name));
-    } else if far > reach {
-        v.fail(format!("{} reaches {reach:.2} m; its work is {far:.2} m away", arm.name));
+    if mine > reach {
+        v.fail(format!("{} reaches {reach:.2} m; its nearest work is {mine:.2} m from its shoulder", arm.name));
+    } else if worst > reach {
+        v.fail(format!("some of its work is {worst:.2} m from the shoulder of every arm (reach {reach:.2} m)"));
+    }
+}
+
+/// The distance from a shoulder to the farthest point of a work instance it must reach.
+fn work_distance(w: &Written, t: &Thing, s: [f64; 3]) -> f64 {
+    let d = |p: [f64; 3]| ((p[0] - s[0]).powi(2) + (p[1] - s[1]).powi(2) + (p[2] - s[2]).powi(2)).sqrt();
+    let placed = w.layout.objects.iter().find(|o| o.name == t.name);
+    if placed.is_some_and(|o| o.movable) {
+        // A free item: its centre.
+        return d(t.body.bounds.center());
+    }
+    let conveyor = placed.is_some_and(|o| o.category == "conveyor");
+    let top = t.body.sites.iter().max_by(|a, b| a.z.total_cmp(&b.z));
+    if conveyor && let Some(top) = top {
+        let r = top.rect;
+        let (a, b) = if r[2] - r[0] >= r[3] - r[1] {
+            let y = 0.5 * (r[1] + r[3]);
+            ([r[0], y], [r[2], y])
+        } else {
+            let x = 0.5 * (r[0] + r[2]);
+            ([x, r[1]], [x, r[3]])
+        };
+        let along = [b[0] - a[0], b[1] - a[1]];
+        let k = (dot([s[0] - a[0], s[1] - a[1]], along) / dot(along, along).max(1e-12)).clamp(0.0, 1.0);
+        return d([a[0] + k * along[0], a[1] + k * along[1], top.z]);
+    }
+    let items: Vec<f64> =
+        w.resting_on(t).iter().filter_map(|(name, _)| w.geom.bodies.get(name)).map(|b| d(b.bounds.center())).collect();
+    if !items.is_empty() {
+        return items.into_iter().fold(0.0, f64::max);
+    }
+    match top {
+        Some(top) => {
+            let r = top.rect;
+            d([s[0].clamp(r[0], r[2]), s[1].clamp(r[1], r[3]), top.z])
+        }
+        None => {
+            let b = &t.body.bounds;
+            d([s[0].clamp(b.min[0], b.max[0]), s[1].clamp(b.min[1], b.max[1]), s[2].clamp(b.min[2], b.max[2])])
+        }
     }
 }
 

@@ -28,9 +28,22 @@ pub(crate) struct BodyGeom {
     /// World bounds of its collision geometry (empty for bodies with none).
     pub bounds: Aabb,
     pub sites: Vec<Site>,
+    /// World anchors of the hinge joints met first going down the body's tree (its
+    /// first child at each level): for an arm, the base pan joint, then the shoulder.
+    pub joints: Vec<[f64; 3]>,
 }
 
 impl BodyGeom {
+    /// An arm's shoulder: on the axis of its first joint (the vertical pan joint), at the
+    /// height of the next one (the lift joint) — the centre of the sphere its reach
+    /// describes. `None` for a body with fewer than two joints.
+    pub fn shoulder(&self) -> Option<[f64; 3]> {
+        match self.joints.as_slice() {
+            [pan, lift, ..] => Some([pan[0], pan[1], lift[2]]),
+            _ => None,
+        }
+    }
+
     /// The object's front: its +Y turned by its yaw.
     pub fn front(&self) -> [f64; 2] {
         [-self.yaw.sin(), self.yaw.cos()]
@@ -168,6 +181,23 @@ fn collect(e: &Element, f: &Frame, body: &mut BodyGeom, top: &Frame, meshes: &mu
     }
 }
 
+/// The hinge anchors along the first chain of bodies below `e` (frame `f`).
+fn joint_chain(e: &Element, f: &Frame, out: &mut Vec<[f64; 3]>) {
+    for j in e.children.iter().filter(|c| c.name == "joint") {
+        let kind = j.get("type").unwrap_or("hinge");
+        if kind == "hinge" {
+            out.push(f.apply(pos_of(j)));
+            break;
+        }
+    }
+    if out.len() >= 2 {
+        return;
+    }
+    if let Some(child) = e.children.iter().find(|c| c.name == "body") {
+        joint_chain(child, &f.child(child), out);
+    }
+}
+
 impl SceneGeom {
     /// Reads `scene.xml` in `dir` (and the STL files of mesh collision pieces).
     pub fn read(dir: &Path) -> Result<SceneGeom, String> {
@@ -191,8 +221,9 @@ impl SceneGeom {
             let f = Frame { pos: pos_of(b), quat: quat_of(b) };
             // Yaw of a rotation about +Z only (objects and robot bases are turned so).
             let yaw = 2.0 * f.quat[3].atan2(f.quat[0]);
-            let mut body = BodyGeom { pos: f.pos, yaw, bounds: Aabb::EMPTY, sites: Vec::new() };
+            let mut body = BodyGeom { pos: f.pos, yaw, bounds: Aabb::EMPTY, sites: Vec::new(), joints: Vec::new() };
             collect(b, &f, &mut body, &f, &mut meshes);
+            joint_chain(b, &f, &mut body.joints);
             out.bodies.insert(name.to_string(), body);
         }
         Ok(out)

@@ -249,12 +249,16 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         robot_id_of.insert(ri, id.clone());
         // An arm on or at its work reaches it.
         if def.kind == sw_robots::RobotKind::Arm {
-            let work = match (&mount, &near) {
-                (Mount::OnSurface { target }, _) => Some(target.clone()),
-                (_, Some(n)) => Some(n.clone()),
-                _ => None,
-            };
-            if let Some(t) = work {
+            let mut work: Vec<String> = Vec::new();
+            if let Mount::OnSurface { target } = &mount {
+                work.push(target.clone());
+            }
+            if let Some(n) = &near
+                && !work.contains(n)
+            {
+                work.push(n.clone());
+            }
+            for t in work {
                 plan.relations.push(Relation { subject: id.clone(), kind: RelationKind::Reach { target: t } });
             }
         }

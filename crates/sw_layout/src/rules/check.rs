@@ -187,8 +187,13 @@ pub fn check(input: &LayoutInput<'_>, scene: &LaidOutScene, profile: &Profile, d
         && !access.is_empty()
     {
         let grid = EgressGrid::new(half, width, door_zone);
-        let obstacles: Vec<Aabb> =
-            standing.iter().map(|s| s.world).chain(robot_boxes.iter().map(|(_, b)| *b)).collect();
+        // Mobile robots move out of the way; arms on the floor do not.
+        let arm = |name: &str| input.robots.iter().any(|x| x.name == name && x.is_arm);
+        let obstacles: Vec<Aabb> = standing
+            .iter()
+            .map(|s| s.world)
+            .chain(robot_boxes.iter().filter(|(n, _)| arm(n)).map(|(_, b)| *b))
+            .collect();
         let zones: Vec<Aabb> = access.iter().map(|(_, z)| *z).collect();
         let widths = grid.route_widths(&obstacles, &zones);
         for ((name, _), w) in access.iter().zip(widths) {

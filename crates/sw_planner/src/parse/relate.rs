@@ -403,6 +403,31 @@ impl Parser<'_> {
             return;
         };
         let is_arm = robot.word.kind == sw_robots::RobotKind::Arm;
+        // "two Pandas on a bench tending a printer on the same bench": an arm already
+        // mounted puts nothing more under itself; the "on" is the thing just named.
+        if cue == Cue::On
+            && !matches!(robot.mount, Mount::Auto)
+            && let [t] = targets.as_slice()
+            && !t.starts_with('@')
+            && let Some(last) = self.draft.groups.last().map(|g| g.id.clone())
+            && self.group_is_small(&last)
+            && &last != t
+        {
+            self.apply(&Subject::Group(last), cue, targets);
+            return;
+        }
+        // "a Kinova arm on a table in front of a shelf": where the table stands.
+        if let Mount::OnSurface { target: host } = &robot.mount
+            && !host.starts_with('@')
+            && matches!(
+                cue,
+                Cue::InFront | Cue::Behind | Cue::Wall(_) | Cue::Corner(_) | Cue::End(_) | Cue::Center | Cue::Door
+            )
+        {
+            let host = host.clone();
+            self.apply(&Subject::Group(host), cue, targets);
+            return;
+        }
         if targets.iter().any(|t| t.starts_with("@robot:") && t != &format!("@robot:{idx}")) && cue == Cue::On {
             return;
         }

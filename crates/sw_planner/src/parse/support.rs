@@ -134,10 +134,14 @@ impl Parser<'_> {
     /// "full of", "stocked with", "loaded with", and the "of" of "pallets of boxes" after
     /// a carrier: the small things that follow rest on it. Returns the index after.
     pub(super) fn try_support(&mut self, i: usize) -> Option<usize> {
-        let Some(Subject::Group(host)) = self.subject.clone() else { return None };
-        if !self.group_has_surface(&host) {
-            return None;
-        }
+        // The thing just named ("on a table in front of a shelf full of bins"), else the
+        // subject.
+        let last = self.draft.groups.last().map(|g| g.id.clone()).filter(|g| self.just_after_subject(i, g));
+        let subject = match &self.subject {
+            Some(Subject::Group(g)) => Some(g.clone()),
+            _ => None,
+        };
+        let host = last.into_iter().chain(subject).find(|g| self.group_has_surface(g))?;
         let two = (self.word(i), self.word(i + 1));
         let (kind, len) = match two {
             ("full" | "filled" | "stocked" | "packed" | "crammed" | "lined" | "fully", "of" | "with") => {
