@@ -18,15 +18,12 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressStyle};
 use serde::Serialize;
-use sw_pipeline::dataset::{DatasetDir, DatasetError, DatasetSpec, Resumed};
+use sw_pipeline::dataset::{DatasetDir, DatasetError, DatasetSpec, Resumed, TRIES, failure_reason};
 use sw_pipeline::{Options, PhysicsTarget, PipelineError};
 use sw_plan::AnomalyRequest;
 
 use crate::Failure;
 use crate::output::{print, print_json};
-
-/// Seeds a slot tries before it is given up (failed verification or duplicates).
-pub(crate) const TRIES: u32 = 25;
 
 #[derive(Debug, clap::Args)]
 pub(crate) struct DatasetArgs {
@@ -79,9 +76,9 @@ pub(crate) fn parse_physics(s: &str) -> Result<PhysicsTarget, String> {
 
 /// Set by Ctrl-C while a dataset runs: the run stops between stages and keeps what it made.
 static STOP: OnceLock<Arc<AtomicBool>> = OnceLock::new();
-static ACTIVE: AtomicBool = AtomicBool::new(false);
+pub(crate) static ACTIVE: AtomicBool = AtomicBool::new(false);
 
-fn stop_flag() -> Arc<AtomicBool> {
+pub(crate) fn stop_flag() -> Arc<AtomicBool> {
     STOP.get_or_init(|| Arc::new(AtomicBool::new(false))).clone()
 }
 
@@ -165,42 +162,6 @@ fn spec_of(a: &DatasetArgs) -> Result<DatasetSpec, Failure> {
     Ok(spec)
 }
 
-/// The robot drawn for a scene from `--robots` (deterministic in the prompt and seed).
-pub(crate) fn draw_robot(spec: &DatasetSpec, prompt: usize, seed: u64) -> Option<String> {
-    let list = spec.robots.as_ref()?;
-    let mut rng = sw_geom::Rng::derive(seed, &format!("dataset-robot#{prompt}"));
-    rng.pick(list).cloned()
-}
-
-/// The pipeline's options for one scene of the dataset.
-pub(crate) fn scene_options(spec: &DatasetSpec, robot: Option<&str>, seed: u64) -> Options {
-    Options {
-        seed,
-        robots: robot.map(|r| if r == "none" { Vec::new() } else { vec![r.to_string()] }),
-        anomaly: spec.anomaly.clone(),
-        physics: PhysicsTarget::parse(&spec.physics).unwrap_or_default(),
-        ..Options::default()
-    }
-}
-
-/// Why an attempt did not give a scene, in a few words (the summary counts these).
-pub(crate) fn failure_reason(failures: &[String]) -> String {
-    let f = failures.join("; ");
-    if f.contains("rejected") {
-        "did not compile".into()
-    } else if f.contains("contact") {
-        "contact deeper than 1 mm at t = 0".into()
-    } else if f.contains("moved") {
-        "moved in the settle".into()
-    } else if f.contains("unstable") {
-        "numerically unstable".into()
-    } else if f.is_empty() {
-        "not verified".into()
-    } else {
-        f.chars().take(80).collect()
-    }
-}
-
 /// What a run did.
 #[derive(Debug, Default, Serialize)]
 pub(crate) struct Summary {
@@ -215,6 +176,7 @@ pub(crate) struct Summary {
     pub resumed: Resumed,
     pub seconds: f64,
     pub scenes_per_s: f64,
+    /// Scenes made at once in this process (0: on the job queue's workers).
     pub jobs: usize,
     /// Scenes attempted by this run (made, failed and duplicates).
     pub attempts: usize,
@@ -228,8 +190,8 @@ pub(crate) struct Summary {
 
 pub(crate) fn run(a: DatasetArgs) -> Result<u8, Failure> {
     let spec = spec_of(&a)?;
-    if a.database.is_some() {
-        return Err(Failure::input("--database: the queue mode is not built yet"));
+    if let Some(db) = &a.database {
+        return crate::dataset_queue::run(&a.out, spec, db, a.data.as_deref(), a.json);
     }
     let (dir, resumed) = DatasetDir::open(&a.out, &spec).map_err(dataset_failure)?;
     let jobs = a.jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())).max(1);
@@ -332,7 +294,7 @@ fn make_scenes(dir: &DatasetDir, resumed: Resumed, jobs: usize, json: bool) -> R
     })
 }
 
-fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+pub(crate) fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     match m.lock() {
         Ok(g) => g,
         Err(poisoned) => poisoned.into_inner(),
@@ -379,8 +341,8 @@ enum Stop {
 /// One seed for slot `id` of prompt `p`: true when it became a scene of the dataset.
 fn attempt(sh: &Shared<'_>, p: usize, id: &str, seed: u64) -> Result<bool, Stop> {
     let spec = sh.dir.spec();
-    let robot = draw_robot(spec, p, seed);
-    let opts = Options { cancel: Some(sh.stop.clone()), ..scene_options(spec, robot.as_deref(), seed) };
+    let robot = spec.draw_robot(p, seed);
+    let opts = Options { cancel: Some(sh.stop.clone()), ..spec.scene_options(robot.as_deref(), seed) };
     let work = sh.dir.work_dir(id, seed).map_err(|e| Stop::Fatal(e.to_string()))?;
     let fail = |reason: String| {
         let mut st = lock(&sh.stats);
@@ -423,7 +385,7 @@ fn attempt(sh: &Shared<'_>, p: usize, id: &str, seed: u64) -> Result<bool, Stop>
 }
 
 /// A progress bar with rate and ETA on a terminal, a line every few seconds otherwise.
-struct Progress {
+pub(crate) struct Progress {
     bar: Option<ProgressBar>,
     lines: bool,
     wanted: usize,
@@ -435,7 +397,7 @@ struct Progress {
 }
 
 impl Progress {
-    fn new(json: bool, wanted: usize, done: usize) -> Self {
+    pub(crate) fn new(json: bool, wanted: usize, done: usize) -> Self {
         // Progress is on stderr, so it shows with --json too (which is about stdout).
         let _ = json;
         let terminal = std::io::stderr().is_terminal();
@@ -464,7 +426,7 @@ impl Progress {
         }
     }
 
-    fn made(&self) {
+    pub(crate) fn made(&self) {
         let done = self.done.fetch_add(1, Ordering::SeqCst) + 1;
         if let Some(b) = &self.bar {
             b.set_position(done);
@@ -479,7 +441,7 @@ impl Progress {
         }
     }
 
-    fn note(&self, text: &str) {
+    pub(crate) fn note(&self, text: &str) {
         match &self.bar {
             Some(b) => b.println(text),
             None if self.lines => eprintln!("dataset  {text}"),
@@ -510,7 +472,7 @@ impl Progress {
         );
     }
 
-    fn finish(&self) {
+    pub(crate) fn finish(&self) {
         if let Some(b) = &self.bar {
             b.finish_and_clear();
         }
@@ -518,7 +480,7 @@ impl Progress {
     }
 }
 
-fn report(s: &Summary, json: bool) {
+pub(crate) fn report(s: &Summary, json: bool) {
     if json {
         print_json(s);
         return;
@@ -533,7 +495,11 @@ fn report(s: &Summary, json: bool) {
         s.resumed.listed,
         if s.resumed.adopted > 0 { format!(", {} adopted", s.resumed.adopted) } else { String::new() }
     )];
-    lines.push(format!("rate     {:.1} scenes/s with {} jobs", s.scenes_per_s, s.jobs));
+    lines.push(if s.jobs == 0 {
+        format!("rate     {:.1} scenes/s through the job queue", s.scenes_per_s)
+    } else {
+        format!("rate     {:.1} scenes/s with {} jobs", s.scenes_per_s, s.jobs)
+    });
     let failures: Vec<String> = s.failures.iter().map(|(k, v)| format!("{v} {k}")).collect();
     lines.push(format!(
         "valid    {} of {} attempts ({:.1} %){}",

@@ -18,6 +18,7 @@ mod cmd_generate;
 mod cmd_llm;
 mod cmd_robots;
 mod cmd_serve;
+mod dataset_queue;
 mod output;
 
 use std::ffi::OsString;

@@ -103,6 +103,26 @@ pub fn adapt_document(xml: &str, target: PhysicsTarget) -> Result<(String, Vec<S
     Ok((root.to_document(), counts.notes()))
 }
 
+/// Writes MJX's contact limits into a document's `<custom>` numerics: `max_geom_pairs`
+/// (pairs kept per pair-type group, nearest bounding spheres first) and
+/// `max_contact_points` (deepest contacts kept). Native MuJoCo ignores them; the numbers
+/// come from `sw_sim::contact_budget`, measured on the scene.
+pub fn with_contact_budget(xml: &str, max_geom_pairs: u32, max_contact_points: u32) -> Result<String, XmlError> {
+    let mut root = Element::parse(xml)?;
+    root.comment = leading_comment(xml);
+    let custom = root.section("custom");
+    custom
+        .children
+        .retain(|c| !(c.name == "numeric" && matches!(c.get("name"), Some("max_geom_pairs" | "max_contact_points"))));
+    custom
+        .children
+        .push(Element::new("numeric").with("name", "max_geom_pairs").with("data", max_geom_pairs.to_string()));
+    custom
+        .children
+        .push(Element::new("numeric").with("name", "max_contact_points").with("data", max_contact_points.to_string()));
+    Ok(root.to_document())
+}
+
 /// Geom type pairs among colliding geoms that MJX lacks, e.g. `("cylinder", "box")`.
 /// A quick check of a document (the tests' independent check is `mjx.put_model` itself).
 pub fn mjx_missing_pairs(xml: &str) -> Result<Vec<(String, String)>, XmlError> {

@@ -51,6 +51,9 @@ pub struct DatasetSpec {
     /// Injected anomalies (`--anomaly`), as given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub anomaly: Option<sw_plan::AnomalyRequest>,
+    /// The dataset's id on the service's job queue, when it is made there (`--database`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub queue_id: Option<String>,
 }
 
 impl DatasetSpec {
@@ -64,6 +67,7 @@ impl DatasetSpec {
             physics: "native".into(),
             robots: None,
             anomaly: None,
+            queue_id: None,
         }
     }
 
@@ -93,6 +97,31 @@ impl DatasetSpec {
         Some((p.parse().ok()?, k.parse().ok()?))
     }
 
+    /// The robot drawn for a scene of prompt `p` at `seed` from `robots` (deterministic).
+    pub fn draw_robot(&self, p: usize, seed: u64) -> Option<String> {
+        let list = self.robots.as_ref()?;
+        let mut rng = sw_geom::Rng::derive(seed, &format!("dataset-robot#{p}"));
+        rng.pick(list).cloned()
+    }
+
+    /// The pipeline's options for a scene of this dataset at `seed` with `robot` drawn.
+    pub fn scene_options(&self, robot: Option<&str>, seed: u64) -> crate::Options {
+        crate::Options {
+            seed,
+            robots: robot.map(|r| if r == "none" { Vec::new() } else { vec![r.to_string()] }),
+            anomaly: self.anomaly.clone(),
+            physics: crate::PhysicsTarget::parse(&self.physics).unwrap_or_default(),
+            ..crate::Options::default()
+        }
+    }
+
+    /// The `t`-th seed a slot tries on the job queue: slot `k` of `count` takes
+    /// `seed + k + t·count`, so slots never share a seed and a slot's retry after a lost
+    /// worker tries the same seeds again.
+    pub fn queue_seed(&self, k: u32, t: u32) -> u64 {
+        self.seed.saturating_add(u64::from(k)).saturating_add(u64::from(t) * u64::from(self.count))
+    }
+
     fn differences(&self, other: &DatasetSpec) -> Vec<&'static str> {
         let mut d = Vec::new();
         if self.prompts != other.prompts {
@@ -111,6 +140,51 @@ impl DatasetSpec {
             d.push("anomaly");
         }
         d
+    }
+}
+
+/// One scene slot of a dataset made on the job queue: what its job's options carry (the
+/// job's prompt is the slot's prompt; the spec's prompt list is left out).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SlotJob {
+    /// The dataset's queue id.
+    pub dataset: String,
+    /// The scene id, `PPPP-KKKKKK`.
+    pub slot: String,
+    pub prompt_index: u32,
+    pub k: u32,
+    pub spec: DatasetSpec,
+}
+
+impl SlotJob {
+    /// The key of a job's options that holds a slot.
+    pub const KEY: &'static str = "dataset_slot";
+
+    /// The slot a job's options hold: `None` for other jobs, an error for a damaged one.
+    pub fn of(options: &serde_json::Value) -> Option<Result<SlotJob, String>> {
+        let v = options.get(Self::KEY)?;
+        Some(serde_json::from_value(v.clone()).map_err(|e| format!("a dataset job with unreadable options: {e}")))
+    }
+}
+
+/// Seeds a scene slot tries before it is given up (failed verification or duplicates).
+pub const TRIES: u32 = 25;
+
+/// Why an attempt did not give a scene, in a few words (summaries count these).
+pub fn failure_reason(failures: &[String]) -> String {
+    let f = failures.join("; ");
+    if f.contains("rejected") {
+        "did not compile".into()
+    } else if f.contains("contact") {
+        "contact deeper than 1 mm at t = 0".into()
+    } else if f.contains("moved") {
+        "moved in the settle".into()
+    } else if f.contains("unstable") {
+        "numerically unstable".into()
+    } else if f.is_empty() {
+        "not verified".into()
+    } else {
+        f.chars().take(80).collect()
     }
 }
 
@@ -185,6 +259,7 @@ impl DatasetDir {
                 return Err(DatasetError::Mismatch { dir: root.to_path_buf(), what: diff.join(", ") });
             }
             spec.count = spec.count.max(old.count);
+            spec.queue_id = spec.queue_id.or_else(|| old.queue_id.clone());
         }
         std::fs::create_dir_all(root.join("scenes")).map_err(|e| unwritable(root, e))?;
         let lock = OpenOptions::new()

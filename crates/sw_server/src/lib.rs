@@ -9,6 +9,7 @@
 mod auth;
 mod body;
 mod compress;
+mod dataset_jobs;
 mod edit_jobs;
 mod error;
 pub mod forge;

@@ -281,6 +281,11 @@ async fn run_pipeline(
         .tempdir_in(work)
         .map_err(|e| format!("scratch space {}: {e}", work.display()))?;
     let out = tmp.path().join("package");
+    // A scene slot of a dataset (`scenewright dataset --database`).
+    if let Some(slot) = sw_pipeline::dataset::SlotJob::of(&job.options) {
+        let (report, timings, dir) = crate::dataset_jobs::run(state, &job, &slot?, tmp.path(), tx, stop).await?;
+        return Ok((Made { report, timings, dir, edit: None }, tmp));
+    }
     let blobs = state.blobs.clone();
     let parent_files = match &job.parent_scene_id {
         Some(p) => match state.store.scene_of(p, &job.user_id).await {

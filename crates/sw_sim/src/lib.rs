@@ -7,9 +7,11 @@
 //! measures a robot at its home pose for the registry's keep-out boxes.
 
 mod measure;
+mod mjx_budget;
 mod snapshot;
 mod verify;
 
 pub use measure::{BodyBox, measure_robot};
+pub use mjx_budget::{ContactBudget, NEAR_M, contact_budget};
 pub use snapshot::render_scene;
 pub use verify::{VerifyOptions, mujoco_version, verify_file};

@@ -200,13 +200,27 @@ impl Store {
     /// under READ COMMITTED two transactions would otherwise both count the same free
     /// place and both insert.
     pub async fn enqueue(&self, new: &NewJob, limits: QueueLimits) -> Result<Job> {
+        let mut tx = self.pool.begin().await?;
+        let id = self.insert_job(&mut tx, new, limits).await?;
+        tx.commit().await?;
+        self.job(&id).await?.ok_or_else(|| StoreError::Corrupt(format!("job {id} vanished after insert")))
+    }
+
+    /// [`Store::enqueue`]'s work inside a transaction the caller commits (so that other rows
+    /// can be written with the job, atomically); the new job's id. On
+    /// [`StoreError::QueueFull`] nothing was written (drop the transaction).
+    pub(crate) async fn insert_job(
+        &self,
+        tx: &mut sqlx::Transaction<'static, sqlx::Any>,
+        new: &NewJob,
+        limits: QueueLimits,
+    ) -> Result<String> {
         let id = new_id();
         let now = now_ms();
         let options = new.options.to_string();
-        let mut tx = self.pool.begin().await?;
         if self.backend == crate::Backend::Postgres {
             // Held until commit or rollback; the count below is a new snapshot taken after it.
-            sqlx::query("SELECT pg_advisory_xact_lock($1)").bind(ENQUEUE_LOCK).execute(&mut *tx).await?;
+            sqlx::query("SELECT pg_advisory_xact_lock($1)").bind(ENQUEUE_LOCK).execute(&mut **tx).await?;
         }
         let prompt_id = new_id();
         sqlx::query("INSERT INTO prompts (id, user_id, text, created_at) VALUES ($1, $2, $3, $4)")
@@ -214,7 +228,7 @@ impl Store {
             .bind(&new.user_id)
             .bind(&new.prompt)
             .bind(now)
-            .execute(&mut *tx)
+            .execute(&mut **tx)
             .await?;
         let done = sqlx::query(
             "INSERT INTO jobs (id, user_id, kind, prompt_id, prompt, seed, options, parent_scene_id, state, max_attempts, timeout_ms, created_at, qseq)
@@ -233,15 +247,13 @@ impl Store {
         .bind(new.timeout_ms)
         .bind(now)
         .bind(limits.queue_cap)
-        .execute(&mut *tx)
+        .execute(&mut **tx)
         .await?;
         if done.rows_affected() == 0 {
-            tx.rollback().await?;
             return Err(StoreError::QueueFull { cap: limits.queue_cap });
         }
-        push_event(&mut *tx, &id, &serde_json::json!({"event": "queued", "job_id": id})).await?;
-        tx.commit().await?;
-        self.job(&id).await?.ok_or_else(|| StoreError::Corrupt(format!("job {id} vanished after insert")))
+        push_event(&mut **tx, &id, &serde_json::json!({"event": "queued", "job_id": id})).await?;
+        Ok(id)
     }
 
     /// Any job by id.

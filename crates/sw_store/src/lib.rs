@@ -16,6 +16,7 @@
 
 mod blob;
 mod blob_s3;
+mod datasets;
 mod ids;
 mod jobs;
 mod scenes;
@@ -32,6 +33,7 @@ use sqlx::{ConnectOptions, Connection};
 
 pub use blob::{BlobError, BlobStore, LocalBlobs, check_key};
 pub use blob_s3::S3Blobs;
+pub use datasets::DatasetSlot;
 pub use ids::{is_id, new_id, new_secret, now_ms};
 pub use jobs::{Claim, Job, JobKind, JobState, NewJob, QueueLimits, Recovered};
 pub use scenes::{Asset, EditRecord, NewScene, Scene, StageStat, Telemetry};

@@ -92,20 +92,48 @@ const STATEMENTS: &[&str] = &[
         tokens_out INTEGER NOT NULL DEFAULT 0,
         at INTEGER NOT NULL)",
     "CREATE INDEX IF NOT EXISTS telemetry_kind ON telemetry(kind, name)",
+    // Datasets on the queue (`scenewright dataset --database`): the dataset, the job that
+    // makes each scene slot (one at a time), and the structural fingerprints taken, each
+    // by one slot (a scene whose fingerprint another slot holds is a duplicate).
+    "CREATE TABLE IF NOT EXISTS datasets (
+        id TEXT PRIMARY KEY,
+        spec TEXT NOT NULL,
+        created_at INTEGER NOT NULL)",
+    "CREATE TABLE IF NOT EXISTS dataset_slots (
+        dataset_id TEXT NOT NULL REFERENCES datasets(id),
+        slot TEXT NOT NULL,
+        job_id TEXT NOT NULL REFERENCES jobs(id),
+        PRIMARY KEY (dataset_id, slot))",
+    "CREATE TABLE IF NOT EXISTS dataset_fingerprints (
+        dataset_id TEXT NOT NULL REFERENCES datasets(id),
+        fingerprint TEXT NOT NULL,
+        slot TEXT NOT NULL,
+        PRIMARY KEY (dataset_id, fingerprint))",
 ];
 
+/// The PostgreSQL advisory lock that serialises migrations ("swschema" in ASCII): two
+/// processes starting at once on a new database would otherwise race in `CREATE TABLE IF
+/// NOT EXISTS` (PostgreSQL's catalog rejects the second with a duplicate key).
+const MIGRATE_LOCK: i64 = 0x7377_7363_6865_6d61;
+
 pub(crate) async fn migrate(pool: &AnyPool, backend: Backend) -> Result<(), sqlx::Error> {
-    for s in STATEMENTS {
-        match backend {
-            Backend::Sqlite => {
+    match backend {
+        Backend::Sqlite => {
+            for s in STATEMENTS {
                 sqlx::query(*s).execute(pool).await?;
             }
-            Backend::Postgres => {
+        }
+        Backend::Postgres => {
+            // One transaction under the lock (PostgreSQL's DDL is transactional).
+            let mut tx = pool.begin().await?;
+            sqlx::query("SELECT pg_advisory_xact_lock($1)").bind(MIGRATE_LOCK).execute(&mut *tx).await?;
+            for s in STATEMENTS {
                 // The same tables with PostgreSQL's 64-bit and double types. The text is
                 // derived from the constants above, never from input.
                 let pg = s.replace("INTEGER", "BIGINT").replace("REAL", "DOUBLE PRECISION");
-                sqlx::query(sqlx::AssertSqlSafe(pg)).execute(pool).await?;
+                sqlx::query(sqlx::AssertSqlSafe(pg)).execute(&mut *tx).await?;
             }
+            tx.commit().await?;
         }
     }
     Ok(())
