@@ -110,6 +110,7 @@ fn words_it_cannot_honour_are_refused_with_them() {
         ("a hammer or a saw", "saw"),
         ("a glowing mushroom", "glowing"),
         ("a coat rack with six hooks", "six hooks"),
+        ("a hollow ball", "hollow"),
     ] {
         match offline(prompt) {
             Err(SynthError::Unread { phrase, .. }) => assert!(phrase.contains(words), "{prompt}: {phrase:?}"),
