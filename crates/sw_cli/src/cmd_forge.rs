@@ -72,17 +72,19 @@ pub(crate) fn generate(
         ),
         _ => format!("volume {:.1} mm³", m.mesh_volume_mm3),
     };
+    // An extent a cut may trim is promised only as a bound ("at most").
+    let wanted: Vec<String> = (0..3)
+        .map(|k| format!("{}{:.3}", if part.synthesis.size_certain[k] { "" } else { "≤" }, m.size_mm[k]))
+        .collect();
     print(&format!(
-        "part     {}\nmade by  {} · {} triangles · watertight\nsize     {:.3} × {:.3} × {:.3} mm (requested {:.3} × {:.3} × {:.3}, largest error {:.3} %)\n         {volume}{}\ntime     {:.0} ms (code ran in {:.0} ms)",
+        "part     {}\nmade by  {} · {} triangles · watertight\nsize     {:.3} × {:.3} × {:.3} mm (wanted {}, largest error {:.3} %)\n         {volume}{}\ntime     {:.0} ms (code ran in {:.0} ms)",
         files.mesh.display(),
         m.template,
         m.triangles,
         m.measured_size_mm[0],
         m.measured_size_mm[1],
         m.measured_size_mm[2],
-        m.size_mm[0],
-        m.size_mm[1],
-        m.size_mm[2],
+        wanted.join(" × "),
         100.0 * m.size_error.unwrap_or(0.0),
         m.through_holes
             .filter(|g| *g > 0)

@@ -33,7 +33,7 @@ fn assets_generate_writes_the_washer_of_the_issue() {
     ]);
     assert_eq!(code, 0, "{stderr}");
     let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
-    assert_eq!(v["metadata"]["template"], "washer");
+    assert_eq!(v["metadata"]["template"], "features");
     let measured = v["metadata"]["measured_size_mm"].as_array().unwrap();
     let want = [20.0, 20.0, 2.0];
     for (m, w) in measured.iter().zip(want) {
@@ -54,7 +54,7 @@ fn assets_generate_writes_the_washer_of_the_issue() {
     assert_eq!(hits["hits"][0]["id"], id.as_str());
     let (code, stdout, stderr) = run(&["assets", "show", &id[..12], "--store", store.to_str().unwrap()]);
     assert_eq!(code, 0, "{stderr}");
-    assert!(stdout.contains("template:washer"), "{stdout}");
+    assert!(stdout.contains("template:features"), "{stdout}");
     let (code, _, stderr) = run(&["assets", "show", "deadbeefdeadbeef", "--store", store.to_str().unwrap()]);
     assert_eq!(code, 2, "{stderr}");
     let (code, _, _) = run(&["assets", "search", "  ", "--store", store.to_str().unwrap()]);
@@ -106,7 +106,7 @@ fn assets_go_to_an_s3_bucket_when_the_store_is_an_s3_url() {
     assert_eq!(serde_json::from_str::<serde_json::Value>(&stdout).unwrap()["hits"][0]["id"], id.as_str());
     let (code, stdout, stderr) = run_s3(&["assets", "show", &id[..12], "--store", store]);
     assert_eq!(code, 0, "{stderr}");
-    assert!(stdout.contains("template:box"), "{stdout}");
+    assert!(stdout.contains("template:features"), "{stdout}");
     // Without an endpoint, an s3:// store is a one-line input error, not a crash.
     let (code, _, stderr) = run(&["assets", "search", "brick", "--store", store]);
     assert_eq!(code, 2, "{stderr}");
