@@ -202,6 +202,10 @@ fn place_group(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) {
         if crate::formation::place(ctx, group, idxs, &rel) {
             return;
         }
+        // A room whose size was not given grows until the arrangement fits.
+        if !ctx.input.plan.room.size_fixed {
+            ctx.floor_failures += 1;
+        }
         let plan = ctx.input.plan;
         let phrase = plan.describe(&sw_plan::Relation { subject: group.to_string(), kind: rel.clone() });
         ctx.warn(

@@ -77,7 +77,7 @@ pub(crate) fn for_relation(ctx: &mut Ctx<'_>, b: &Aabb, group: &str, k: usize, r
         RelationKind::Behind { target } => facing_side(ctx, b, target, k, -1.0),
         RelationKind::AtEndOfRow { target } => row_end(ctx, b, target),
         RelationKind::Between { first, second } => between(ctx, first, second, k),
-        RelationKind::Under { target } => under(ctx, target, k),
+        RelationKind::Under { target } => under(ctx, target, k, ctx.instances(group).len()),
         RelationKind::Around { target } => around_one(ctx, b, target, k),
         _ => Vec::new(),
     }
@@ -383,19 +383,28 @@ fn between(ctx: &Ctx<'_>, first: &str, second: &str, k: usize) -> Vec<Spot> {
     out
 }
 
-/// Inside a target's footprint (under a table or bench).
-fn under(ctx: &Ctx<'_>, target: &str, k: usize) -> Vec<Spot> {
+/// Inside a target's footprint (under a table or bench): several under one target share
+/// its length, instance `k` in its own slot first.
+fn under(ctx: &Ctx<'_>, target: &str, k: usize, group_size: usize) -> Vec<Spot> {
     let mut t = ctx.placed_instances(target);
+    let per = group_size.div_ceil(t.len().max(1)).max(1);
     if !t.is_empty() {
         let n = t.len();
-        t.rotate_left(k % n);
+        t.rotate_left((k / per) % n);
     }
     let mut out = Vec::new();
     for (ti, ts) in t {
         let tb = ctx.bounds[ti];
         let (cx, cy) = (0.5 * (tb.min[0] + tb.max[0]), 0.5 * (tb.min[1] + tb.max[1]));
         let (hx, hy) = (0.5 * (tb.max[0] - tb.min[0]), 0.5 * (tb.max[1] - tb.min[1]));
-        for fx in [0.0, -0.3, 0.3, -0.6, 0.6] {
+        if per > 1 {
+            let slot = (k % per) as f64;
+            let fx = -1.0 + (2.0 * slot + 1.0) / per as f64;
+            let p = ts.apply([cx + fx * hx, cy, 0.0]);
+            out.push(Spot::new(p[0], p[1], 0.0, ts.yaw + PI / 2.0));
+            out.push(Spot::new(p[0], p[1], 0.0, ts.yaw));
+        }
+        for fx in [0.0, -0.3, 0.3, -0.6, 0.6, -0.1, 0.1, -0.2, 0.2, -0.4, 0.4, -0.5, 0.5, -0.7, 0.7] {
             for fy in [0.0, -0.3, 0.3] {
                 let p = ts.apply([cx + fx * hx, cy + fy * hy, 0.0]);
                 out.push(Spot::new(p[0], p[1], 0.0, ts.yaw));

@@ -90,6 +90,7 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     // "a workbench between the lathe and the drill press": the second of the two keeps
     // room for what goes between them.
     specific.extend(room_between(ctx, &group, k, &b));
+    specific.extend(beside_an_arms_work(ctx, &group, &b));
     // The instances an arm works at stay together, within its reach ("two pallets").
     let tended =
         k > 0 && ctx.input.robots.iter().any(|r| crate::reach::work_group(ctx, r).as_deref() == Some(group.as_str()));
@@ -225,6 +226,24 @@ fn room_between(ctx: &Ctx<'_>, group: &str, k: usize, b: &Aabb) -> Vec<Spot> {
         let width = width + zone(group) + zone(other);
         let gaps: Vec<f64> = [0.15, 0.3, 0.5, 0.8].iter().map(|e| width + e).collect();
         out.extend(candidates::apart(b, &others, &gaps));
+    }
+    out
+}
+
+/// "a Panda on the counter next to the sink": the counter stands beside the sink (and
+/// the sink beside the counter), so that the arm on one can be next to the other.
+fn beside_an_arms_work(ctx: &Ctx<'_>, group: &str, b: &Aabb) -> Vec<Spot> {
+    let mut out = Vec::new();
+    for r in &ctx.input.robots {
+        let crate::RobotMount::Surface { group: host } = &r.mount else { continue };
+        for rel in ctx.relations(&r.group) {
+            let (RelationKind::NextTo { target } | RelationKind::Near { target }) = rel else { continue };
+            if host == group && target != group {
+                out.extend(candidates::beside(ctx, b, target, 0));
+            } else if target == group && host != group {
+                out.extend(candidates::beside(ctx, b, host, 0));
+            }
+        }
     }
     out
 }

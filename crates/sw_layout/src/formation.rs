@@ -38,6 +38,8 @@ struct Formation {
     /// there (a stool in front of each station, a conveyor behind the row), m.
     front_reserve: f64,
     back_reserve: f64,
+    /// Free floor kept beyond the formation's +X end ("a cabinet at the end of the row").
+    end_reserve: f64,
     /// Each member's support: the floor, or the member below it in a stack.
     stacked: bool,
 }
@@ -97,6 +99,7 @@ fn rows(ctx: &Ctx<'_>, rows: &[Vec<usize>], faces_up: &[bool], corridors: &[f64]
         members,
         front_reserve,
         back_reserve,
+        end_reserve: 0.0,
         stacked: false,
     }
 }
@@ -116,7 +119,7 @@ fn stack(ctx: &Ctx<'_>, idxs: &[usize]) -> Formation {
         });
         z += top_of(ctx, idx);
     }
-    Formation { bounds: b, members, front_reserve: 0.0, back_reserve: 0.0, stacked: true }
+    Formation { bounds: b, members, front_reserve: 0.0, back_reserve: 0.0, end_reserve: 0.0, stacked: true }
 }
 
 /// The height something stacked on an object rests at: its top surface, else its top.
@@ -170,6 +173,35 @@ fn is_storage(ctx: &Ctx<'_>, idxs: &[usize]) -> bool {
 
 /// The formations to try for a group relation, preferred first.
 fn formations(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind) -> Vec<Formation> {
+    let end = end_reserve(ctx, group);
+    let mut v = formations_of(ctx, group, idxs, rel);
+    if end > 0.0 {
+        for f in &mut v {
+            f.bounds.max[0] += end;
+            f.end_reserve = end;
+        }
+    }
+    v
+}
+
+/// Room kept beyond a row's end for what is said to stand at it.
+fn end_reserve(ctx: &Ctx<'_>, group: &str) -> f64 {
+    ctx.input
+        .plan
+        .relations
+        .iter()
+        .filter(|r| matches!(&r.kind, RelationKind::AtEndOfRow { target } if target == group))
+        .map(|r| {
+            let size =
+                ctx.instances(&r.subject).first().map(|&i| ctx.bounds[i].size()).or_else(|| {
+                    ctx.input.robots.iter().find(|x| x.group == r.subject).map(|x| union(&x.keepout).size())
+                });
+            size.map_or(0.8, |s| s[0].max(s[1]) + 0.25)
+        })
+        .fold(0.0, f64::max)
+}
+
+fn formations_of(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind) -> Vec<Formation> {
     let reserve = reserves(ctx, group);
     let n = idxs.len();
     let clear = front_clearance(ctx, idxs);
@@ -193,7 +225,10 @@ fn formations(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind) ->
         }
         RelationKind::InRows { n: rows_n } => {
             let k = rows_n.map_or(2, |r| r as usize).clamp(1, n.max(1));
-            let corridors = vec![seat_gap; k];
+            // Seats in front of each row take the row's own reserve; a narrower walkway
+            // behind them suffices.
+            let walk = if reserve.0 > 0.0 { (0.6_f64).max(clear + 0.1) } else { seat_gap };
+            let corridors = vec![walk; k];
             vec![rows(ctx, &split(idxs, k), &vec![true; k], &corridors, reserve)]
         }
         RelationKind::InAisles => {
@@ -330,6 +365,10 @@ fn try_formation(ctx: &mut Ctx<'_>, group: &str, f: &Formation, rels: &[Relation
     let mut egress_budget = 40usize;
     let size = f.members.len();
     for at in spots.into_iter().take(MAX_TRIALS) {
+        // The formation with its reserved space inside the room.
+        if !ctx.space.inside(&f.bounds.transformed(&at.pose())) {
+            continue;
+        }
         let placed = f.members_at(ctx, &at);
         let members: Vec<Body> = placed.iter().map(|(i, s)| Body::object(&ctx.local[*i], s)).collect();
         let whole = Body {
@@ -357,6 +396,14 @@ fn try_formation(ctx: &mut Ctx<'_>, group: &str, f: &Formation, rels: &[Relation
             }
         }
         commit(ctx, &f, &placed);
+        if f.end_reserve > 0.0
+            && let Some((last, _)) = placed.last()
+        {
+            let b = f.bounds;
+            let zone = Aabb { min: [b.max[0] - f.end_reserve, b.min[1], 0.0], max: [b.max[0], b.max[1], 2.0] };
+            let owner = ctx.input.objects[*last].name.clone();
+            ctx.space.zones.push(Zone { owner: Some(owner), area: zone.transformed(&at.pose()) });
+        }
         return true;
     }
     false
@@ -474,9 +521,53 @@ fn two_walls(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
     } else {
         vec![Wall::East, Wall::West, Wall::North, Wall::South]
     };
+    // Walls other groups are said to stand at come last ("counters along two walls, a
+    // fridge against the east wall").
+    let named: Vec<Wall> = ctx
+        .input
+        .plan
+        .relations
+        .iter()
+        .filter(|r| r.subject != group)
+        .filter_map(|r| match r.kind {
+            RelationKind::AgainstWall { wall } | RelationKind::Leaning { wall } => wall,
+            _ => None,
+        })
+        .collect();
+    // Walls no one else needs first; the others only when that fails.
+    let free: Vec<Wall> = order.iter().copied().filter(|w| !named.contains(w)).collect();
+    if free.len() >= 2 && place_on_walls(ctx, group, &halves, reserve, &free) {
+        return true;
+    }
+    // A room whose size was not given grows until the free walls hold them.
+    if !ctx.input.plan.room.size_fixed && free.len() >= 2 {
+        ctx.floor_failures += 1;
+    }
+    let mut order = order;
+    order.sort_by_key(|w| named.contains(w));
+    place_on_walls(ctx, group, &halves, reserve, &order)
+}
+
+/// Each half against its own wall, walls tried in `order`. Commits what it places.
+fn place_on_walls(ctx: &mut Ctx<'_>, group: &str, halves: &[Vec<usize>], reserve: (f64, f64), order: &[Wall]) -> bool {
+    let _ = group;
+    // Walls already taken by a half placed before.
     let mut used: Vec<Wall> = Vec::new();
     for half in halves {
-        let f = rows(ctx, &[half], &[true], &[], reserve);
+        if let Some(p) = half.first().and_then(|&i| ctx.placed[i].as_ref().map(|p| (i, p.spot))) {
+            let b = Body::object(&ctx.local[p.0], &p.1);
+            if let Some(w) =
+                Wall::ALL.into_iter().find(|w| relate::holds(ctx, &b, &RelationKind::AgainstWall { wall: Some(*w) }, 1))
+            {
+                used.push(w);
+            }
+        }
+    }
+    for half in halves {
+        if half.iter().all(|&i| ctx.placed[i].is_some()) {
+            continue;
+        }
+        let f = rows(ctx, std::slice::from_ref(half), &[true], &[], reserve);
         let mut done = false;
         let free: Vec<Wall> = order.iter().copied().filter(|w| !used.contains(w)).collect();
         for w in free {
@@ -591,19 +682,28 @@ fn around(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize], target: &str) -> bool 
         let t = targets[ti].1;
         let local_k = k % per;
         let b = ctx.bounds[idx];
-        // Opposite sides first for two, then round the others.
-        let pattern: &[usize] = if barrier { &[0, 2, 1] } else { &[0, 2, 1, 3] };
+        // Opposite sides first for two, then round the others; barriers start opposite
+        // the opening (side 3), where a second piece goes too.
+        let pattern: &[usize] = if barrier { &[1, 0, 2] } else { &[0, 2, 1, 3] };
         let want = (pattern[local_k % pattern.len()] + start) % 4;
-        let mut order: Vec<usize> = vec![want];
-        for s in pattern.iter().map(|p| (p + start) % 4) {
+        let sides: Vec<usize> = pattern.iter().map(|p| (p + start) % 4).collect();
+        // The side it is meant for, then sides nobody stands on yet, then the rest.
+        let mut order: Vec<usize> = Vec::new();
+        let free = |s: &usize| !used[ti].contains(s);
+        if free(&want) || used[ti].len() >= sides.len() {
+            order.push(want);
+        }
+        for s in sides.iter().copied().filter(free) {
             if !order.contains(&s) {
                 order.push(s);
             }
         }
-        if barrier && used[ti].len() >= 3 {
-            // Three sides are taken: the open fourth stays open unless nothing else fits.
-            order.retain(|s| used[ti].contains(s));
+        for s in sides.iter().copied() {
+            if !order.contains(&s) {
+                order.push(s);
+            }
         }
+        // The open fourth side stays open unless nothing else fits.
         let open = (3 + start) % 4;
         if barrier && !order.contains(&open) {
             order.push(open);

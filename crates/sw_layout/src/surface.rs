@@ -3,7 +3,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use sw_plan::Support;
+use sw_plan::{RelationKind, Support};
 
 use crate::attempt::{Ctx, surface_target};
 use crate::floor;
@@ -24,6 +24,11 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
         };
         let group = ctx.input.objects[idx].group.clone();
         let k = ctx.instances(&group).iter().position(|&i| i == idx).unwrap_or(0);
+        // "a stack of five plates on the counter": the first on it, the rest on each other.
+        let stacked = ctx.relations(&group).iter().any(|r| matches!(r, RelationKind::Stacked));
+        if stacked && k > 0 && on_the_one_below(ctx, idx, &group, k) {
+            continue;
+        }
         if place_on_group(ctx, idx, &target, k, true) {
             continue;
         }
@@ -47,6 +52,33 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
             );
         }
     }
+}
+
+/// Instance `k` of a stacked group on top of instance `k - 1`, centred over it.
+fn on_the_one_below(ctx: &mut Ctx<'_>, idx: usize, group: &str, k: usize) -> bool {
+    let Some(&below) = ctx.instances(group).get(k - 1) else { return false };
+    let Some(bs) = ctx.placed[below].as_ref().map(|p| p.spot) else { return false };
+    // On the highest point of the one below (a plate's rim, a box's lid).
+    let top = ctx.bounds[below].max[2];
+    let (lb, lt) = (ctx.bounds[below], ctx.bounds[idx]);
+    // Footprint centres over each other, in the one below's frame.
+    let cb = [0.5 * (lb.min[0] + lb.max[0]), 0.5 * (lb.min[1] + lb.max[1])];
+    let ct = [0.5 * (lt.min[0] + lt.max[0]), 0.5 * (lt.min[1] + lt.max[1])];
+    let p = bs.apply([cb[0] - ct[0], cb[1] - ct[1], top - lt.min[2]]);
+    let spot = Spot::new(p[0], p[1], p[2], bs.yaw);
+    if !ctx.space.fits(&spot.boxes(&ctx.local[idx]), 0.0, &[], false, &[]) {
+        return false;
+    }
+    let surface = ctx.input.objects[below]
+        .asset
+        .surfaces
+        .iter()
+        .filter(|s| s.clearance.is_none())
+        .max_by(|a, b| a.z.total_cmp(&b.z))
+        .map_or_else(|| "top".to_string(), |s| s.name.clone());
+    let name = ctx.input.objects[below].name.clone();
+    ctx.commit(idx, spot, Support::Object { object: name, surface });
+    true
 }
 
 /// Small items with no support named: tabletop things on work surfaces, the rest on

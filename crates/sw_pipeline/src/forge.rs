@@ -51,11 +51,14 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
     // The levels of shelving said to be full, to size what fills them.
     let mut levels: std::collections::BTreeMap<String, Vec<sw_geom::SupportSurface>> =
         std::collections::BTreeMap::new();
+    // The height of each group's top, to size what stands under it.
+    let mut tops: std::collections::BTreeMap<String, f64> = std::collections::BTreeMap::new();
     for group in &plan.objects {
         let mut noted = false;
         let filled = crate::loads::is_filled(plan, &group.id);
         let fills = crate::loads::host_of(plan, &group.id);
         let workpiece = crate::loads::on_arm_surface(plan, &group.id);
+        let under = crate::loads::under_of(plan, &group.id).and_then(|h| tops.get(&h).copied());
         // "tires leaning on the wall": flat things stand on edge.
         let leaning =
             plan.relations.iter().any(|r| r.subject == group.id && matches!(r.kind, RelationKind::Leaning { .. }));
@@ -88,6 +91,15 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                 levels.insert(group.id.clone(), asset.surfaces.clone());
             }
             let asset = if workpiece { crate::loads::fit_workpiece(asset) } else { asset };
+            let asset = match under {
+                Some(top) => crate::loads::fit_under(asset, top),
+                None => asset,
+            };
+            if k == 0
+                && let Some(t) = crate::loads::top_height(&asset)
+            {
+                tops.insert(group.id.clone(), t);
+            }
             let asset = match fills.as_ref().and_then(|h| levels.get(h)) {
                 Some(l) => crate::loads::fit_item(asset, l),
                 None => asset,

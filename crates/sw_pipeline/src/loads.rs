@@ -67,6 +67,33 @@ pub(crate) fn fit_workpiece(a: Asset) -> Asset {
     remade(&a, &change).unwrap_or(a)
 }
 
+/// The group `group` is said to stand under, if any.
+pub(crate) fn under_of(plan: &ScenePlan, group: &str) -> Option<String> {
+    plan.relations.iter().find_map(|r| match &r.kind {
+        RelationKind::Under { target } if r.subject == group => Some(target.clone()),
+        _ => None,
+    })
+}
+
+/// The height of an asset's top work surface (the underside of what stands under it is
+/// a little lower).
+pub(crate) fn top_height(a: &Asset) -> Option<f64> {
+    a.surfaces
+        .iter()
+        .filter(|s| s.clearance.is_none())
+        .map(|s| s.z)
+        .fold(None, |m: Option<f64>, z| Some(m.map_or(z, |m| m.max(z))))
+}
+
+/// Something said to stand under a table no taller than the room under its top.
+pub(crate) fn fit_under(a: Asset, top: f64) -> Asset {
+    let room = top - 0.08;
+    if a.bounds().size()[2] <= room || room <= 0.05 {
+        return a;
+    }
+    remade(&a, &BTreeMap::from([("height", room)])).unwrap_or(a)
+}
+
 /// An item small enough that two fit side by side on each of `levels` and under the
 /// level above.
 pub(crate) fn fit_item(a: Asset, levels: &[SupportSurface]) -> Asset {

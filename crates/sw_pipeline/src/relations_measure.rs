@@ -24,9 +24,8 @@ pub(crate) fn measure(plan: &ScenePlan, w: &Written, r: &Relation, subjects: &[T
     match &r.kind {
         RelationKind::On { target } => {
             let hosts = targets_of(target, v);
-            let mut on = 0;
-            for s in subjects {
-                let rests = hosts.iter().any(|h| match &s.robot {
+            let direct = |s: &Thing| {
+                hosts.iter().any(|h| match &s.robot {
                     // A robot's base on the host's top.
                     Some(_) => h.body.sites.iter().any(|site| {
                         (s.body.pos[2] - site.z).abs() <= REST
@@ -34,9 +33,24 @@ pub(crate) fn measure(plan: &ScenePlan, w: &Written, r: &Relation, subjects: &[T
                             && (site.rect[1]..=site.rect[3]).contains(&s.body.pos[1])
                     }),
                     None => site_under(&s.body, &h.body).is_some(),
-                });
-                on += usize::from(rests);
+                })
+            };
+            // On it, or on one of its own kind that is ("a stack of plates on the counter").
+            let mut resting: Vec<bool> = subjects.iter().map(direct).collect();
+            loop {
+                let before = resting.iter().filter(|x| **x).count();
+                for i in 0..subjects.len() {
+                    if resting[i] || subjects[i].robot.is_some() {
+                        continue;
+                    }
+                    resting[i] = (0..subjects.len())
+                        .any(|j| resting[j] && j != i && stands_on(&subjects[i].body, &subjects[j].body));
+                }
+                if resting.iter().filter(|x| **x).count() == before {
+                    break;
+                }
             }
+            let on = resting.iter().filter(|x| **x).count();
             v.set("resting", on as f64);
             v.set("count", n as f64);
             if on < n {
@@ -486,6 +500,11 @@ fn facing(subjects: &[Thing], v: &mut Verdict) {
     }
 }
 
+/// `a` rests on `b`: on one of its sites, or on its top with its centre over it.
+fn stands_on(a: &crate::scene_geom::BodyGeom, b: &crate::scene_geom::BodyGeom) -> bool {
+    site_under(a, b).is_some() || ((a.bounds.min[2] - b.bounds.max[2]).abs() <= REST && inside(a.center(), &b.bounds))
+}
+
 /// One stack: each resting on the one below, the lowest on the floor.
 fn stacked(subjects: &[Thing], v: &mut Verdict) {
     let mut order: Vec<&Thing> = subjects.iter().collect();
@@ -493,9 +512,7 @@ fn stacked(subjects: &[Thing], v: &mut Verdict) {
     let mut stacks = 1;
     for p in order.windows(2) {
         let (below, above) = (p[0], p[1]);
-        let on_top = site_under(&above.body, &below.body).is_some()
-            || ((above.body.bounds.min[2] - below.body.bounds.max[2]).abs() <= REST
-                && inside(above.body.center(), &below.body.bounds));
+        let on_top = stands_on(&above.body, &below.body);
         if !on_top {
             stacks += 1;
         }

@@ -923,6 +923,8 @@ impl<'a> Parser<'a> {
             if joined {
                 self.each_taken += 1;
                 self.add_companion(&host, id);
+                // "each with a monitor on it": what follows is said of the companion.
+                self.subject = Some(Subject::Group(id.to_string()));
                 self.mentions.push(Subject::Group(id.to_string()));
                 return;
             }

@@ -339,7 +339,16 @@ impl Parser<'_> {
                 // describe where the table stands.
                 let floor_level = matches!(
                     cue,
-                    Cue::Wall(_) | Cue::Door | Cue::Corner(_) | Cue::End(_) | Cue::Center | Cue::NextTo | Cue::Near
+                    Cue::Wall(_)
+                        | Cue::Door
+                        | Cue::Corner(_)
+                        | Cue::End(_)
+                        | Cue::EndOf
+                        | Cue::Center
+                        | Cue::NextTo
+                        | Cue::Near
+                        | Cue::InFront
+                        | Cue::Behind
                 );
                 let host = self.on_host.iter().rev().find(|(s, _)| s == g).map(|(_, h)| h.clone());
                 let subject = match host {
