@@ -133,9 +133,7 @@ pub fn robot_document(model: &RobotSource, prefix: &str) -> Result<String, Merge
             root.children.push(s);
         }
     }
-    if let Some(key) = key {
-        root.children.push(Element::new("keyframe").child(key));
-    }
+    root.children.push(Element::new("keyframe").child(key));
     Ok(root.to_document())
 }
 
@@ -360,9 +358,7 @@ fn build(input: &SceneInput<'_>, robots: &[PreparedRobot], meshes: &mut MeshTabl
             root.children.push(s);
         }
     }
-    if let Some(key) = key {
-        root.children.push(Element::new("keyframe").child(key));
-    }
+    root.children.push(Element::new("keyframe").child(key));
     root
 }
 
@@ -607,8 +603,10 @@ fn inertial(link: &Link, mass: f64) -> Element {
 }
 
 /// The `home` keyframe over every joint of the model: free bodies at their written
-/// pose, robot joints at their own home, everything else at zero.
-pub(crate) fn home_key(world: &Element, robots: &[PreparedRobot]) -> Option<Element> {
+/// pose, robot joints at their own home, everything else at zero. A scene with no joint
+/// and no actuator still gets one (empty), so that resetting to `home` works on every
+/// package, as the README says.
+pub(crate) fn home_key(world: &Element, robots: &[PreparedRobot]) -> Element {
     let robot_home: BTreeMap<&str, &Vec<f64>> =
         robots.iter().flat_map(|r| r.home_qpos.iter().map(|(k, v)| (k.as_str(), v))).collect();
     let mut qpos: Vec<f64> = Vec::new();
@@ -649,9 +647,6 @@ pub(crate) fn home_key(world: &Element, robots: &[PreparedRobot]) -> Option<Elem
             (0..n).map(|i| r.home_ctrl.get(i).copied().unwrap_or(0.0)).collect::<Vec<_>>()
         })
         .collect();
-    if qpos.is_empty() && ctrl.is_empty() {
-        return None;
-    }
     let mut key = Element::new("key").with("name", "home");
     if !qpos.is_empty() {
         key.set("qpos", nums(&qpos));
@@ -659,5 +654,5 @@ pub(crate) fn home_key(world: &Element, robots: &[PreparedRobot]) -> Option<Elem
     if !ctrl.is_empty() {
         key.set("ctrl", nums(&ctrl));
     }
-    Some(key)
+    key
 }

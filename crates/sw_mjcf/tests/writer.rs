@@ -111,3 +111,29 @@ fn a_missing_robot_model_is_an_error_naming_the_robot() {
         .unwrap_err();
     assert_eq!(err.to_string(), "robot 'ur5e_1' is in the layout but no model was given for it");
 }
+
+#[test]
+fn a_scene_without_joints_still_has_a_home_keyframe() {
+    // Only fixtures, no robot: nothing moves, and resetting to `home` must still work.
+    let (mut layout, assets) = scene();
+    layout.objects.retain(|o| o.name == "table_1");
+    layout.robots.clear();
+    let files = write_scene(&SceneInput {
+        prompt: "an empty lab with a table",
+        layout: &layout,
+        assets: assets.iter().take(1).collect(),
+        robots: Vec::new(),
+    })
+    .unwrap();
+    assert!(files.scene_xml.contains("<key name=\"home\""), "{}", files.scene_xml);
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("assets")).unwrap();
+    for m in &files.meshes {
+        std::fs::write(dir.path().join("assets").join(&m.file_name), &m.bytes).unwrap();
+    }
+    let path = dir.path().join("scene.xml");
+    std::fs::write(&path, &files.scene_xml).unwrap();
+    let v = sw_sim::verify_file(&path, &sw_sim::VerifyOptions::default());
+    assert!(v.passed, "{:?}", v.failures);
+    assert_eq!(v.initial_state, "keyframe 'home'");
+}
