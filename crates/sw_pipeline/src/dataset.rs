@@ -351,8 +351,10 @@ impl DatasetDir {
         f.write_all(line.as_bytes()).map_err(|e| unwritable(&self.root.join("manifest.jsonl"), e))
     }
 
-    /// Flushes the manifest to the disk (at the end of a run).
+    /// Flushes the manifest to the disk (at the end of a run) and removes `.work/` when
+    /// nothing is left in it.
     pub fn sync(&self) -> Result<(), DatasetError> {
+        let _ = std::fs::remove_dir(self.root.join(".work"));
         let f = match self.manifest.lock() {
             Ok(f) => f,
             Err(poisoned) => poisoned.into_inner(),

@@ -51,6 +51,12 @@ fn forget_staged(path: &Path) {
 
 /// Checks that `dest` can receive a package, without creating anything.
 pub(crate) fn check_destination(dest: &Path) -> Result<(), OutputError> {
+    check_not_taken(dest)?;
+    probe_parent(dest)
+}
+
+/// `dest` is absent or an empty directory.
+fn check_not_taken(dest: &Path) -> Result<(), OutputError> {
     if dest.exists() {
         if !dest.is_dir() {
             return Err(OutputError::NotADirectory(dest.to_path_buf()));
@@ -60,6 +66,11 @@ pub(crate) fn check_destination(dest: &Path) -> Result<(), OutputError> {
             return Err(OutputError::NotEmpty(dest.to_path_buf()));
         }
     }
+    Ok(())
+}
+
+/// The nearest existing ancestor of `dest` is a directory we can write in.
+fn probe_parent(dest: &Path) -> Result<(), OutputError> {
     // The nearest existing ancestor must be a directory we can write in: probe it with a
     // directory that is removed at once, so that nothing is left behind either way.
     let mut a = dest.parent();
@@ -93,7 +104,9 @@ pub(crate) struct Staging {
 
 impl Staging {
     pub fn create(dest: &Path) -> Result<Self, OutputError> {
-        check_destination(dest)?;
+        // No second probe of the parent (callers checked it before any work): creating the
+        // staging directory below fails the same way if it has become unwritable.
+        check_not_taken(dest)?;
         let name =
             dest.file_name().and_then(|n| n.to_str()).filter(|n| !n.is_empty() && *n != "." && *n != "..").ok_or_else(
                 || OutputError::Unwritable { path: dest.to_path_buf(), reason: "not a directory name".into() },

@@ -6,6 +6,7 @@
 //! holding their pose and measures how far each free body moved. [`measure_robot`]
 //! measures a robot at its home pose for the registry's keep-out boxes.
 
+mod load;
 mod measure;
 mod mjx_budget;
 mod snapshot;
@@ -14,4 +15,4 @@ mod verify;
 pub use measure::{BodyBox, measure_robot};
 pub use mjx_budget::{ContactBudget, NEAR_M, contact_budget};
 pub use snapshot::render_scene;
-pub use verify::{VerifyOptions, mujoco_version, verify_file};
+pub use verify::{VerifyOptions, mujoco_version, verify_file, verify_file_full_load};

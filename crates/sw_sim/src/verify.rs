@@ -42,8 +42,19 @@ pub fn mujoco_version() -> String {
 }
 
 /// Verifies the MJCF at `path`. Never panics on a bad scene: compile errors and failed
-/// checks are reported in the returned value.
+/// checks are reported in the returned value. MuJoCo's built-in textures are compiled
+/// small (see `load.rs`); the verdict is the one [`verify_file_full_load`] gives.
 pub fn verify_file(path: &Path, opts: &VerifyOptions) -> Verification {
+    verify_loaded(opts, crate::load::load_for_verification(path))
+}
+
+/// [`verify_file`] with the scene compiled by MuJoCo's own `from_xml`, textures at full
+/// size: the reference the fast load is tested against.
+pub fn verify_file_full_load(path: &Path, opts: &VerifyOptions) -> Verification {
+    verify_loaded(opts, MjModel::from_xml(path).map_err(|e| e.to_string()))
+}
+
+fn verify_loaded(opts: &VerifyOptions, loaded: Result<MjModel, String>) -> Verification {
     let mut v = Verification {
         engine: mujoco_version(),
         compiled: false,
@@ -58,10 +69,9 @@ pub fn verify_file(path: &Path, opts: &VerifyOptions) -> Verification {
         expected: Vec::new(),
     };
     let is_expected = |name: &str| opts.expected_bodies.iter().any(|b| b == name);
-    let model = match MjModel::from_xml(path) {
+    let model = match loaded {
         Ok(m) => m,
-        Err(e) => {
-            let msg = e.to_string();
+        Err(msg) => {
             v.failures
                 .push(format!("MuJoCo rejected the scene: {}", msg.split_whitespace().collect::<Vec<_>>().join(" ")));
             v.compile_error = Some(msg);

@@ -101,3 +101,46 @@ fn a_scene_renders_to_an_image_with_the_objects_in_it() {
     let red = img.rgb.chunks(3).filter(|p| p[0] > 120 && p[1] < 40 && p[2] < 40).count();
     assert!(red > 500, "the red box covers {red} pixels");
 }
+
+/// The fast load (built-in textures compiled at 8 × 8) gives the verdict MuJoCo's own
+/// `from_xml` gives, to the last figure: a passing scene with textures, materials and a
+/// mesh, a failing one, and a rejected one (MuJoCo's message word for word).
+#[test]
+fn the_fast_load_changes_no_verdict() {
+    let dir = tempfile::tempdir().unwrap();
+    let textured = |body: &str| {
+        format!(
+            r#"<mujoco><compiler angle="radian"/><option timestep="0.002"/>
+            <asset>
+              <texture name="grid" type="2d" builtin="checker" rgb1="0.2 0.3 0.4" rgb2="0.1 0.2 0.3" width="512" height="512"/>
+              <texture name="sky" type="skybox" builtin="gradient" rgb1="0.3 0.5 0.7" rgb2="0 0 0" width="256" height="256"/>
+              <texture name="wood" type="cube" builtin="flat" rgb1="0.6 0.4 0.2" width="64" height="64" mark="random" random="0.1"/>
+              <material name="grid" texture="grid" texrepeat="2 2" reflectance="0.2"/>
+              <material name="wood" texture="wood"/>
+              <mesh name="wedge" vertex="0 0 0  0.2 0 0  0 0.2 0  0 0 0.2"/>
+            </asset>
+            <worldbody><geom name="floor" type="plane" size="5 5 0.1" material="grid"/>{body}</worldbody></mujoco>"#
+        )
+    };
+    let cases = [
+        r#"<body name="box_1" pos="0 0 0.1"><freejoint/><geom type="box" size="0.1 0.1 0.1" material="wood"/></body>
+           <body name="wedge_1" pos="1 0 0"><freejoint/><geom type="mesh" mesh="wedge" material="wood"/></body>
+           <body name="mug_1" pos="-1 0 0.05"><freejoint/><geom type="cylinder" size="0.04 0.05"/></body>"#,
+        r#"<body name="shelf_1" pos="0 0 0.5"><geom type="box" size="0.5 0.2 0.5" material="wood"/></body>
+           <body name="box_1" pos="0.45 0 0.3"><freejoint/><geom type="box" size="0.1 0.1 0.1"/></body>
+           <body name="ball_1" pos="2 0 1"><freejoint/><geom type="sphere" size="0.1"/></body>"#,
+        r#"<body name="box_1"><geom type="box" size="0.1 0.1 0.1" material="no_such_material"/></body>"#,
+    ];
+    let opts = VerifyOptions::default();
+    let mut verdicts = Vec::new();
+    for (i, body) in cases.iter().enumerate() {
+        let path = dir.path().join(format!("scene_{i}.xml"));
+        std::fs::write(&path, textured(body)).unwrap();
+        let fast = verify_file(&path, &opts);
+        let full = sw_sim::verify_file_full_load(&path, &opts);
+        assert_eq!(fast, full, "scene {i}");
+        verdicts.push((fast.compiled, fast.passed));
+    }
+    // The three cases are what they are meant to be, so the comparison covers each path.
+    assert_eq!(verdicts, [(true, true), (true, false), (false, false)]);
+}
