@@ -196,7 +196,7 @@ pub(crate) fn run(a: DatasetArgs) -> Result<u8, Failure> {
     let (dir, resumed) = DatasetDir::open(&a.out, &spec).map_err(dataset_failure)?;
     let jobs = a.jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())).max(1);
     ACTIVE.store(true, Ordering::SeqCst);
-    let summary = make_scenes(&dir, resumed, jobs, a.json);
+    let summary = make_scenes(&dir, resumed, jobs);
     ACTIVE.store(false, Ordering::SeqCst);
     let summary = summary?;
     report(&summary, a.json);
@@ -233,7 +233,7 @@ struct Stats {
     gave_up: Vec<String>,
 }
 
-fn make_scenes(dir: &DatasetDir, resumed: Resumed, jobs: usize, json: bool) -> Result<Summary, Failure> {
+fn make_scenes(dir: &DatasetDir, resumed: Resumed, jobs: usize) -> Result<Summary, Failure> {
     let spec = dir.spec();
     let pending = dir.pending();
     let wanted = spec.prompts.len() * spec.count as usize;
@@ -252,7 +252,7 @@ fn make_scenes(dir: &DatasetDir, resumed: Resumed, jobs: usize, json: bool) -> R
         stop: stop.clone(),
         fatal: Mutex::new(None),
         stats: Mutex::new(Stats::default()),
-        progress: Progress::new(json, wanted, dir.entries().len()),
+        progress: Progress::new(wanted, dir.entries().len()),
     };
     let started = Instant::now();
     std::thread::scope(|s| {
@@ -397,9 +397,8 @@ pub(crate) struct Progress {
 }
 
 impl Progress {
-    pub(crate) fn new(json: bool, wanted: usize, done: usize) -> Self {
-        // Progress is on stderr, so it shows with --json too (which is about stdout).
-        let _ = json;
+    /// Progress is on stderr, so it shows with --json too (which is about stdout).
+    pub(crate) fn new(wanted: usize, done: usize) -> Self {
         let terminal = std::io::stderr().is_terminal();
         let bar = terminal.then(|| {
             let b = ProgressBar::new(wanted as u64);

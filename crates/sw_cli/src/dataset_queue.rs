@@ -74,7 +74,7 @@ pub(crate) fn run(
     });
     let user = user.map_err(internal)?;
     ACTIVE.store(true, Ordering::SeqCst);
-    let result = lead(&rt, &store, &*blobs, &dir, &user.id, json);
+    let result = lead(&rt, &store, &*blobs, &dir, &user.id);
     ACTIVE.store(false, Ordering::SeqCst);
     let (made, gave_up, seconds) = result?;
     let wanted = spec.prompts.len() * spec.count as usize;
@@ -117,12 +117,11 @@ fn lead(
     blobs: &dyn BlobStore,
     dir: &DatasetDir,
     user_id: &str,
-    json: bool,
 ) -> Result<(usize, BTreeMap<String, String>, f64), Failure> {
     let spec = dir.spec();
     let id = spec.queue_id.clone().unwrap_or_default();
     let wanted = spec.prompts.len() * spec.count as usize;
-    let progress = Progress::new(json, wanted, dir.entries().len());
+    let progress = Progress::new(wanted, dir.entries().len());
     let mut pending: BTreeMap<String, (usize, u32)> =
         dir.pending().into_iter().map(|(p, k)| (DatasetSpec::scene_id(p, k), (p, k))).collect();
     let mut fingerprints: BTreeSet<String> = dir.entries().iter().map(|e| e.fingerprint.clone()).collect();

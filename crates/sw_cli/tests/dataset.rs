@@ -261,6 +261,13 @@ fn bad_input_is_one_line_and_writes_nothing() {
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("is not a scenewright dataset"), "{err}");
     assert_eq!(std::fs::read_dir(&foreign).unwrap().count(), 1);
+    // A place that cannot be written (under a regular file: unwritable even for root).
+    let o = run(&["dataset", "--prompt", PROMPT, "--count", "2"], &foreign.join("a.jpg").join("ds"));
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("cannot write the dataset in") && err.contains("a.jpg"), "{err}");
+    assert_eq!(std::fs::read(foreign.join("a.jpg")).unwrap(), b"x");
     // A prompt file with a bad line names the line.
     let prompts = tmp.path().join("prompts.txt");
     std::fs::write(
