@@ -257,3 +257,12 @@ result = cq.Workplane("XY").box(100, 100, 8).edges("|Z").fillet(2).cut(cyl(30, -
 
 # ref: F_061
 result = cyl(25.4, 0, 304.8).cut(cyl(25.4 - 2 * 25.4 / 16, 0, 304.8))
+
+# ref: F_062
+result = cyl(50, 0, 100).cut(cyl(40, 0, 100))
+
+# ref: F_063
+result = cyl(80, 0, 10).cut(cq.Workplane("XY").box(30, 30, 10, centered=(True, True, False)))
+
+# ref: F_064
+result = cq.Workplane("XY").box(30, 30, 30, centered=(True, True, False)).cut(cyl(10, 0, 5))

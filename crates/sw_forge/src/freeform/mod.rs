@@ -108,7 +108,6 @@ fn is_plain(w: &str) -> bool {
             | "ordinary"
             | "classic"
             | "regular"
-            | "hollow"
             | "some"
             | "of"
             | "for"
@@ -135,8 +134,18 @@ fn is_plain(w: &str) -> bool {
             | "new"
             | "old"
             | "nice"
-            | "toy"
     )
+}
+
+/// Objects open inside by nature, of which "hollow" says nothing more ("a hollow pipe"); a
+/// hollow ball or a hollow block is not made.
+fn hollow_by_nature(cand: &Candidate) -> bool {
+    const OPEN: &[&str] = &["pipe", "tube", "cup", "mug", "bucket", "vase", "bowl", "pot", "bottle", "glass", "ring"];
+    let names: Vec<&str> = match cand {
+        Candidate::Basic(b) | Candidate::Object(b) => b.names.to_vec(),
+        Candidate::Catalog(c) => std::iter::once(c.name).chain(c.synonyms.iter().copied()).collect(),
+    };
+    names.iter().any(|n| n.split([' ', '_']).any(|w| OPEN.contains(&w)))
 }
 
 /// One of the objects the words may name: a catalog category or a composition.
@@ -251,7 +260,8 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
     let mut i = 0;
     while i < at {
         let w = &words[i].0;
-        if is_plain(w) || size_word(w, &mut spec) || (w == "or" && i > 0) {
+        let hollow = w == "hollow" && hollow_by_nature(&cand);
+        if is_plain(w) || hollow || size_word(w, &mut spec) || (w == "or" && i > 0) {
             i += 1;
             continue;
         }

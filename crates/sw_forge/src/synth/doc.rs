@@ -34,7 +34,8 @@ pub fn role_of(word: &str) -> Option<Role> {
         "tall" | "high" | "height" => Role::Height,
         "thick" | "thickness" => Role::Thickness,
         "deep" | "depth" => Role::Depth,
-        "diameter" => Role::Diameter,
+        // "50 mm OD, 40 mm ID": outer and inner diameters.
+        "diameter" | "od" | "id" => Role::Diameter,
         "radius" => Role::Radius,
         "side" | "sided" => Role::Side,
         "fillet" | "filleted" | "rounded" | "radiused" => Role::Fillet,
@@ -618,7 +619,8 @@ impl Doc {
                 .chain(after.iter())
                 .map(|(_, w)| match w.as_str() {
                     "inside" => "inner".to_string(),
-                    "outside" => "outer".to_string(),
+                    "outside" | "od" => "outer".to_string(),
+                    "id" => "inner".to_string(),
                     _ => w.clone(),
                 })
                 .filter(|w| QUALS.contains(&w.as_str()))

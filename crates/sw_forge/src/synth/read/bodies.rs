@@ -586,6 +586,10 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
     if half && prev.is_some() {
         mark_on_top(r, e);
     }
+    // A ball with another body: resting on it touches at one point, sunk into it is not said.
+    if !half && prev.is_some() {
+        return Err(Refusal::new(r.quote_element(e), "where a sphere's centre is, beside another body, is not read"));
+    }
     // "upper hemisphere", "flat face on the XY plane, dome rising in +Z".
     let d = r.doc;
     let mut up = true;

@@ -177,6 +177,34 @@ fn push_cut(r: &mut Reader<'_>, label: &str, shape: Shape) -> usize {
 }
 
 fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
+    // "on each face", "through its side": faces other than the top and bottom are not read.
+    for (a, b) in r.sentences_of(e) {
+        for i in a..b {
+            let face = r.doc.is(i, "face") || r.doc.is(i, "side");
+            let which = r.doc.word(i.wrapping_sub(1)).unwrap_or("");
+            if face
+                && matches!(
+                    which,
+                    "each" | "every" | "all" | "its" | "front" | "back" | "left" | "right" | "other" | "four" | "six"
+                )
+            {
+                return Err(Refusal::new(
+                    r.doc.quote(i.saturating_sub(1), i),
+                    "holes in faces other than the top and bottom are not made",
+                ));
+            }
+        }
+    }
+    // A square hole is cut square; other shapes of hole are not made.
+    let square = r.els[e].has_mod("square");
+    if let Some(m) = r.els[e].mods.iter().find(|m| {
+        matches!(
+            m.as_str(),
+            "rectangular" | "hexagonal" | "triangular" | "oval" | "elliptical" | "slotted" | "tapped" | "threaded"
+        )
+    }) {
+        return Err(Refusal::new(r.quote_element(e), format!("a {m} hole is not made")));
+    }
     let d = r
         .take_diameter(e, &[], &["pitch", "circle", "counterbore", "countersink", "outer", "bolt"])
         .or_else(|| r.take_diameter(e, &["bolt"], &["pitch", "circle"]))
@@ -260,18 +288,20 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             let full = extent(r, &bodies, axis);
             let floor = tg.iter().find_map(|t| r.model.adds.get(r.built[*t].as_ref()?.bodies[0])?.shell.map(|s| s.t));
             match (depth, floor, r.says(e, "bottom")) {
+                (Some(dp), _, true) => [full[0], full[0] + dp],
                 (Some(dp), _, _) => [full[1] - dp, full[1]],
                 (None, Some(t), true) => [full[0], full[0] + t],
                 _ => full,
             }
         }
     };
+    let profile = if square { Profile::Rect { w: d, h: d } } else { Profile::Circle { d } };
     let mut bodies = Vec::new();
     for p in &at {
         bodies.push(push_cut(
             r,
             &r.els[e].noun.clone(),
-            Shape::Prism { profile: Profile::Circle { d }, axis, at: *p, rot: 0.0, from: span[0], to: span[1] },
+            Shape::Prism { profile: profile.clone(), axis, at: *p, rot: 0.0, from: span[0], to: span[1] },
         ));
     }
     // A counterbore or countersink with them: on the face the holes open into (+ end).

@@ -66,7 +66,7 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
     }
     for (k, kind, size, s) in ops {
         let Some(bi) = main_body(r) else { break };
-        let edges = select(r, s, bi);
+        let edges = select(r, s, bi)?;
         let body = &r.model.adds[bi];
         let bb = body.bounds();
         // Edges along an axis are limited by the sizes across it.
@@ -88,10 +88,28 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
 }
 
 /// The edges a sentence selects on a body.
-fn select(r: &Reader<'_>, s: usize, bi: usize) -> Edges {
+fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
     let d = r.doc;
     let (a, b) = d.sentence(s);
     let has = |w: &str| (a..b).any(|i| d.is(i, w));
+    // "on one edge", "on an edge": which one is not said.
+    for i in a..b {
+        if d.is(i, "edge") {
+            let raw = d.text.get(d.toks[i].start..d.toks[i].end).unwrap_or("").to_lowercase();
+            let counted = d
+                .word(i.wrapping_sub(1))
+                .is_some_and(|w| matches!(w, "one" | "two" | "three" | "an" | "a" | "single" | "some"));
+            let named = (a..i).any(|j| {
+                matches!(
+                    d.word(j),
+                    Some("top" | "bottom" | "vertical" | "long" | "circular" | "all" | "four" | "each" | "every")
+                )
+            });
+            if counted || (raw == "edge" && !named) {
+                return Err(Refusal::new(d.quote(i.saturating_sub(2), i), "which edge is not said"));
+            }
+        }
+    }
     let mark = |w: &str| {
         for i in a..b {
             if d.is(i, w) {
@@ -112,7 +130,7 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Edges {
                 d.mark_range(i.saturating_sub(2), i + 1);
             }
         }
-        return Edges::Parallel(Axis::Z);
+        return Ok(Edges::Parallel(Axis::Z));
     }
     if has("long") {
         mark("long");
@@ -125,23 +143,23 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Edges {
         } else {
             Axis::Z
         };
-        return Edges::Parallel(k);
+        return Ok(Edges::Parallel(k));
     }
     if has("circular") || has("end") || (has("top") && has("bottom")) {
         for w in ["circular", "end", "top", "bottom", "and"] {
             mark(w);
         }
-        return Edges::Circular;
+        return Ok(Edges::Circular);
     }
     if has("top") {
         mark("top");
-        return Edges::Face(Axis::Z, true);
+        return Ok(Edges::Face(Axis::Z, true));
     }
     if has("bottom") {
         mark("bottom");
-        return Edges::Face(Axis::Z, false);
+        return Ok(Edges::Face(Axis::Z, false));
     }
-    if round { Edges::Circular } else { Edges::All }
+    Ok(if round { Edges::Circular } else { Edges::All })
 }
 
 /// "shelled inward with 2mm wall thickness", with the face removed ("the top face (+Z)
