@@ -13,7 +13,7 @@ use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
 use serde_json::json;
-use sw_llm::{Client, Endpoint, LlmCall, LlmConfig, LlmOutcome, LlmStage};
+use sw_llm::{Client, Endpoint, LlmCall, LlmConfig, LlmOutcome, LlmStage, Telemetry};
 use sw_pipeline::{EditReader, Options};
 use sw_plan::ScenePlan;
 
@@ -31,21 +31,23 @@ struct Case {
     robots: std::collections::BTreeMap<String, u32>,
 }
 
-/// How many of a thing the plan holds: groups of that category, or groups whose words
-/// (phrase, proxy label) name it.
+/// How many of a thing the plan holds: groups of that category, else proxies whose label
+/// has it as a word. Phrases are not read: a model writes any words there ("a car and a
+/// TurtleBot" for an air compressor), and the scene holds what the category or label is.
 fn count_of(plan: &ScenePlan, noun: &str) -> u32 {
-    let words = noun.replace('_', " ");
     let by_category: u32 = plan.objects.iter().filter(|o| o.category == noun).map(|o| o.count).sum();
     if by_category > 0 {
         return by_category;
     }
-    let singular = words.trim_end_matches('s');
+    let singular = |w: &str| w.trim_end_matches('s').to_string();
+    let wanted: Vec<String> = noun.split('_').map(singular).collect();
     plan.objects
         .iter()
         .filter(|o| {
-            let label = o.proxy.as_ref().map_or("", |p| p.label.as_str()).to_lowercase();
-            let phrase = o.phrase.to_lowercase();
-            label.contains(singular) || phrase.contains(singular)
+            o.proxy.as_ref().is_some_and(|p| {
+                let label: Vec<String> = p.label.to_lowercase().split_whitespace().map(singular).collect();
+                label.windows(wanted.len()).any(|w| w == wanted.as_slice())
+            })
         })
         .map(|o| o.count)
         .sum()
@@ -157,8 +159,12 @@ pub(crate) fn run(base_url: &str, model: &str, suite: Option<PathBuf>, json_out:
     let mut kept = 0usize;
     let mut model_plans = 0usize;
     let mut per_prompt = Vec::new();
+    let mut all: Vec<LlmCall> = Vec::new();
     for (i, case) in cases.iter().enumerate() {
-        let c = client.fresh();
+        // Every call of the prompt, the edit's too (it takes its own fresh client and
+        // keeps its calls only in a record it writes when it succeeds).
+        let tap = Telemetry::default();
+        let c = client.fresh_tapped(&tap);
         let (mut plan, warnings) =
             sw_pipeline::plan_with_llm(&case.prompt, &c, true).map_err(|e| Failure::internal(e.to_string()))?;
         let fell_back = warnings.iter().any(|w| w.code != "llm_plan_grounded");
@@ -186,7 +192,7 @@ pub(crate) fn run(base_url: &str, model: &str, suite: Option<PathBuf>, json_out:
                 edit = Some(r.map(|o| o.record.operations.join("; ")).map_err(|e| e.to_string()));
             }
         }
-        let calls = c.telemetry().calls();
+        let calls = tap.calls();
         if !json_out {
             eprintln!(
                 "{:>2} {:<70} {} {}",
@@ -203,9 +209,8 @@ pub(crate) fn run(base_url: &str, model: &str, suite: Option<PathBuf>, json_out:
             "edit": edit.as_ref().and_then(|e| e.as_ref().ok()), "edit_error": edit.and_then(|e| e.err()),
             "calls": calls,
         }));
-        client.telemetry().extend(calls);
+        all.extend(calls);
     }
-    let all = client.telemetry().calls();
     let table = rows(&all);
     let total_s = started.elapsed().as_secs_f64();
     if json_out {
@@ -257,5 +262,16 @@ mod tests {
         let mut wrong = plan.clone();
         wrong.objects.retain(|o| o.category != "plate");
         assert_eq!(unkept(&wrong, &cases[0]), vec!["plate 0 (said 2)".to_string()]);
+        // A proxy counts by its label's words, not by words the phrase merely contains.
+        let garage = cases.iter().find(|c| c.objects.contains_key("car")).unwrap();
+        let mut plan = sw_planner::plan(&garage.prompt).unwrap();
+        assert!(unkept(&plan, garage).is_empty(), "{:?}", unkept(&plan, garage));
+        let car = plan.objects.iter().position(|o| o.proxy.as_ref().is_some_and(|p| p.label == "car")).unwrap();
+        let mut cardboard = plan.objects[car].clone();
+        cardboard.category = "cardboard_box".into();
+        cardboard.proxy = None;
+        cardboard.phrase = "a car and cardboard".into();
+        plan.objects[car] = cardboard;
+        assert_eq!(unkept(&plan, garage), vec!["car 0 (said 1)".to_string()]);
     }
 }

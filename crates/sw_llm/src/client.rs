@@ -76,29 +76,44 @@ impl LlmError {
     }
 }
 
-/// The calls a client made, shared by its clones.
+type Calls = Arc<Mutex<Vec<LlmCall>>>;
+
+/// The calls a client made, shared by its clones; also recorded in the taps it was
+/// given (see [`Client::fresh_tapped`]).
 #[derive(Debug, Clone, Default)]
-pub struct Telemetry(Arc<Mutex<Vec<LlmCall>>>);
+pub struct Telemetry {
+    calls: Calls,
+    taps: Vec<Calls>,
+}
 
 impl Telemetry {
     pub fn record(&self, call: LlmCall) {
         crate::metrics::record(&call);
-        self.0.lock().unwrap_or_else(|p| p.into_inner()).push(call);
+        for tap in &self.taps {
+            tap.lock().unwrap_or_else(|p| p.into_inner()).push(call.clone());
+        }
+        self.calls.lock().unwrap_or_else(|p| p.into_inner()).push(call);
     }
 
-    /// Adds calls another client already recorded (and counted in the metrics).
+    /// Adds calls another client already recorded (and counted in the metrics, and
+    /// recorded in its taps: not again in these).
     pub fn extend(&self, calls: Vec<LlmCall>) {
-        self.0.lock().unwrap_or_else(|p| p.into_inner()).extend(calls);
+        self.calls.lock().unwrap_or_else(|p| p.into_inner()).extend(calls);
     }
 
     /// Every call so far, in the order they ended.
     pub fn calls(&self) -> Vec<LlmCall> {
-        self.0.lock().unwrap_or_else(|p| p.into_inner()).clone()
+        self.calls.lock().unwrap_or_else(|p| p.into_inner()).clone()
     }
 
     /// Every call so far; the record starts empty again.
     pub fn take(&self) -> Vec<LlmCall> {
-        std::mem::take(&mut *self.0.lock().unwrap_or_else(|p| p.into_inner()))
+        std::mem::take(&mut *self.calls.lock().unwrap_or_else(|p| p.into_inner()))
+    }
+
+    /// An empty record with the same taps.
+    fn child(&self) -> Telemetry {
+        Telemetry { calls: Calls::default(), taps: self.taps.clone() }
     }
 }
 
@@ -173,9 +188,19 @@ impl Client {
         &self.telemetry
     }
 
-    /// A client with the same endpoints and a fresh telemetry record.
+    /// A client with the same endpoints and a fresh telemetry record (still recording
+    /// into this one's taps).
     pub fn fresh(&self) -> Client {
-        Client { config: self.config.clone(), telemetry: Telemetry::default(), agents: Arc::clone(&self.agents) }
+        Client { config: self.config.clone(), telemetry: self.telemetry.child(), agents: Arc::clone(&self.agents) }
+    }
+
+    /// A fresh client whose calls, and those of every fresh client made from it, are
+    /// also recorded in `tap`: for a caller that hands a client to code which takes its
+    /// own fresh copy (an edit does) and wants the calls even when that code fails.
+    pub fn fresh_tapped(&self, tap: &Telemetry) -> Client {
+        let mut c = self.fresh();
+        c.telemetry.taps.push(Arc::clone(&tap.calls));
+        c
     }
 
     /// Asks and waits for the whole answer (streamed underneath when the endpoint

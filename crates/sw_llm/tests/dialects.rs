@@ -289,3 +289,24 @@ fn status_probes_list_models_ping_and_check_the_schema() {
     let ping = &server.requests()[1];
     assert_eq!(ping.json().unwrap()["max_tokens"], 1);
 }
+
+#[test]
+fn a_tap_sees_the_calls_of_fresh_clients_made_from_a_tapped_one() {
+    let server = MockServer::start(|_| Reply::answer(r#"{"subject": "box", "relation": "in_row"}"#)).unwrap();
+    let parent = client(endpoint(&server));
+    let tap = sw_llm::Telemetry::default();
+    let tapped = parent.fresh_tapped(&tap);
+    // Code given the tapped client takes its own fresh copy (as an edit does).
+    let inner = tapped.fresh();
+    inner.complete(LlmStage::Edit, &request(), "edit").unwrap();
+    tapped.complete(LlmStage::Plan, &request(), "plan").unwrap();
+    parent.complete(LlmStage::Plan, &request(), "untapped").unwrap();
+    let purposes = |t: &sw_llm::Telemetry| t.calls().iter().map(|c| c.purpose.clone()).collect::<Vec<_>>();
+    assert_eq!(purposes(&tap), ["edit", "plan"]);
+    assert_eq!(purposes(inner.telemetry()), ["edit"]);
+    assert_eq!(purposes(tapped.telemetry()), ["plan"]);
+    assert_eq!(purposes(parent.telemetry()), ["untapped"]);
+    // Calls handed on by `extend` were tapped when they were made: not twice.
+    tapped.telemetry().extend(inner.telemetry().calls());
+    assert_eq!(tap.calls().len(), 2);
+}

@@ -49,9 +49,11 @@ fn room_named(reading: &ScenePlan) -> bool {
     !reading.understanding.approximated.iter().any(|a| a.text == "(no room named)")
 }
 
-/// The content words of a group: its phrase, category and proxy label, singular.
+/// The words that say what a group is: its category, its proxy label and the head noun
+/// of its phrase, singular. Not every word of the phrase: a small model writes phrases
+/// such as "a car and a TurtleBot" for an air compressor, which is no car.
 fn group_words(o: &ObjectPlan) -> BTreeSet<String> {
-    let mut w: BTreeSet<String> = vocab::words(&o.phrase).into_iter().collect();
+    let mut w: BTreeSet<String> = head(o).into_iter().collect();
     if o.category != "proxy" {
         w.extend(vocab::words(&o.category.replace('_', " ")));
     }
@@ -460,6 +462,31 @@ mod tests {
         assert_eq!(plan.room.size.width, 18.0, "a plausible size the prompt does not contradict stays");
         assert!(plan.relations.iter().any(|r| r.subject == "boxes" && r.kind.name() == "on"));
         assert!(plan.relations.iter().any(|r| r.subject == "racks" && r.kind.name() == "facing_each_other"));
+        plan.validate().unwrap();
+    }
+
+    #[test]
+    fn a_group_whose_phrase_merely_mentions_an_unknown_noun_does_not_stand_for_it() {
+        // SmolLM2-135M's plan of this prompt on llama-server: the whole prompt as one
+        // group's phrase, "a car and a TurtleBot" as an air compressor's, no car.
+        let prompt = "a garage with two tool chests, a car and a TurtleBot";
+        let (plan, g) = grounded(
+            prompt,
+            json!({
+                "room": {"kind": "tabletop"},
+                "objects": [
+                    {"phrase": prompt, "id": "chests", "category": "tool_chest", "count": 2},
+                    {"phrase": "a car and a TurtleBot", "id": "compressor", "category": "air_compressor", "count": 3}
+                ],
+                "robots": [{"phrase": prompt, "id": "tb", "model": "turtlebot3", "count": 1, "mount": {"mount": "floor"}}]
+            }),
+        );
+        let cars: Vec<&ObjectPlan> =
+            plan.objects.iter().filter(|o| o.proxy.as_ref().is_some_and(|p| p.label == "car")).collect();
+        assert_eq!(cars.iter().map(|o| o.count).collect::<Vec<_>>(), vec![1], "{:#?}", plan.objects);
+        assert_eq!(count_of(&plan, "air_compressor"), 3, "what the model adds stays");
+        assert_eq!(count_of(&plan, "tool_chest"), 2);
+        assert!(g.notes.iter().any(|n| n.text == "a car" && n.reason.contains("left it out")), "{:#?}", g.notes);
         plan.validate().unwrap();
     }
 
