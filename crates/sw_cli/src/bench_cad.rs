@@ -518,8 +518,14 @@ fn write_sheet(path: &Path, outcomes: &[Outcome]) -> Result<(), Failure> {
                 (Some(m), true) => m.trim_start_matches("freeform:").to_string(),
                 _ => "not made".to_string(),
             },
-            // The catalog's objects face +Y; show their fronts.
-            azimuth: if o.made_by.as_deref().is_some_and(|m| m.starts_with("catalog:")) { 1.15 } else { -0.9 },
+            // The catalog's objects face +Y; show their fronts. Others are seen across their
+            // longer side (a guitar or a hammer lying along X from its side, not its end).
+            azimuth: match (o.made_by.as_deref(), o.mesh.as_ref().map(|m| m.bounds().size())) {
+                (Some(m), _) if m.starts_with("catalog:") => 1.15,
+                (_, Some(s)) if s[0] >= 1.5 * s[1] => -1.2,
+                (_, Some(s)) if s[1] >= 1.5 * s[0] => -0.4,
+                _ => -0.9,
+            },
         })
         .collect();
     let image = contact_sheet(&tiles, 9, 200);

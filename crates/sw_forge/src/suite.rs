@@ -160,7 +160,10 @@ pub fn contact_sheet(tiles: &[Tile<'_>], columns: u32, size: u32) -> Image {
         let (x, y) = (col * size, row * (size + caption_h));
         let tile = match t.mesh.filter(|m| !m.bounds().is_empty()) {
             Some(m) => {
-                let camera = Camera::framing(&m.bounds(), t.azimuth, 0.5);
+                // Flat things (a board, a guitar lying down) are seen from higher up.
+                let ext = m.bounds().size();
+                let flat = ext[2] < 0.2 * ext[0].max(ext[1]);
+                let camera = Camera::framing(&m.bounds(), t.azimuth, if flat { 0.95 } else { 0.5 });
                 let mut r = Renderer::new(size, size, &camera, [240, 242, 246]);
                 r.draw_mesh(m, &sw_geom::Pose::default(), [0.55, 0.62, 0.72, 1.0]);
                 r.finish()

@@ -3,7 +3,7 @@
 //! a free-form prompt may name. Objects lie or stand as they would on a floor or a table.
 
 use super::shapes::{
-    Parts, bx, cone_x, cone_z, cup, cyl_x, cyl_y, cyl_z, open_top, revolve, rod_arc, round_vertical, sphere,
+    Parts, bx, cone_x, cone_z, cup, cyl_x, cyl_y, cyl_z, open_top, prism_xy, revolve, rod_arc, round_vertical, sphere,
 };
 use super::{Build, Spec};
 use crate::synth::model::Model;
@@ -351,20 +351,38 @@ fn coat_rack(s: &Spec) -> Model {
     p.finish()
 }
 
-/// Lying flat: a two-bout body with a sound hole, a neck and a headstock along +X.
+/// Lying flat: a body with two bouts and a waist between them (the outline of two circles
+/// blended), a sound hole, a bridge, a fretboard standing above the top, a nut, a
+/// headstock with three tuning pegs on each side, along +X.
 fn guitar(s: &Spec) -> Model {
     let k = s.size;
-    let t = 90.0 * k * s.thick;
+    let t = 100.0 * k * s.thick;
+    let (xl, rl, xu, ru) = (-40.0 * k, 180.0 * k, 160.0 * k, 130.0 * k);
+    // Half-width: the two bouts' circles blended by an 8-norm, which fills the notch
+    // between them into a waist about two thirds of the lower bout.
+    let half = |x: f64| {
+        let c = |x0: f64, r: f64| (r * r - (x - x0) * (x - x0)).max(0.0).sqrt();
+        (c(xl, rl).powi(8) + c(xu, ru).powi(8)).powf(0.125)
+    };
+    let (x0, x1) = (xl - rl, xu + ru);
+    let n = 48;
+    let xs: Vec<f64> =
+        (0..=n).map(|i| x0 + (x1 - x0) * 0.5 * (1.0 - (std::f64::consts::PI * i as f64 / n as f64).cos())).collect();
+    let mut outline: Vec<[f64; 2]> = xs.iter().map(|&x| [x, -half(x)]).collect();
+    outline.extend(xs.iter().rev().skip(1).take(n - 1).map(|&x| [x, half(x)]));
     let mut p = Parts::default();
-    p.add("lower bout", cyl_z(340.0 * k, 0.0, t, 0.0, 0.0));
-    p.add("upper bout", cyl_z(260.0 * k, 0.0, t, 220.0 * k, 0.0));
-    p.add("neck", bx([320.0 * k, -26.0 * k, t - 25.0 * k], [760.0 * k * s.long, 26.0 * k, t]));
-    p.add(
-        "headstock",
-        bx([760.0 * k * s.long - 1.0, -40.0 * k, t - 22.0 * k], [930.0 * k * s.long, 40.0 * k, t - 2.0 * k]),
-    );
-    p.add("bridge", bx([-90.0 * k, -45.0 * k, t - 1.0], [-70.0 * k, 45.0 * k, t + 8.0 * k]));
-    p.cut("sound hole", cyl_z(90.0 * k, t - 10.0 * k, t + 1.0, 150.0 * k, 0.0));
+    p.add("body", prism_xy(&outline, 0.0, t));
+    let neck_end = 700.0 * k * s.long;
+    p.add("neck", bx([x1 - 40.0 * k, -26.0 * k, t - 25.0 * k], [neck_end, 26.0 * k, t + 6.0 * k]));
+    p.add("nut", bx([neck_end - 8.0 * k, -26.0 * k, t], [neck_end, 26.0 * k, t + 10.0 * k]));
+    let head_end = neck_end + 180.0 * k;
+    p.add("headstock", bx([neck_end - 1.0, -42.0 * k, t - 22.0 * k], [head_end, 42.0 * k, t - 2.0 * k]));
+    for i in 0..3 {
+        let x = neck_end + (45.0 + 50.0 * i as f64) * k;
+        p.add("tuning peg", cyl_y(12.0 * k, -62.0 * k, 62.0 * k, x, t - 12.0 * k));
+    }
+    p.add("bridge", bx([-70.0 * k, -50.0 * k, t - 1.0], [-45.0 * k, 50.0 * k, t + 9.0 * k]));
+    p.cut("sound hole", cyl_z(88.0 * k, t - 10.0 * k, t + 1.0, xu - 10.0 * k, 0.0));
     p.finish()
 }
 
