@@ -134,7 +134,7 @@ impl Meshes<'_> {
     }
 }
 
-fn collect(e: &Element, f: &Frame, body: &mut BodyGeom, top: &Frame, meshes: &mut Meshes<'_>) {
+fn collect(e: &Element, f: &Frame, body: &mut BodyGeom, meshes: &mut Meshes<'_>) {
     for c in &e.children {
         match c.name.as_str() {
             "geom" if c.get("class") == Some("sw_collision") => {
@@ -175,7 +175,7 @@ fn collect(e: &Element, f: &Frame, body: &mut BodyGeom, top: &Frame, meshes: &mu
                     });
                 }
             }
-            "body" => collect(c, &f.child(c), body, top, meshes),
+            "body" => collect(c, &f.child(c), body, meshes),
             _ => {}
         }
     }
@@ -222,7 +222,7 @@ impl SceneGeom {
             // Yaw of a rotation about +Z only (objects and robot bases are turned so).
             let yaw = 2.0 * f.quat[3].atan2(f.quat[0]);
             let mut body = BodyGeom { pos: f.pos, yaw, bounds: Aabb::EMPTY, sites: Vec::new(), joints: Vec::new() };
-            collect(b, &f, &mut body, &f, &mut meshes);
+            collect(b, &f, &mut body, &mut meshes);
             joint_chain(b, &f, &mut body.joints);
             out.bodies.insert(name.to_string(), body);
         }
