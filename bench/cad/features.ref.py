@@ -266,3 +266,15 @@ result = cyl(80, 0, 10).cut(cq.Workplane("XY").box(30, 30, 10, centered=(True, T
 
 # ref: F_064
 result = cq.Workplane("XY").box(30, 30, 30, centered=(True, True, False)).cut(cyl(10, 0, 5))
+
+# ref: F_065
+result = slab(0, 150, -25, 25, 35, 40).union(slab(0, 150, -2, 2, 0, 35))
+
+# ref: F_066
+result = slab(-50, 50, -30, 30, 0, 5).union(slab(-50, 50, -2.5, 2.5, 5, 25))
+
+# ref: F_067
+result = slab(-40, 40, -40, 40, 0, 10)
+for gx in (-20, 0, 20):
+    for gy in (-20, 0, 20):
+        result = result.cut(cyl(5, 0, 10, gx, gy))
