@@ -284,6 +284,13 @@ fn bad_input_is_one_line_and_writes_nothing() {
         String::from_utf8_lossy(&o.stderr)
     );
     assert!(!out.exists());
+    // A line the planner cannot read is refused before any scene is made, naming the line.
+    std::fs::write(&prompts, format!("{PROMPT}\nzzz qqq\n")).unwrap();
+    let o = run(&["dataset", "--prompts", prompts.to_str().unwrap(), "--count", "2"], &out);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("line 2: nothing in the prompt was recognised") && err.lines().count() == 1, "{err}");
+    assert!(!out.exists());
     std::fs::write(&prompts, "a kitchen with a table\n\n\n").unwrap();
     for (args, needle) in [
         (vec!["--count", "0"], "--count must be"),
