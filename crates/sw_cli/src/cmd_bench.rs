@@ -22,9 +22,11 @@ pub(crate) enum BenchCommand {
     /// The service under load: WebSocket clients, or a deep queue and many runners.
     #[command(subcommand)]
     Server(crate::bench_server::ServerBench),
-    /// Every prompt of the suite (or one prompt, repeated) through the pipeline.
+    /// Every prompt of the suite (or one prompt, repeated) through the pipeline; with a
+    /// relation suite (`.jsonl`, bench/relations/suite.jsonl), per-relation pass rates.
     Scenes {
-        /// A prompt file: one prompt per line, `#` comments (default: the built-in suite).
+        /// A prompt file: one prompt per line, `#` comments (default: the built-in suite);
+        /// or a relation suite, one JSON line per prompt with its counts and relations.
         #[arg(long)]
         suite: Option<PathBuf>,
         /// Benchmark this prompt instead of a suite.
@@ -170,6 +172,14 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
 }
 
 fn scenes(suite: Option<PathBuf>, prompt: Option<String>, seeds: u64, repeat: u32, json: bool) -> Result<u8, Failure> {
+    // A relation suite (`bench/relations/suite.jsonl`): per-relation pass rates.
+    if prompt.is_none()
+        && let Some(path) = &suite
+        && crate::bench_relations::is_suite(path)
+    {
+        let text = fs_err::read_to_string(path).map_err(|e| Failure::input(e.to_string()))?;
+        return crate::bench_relations::run(&crate::bench_relations::parse(&text)?, seeds, json);
+    }
     let prompts: Vec<String> = match (&prompt, &suite) {
         (Some(p), _) => vec![p.clone()],
         (None, Some(path)) => parse_suite(&fs_err::read_to_string(path).map_err(|e| Failure::input(e.to_string()))?),

@@ -7,6 +7,7 @@ mod bench_cad;
 mod bench_index;
 mod bench_llm;
 mod bench_llm_real;
+mod bench_relations;
 mod bench_server;
 mod cmd_assets;
 mod cmd_bench;

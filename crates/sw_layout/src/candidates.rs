@@ -269,7 +269,10 @@ pub(crate) fn apart(b: &Aabb, targets: &[Body], gaps: &[f64]) -> Vec<Spot> {
             let side = [-f[1], f[0]];
             let tc = t.center();
             let yaw = yaw_facing(f[0], f[1]);
-            for (dir, shift_dir) in [(side, f), ([-side[0], -side[1]], f), (f, side), ([-f[0], -f[1]], side)] {
+            // Its long faces first (things stand side by side), then its ends.
+            let mut faces = [(side, f), ([-side[0], -side[1]], f), (f, side), ([-f[0], -f[1]], side)];
+            faces.sort_by(|a, b| t.half_along(a.0).total_cmp(&t.half_along(b.0)));
+            for (dir, shift_dir) in faces {
                 let face = tc[0] * dir[0] + tc[1] * dir[1] + t.half_along(dir) + g;
                 let mid = tc[0] * shift_dir[0] + tc[1] * shift_dir[1];
                 // Centred on the side, then slid along it (to reach two things at once,

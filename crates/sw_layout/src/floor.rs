@@ -92,9 +92,29 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     specific.extend(room_between(ctx, &group, k, &b));
     specific.extend(beside_an_arms_work(ctx, &group, &b));
     // The instances an arm works at stay together, within its reach ("two pallets").
-    let tended =
-        k > 0 && ctx.input.robots.iter().any(|r| crate::reach::work_group(ctx, r).as_deref() == Some(group.as_str()));
-    if tended && rels.is_empty() {
+    // An arm on a stand works best between them: leave the stand's width between the
+    // first and the next (palletizing between two pallets).
+    let stands: Vec<f64> = ctx
+        .input
+        .robots
+        .iter()
+        .filter(|r| crate::reach::work_group(ctx, r).as_deref() == Some(group.as_str()))
+        .map(|r| match &r.mount {
+            crate::RobotMount::Carrier { object } => ctx
+                .input
+                .objects
+                .iter()
+                .position(|o| &o.name == object)
+                .map_or(0.6, |i| ctx.bounds[i].size()[0].max(ctx.bounds[i].size()[1])),
+            _ => 0.0,
+        })
+        .collect();
+    if k > 0 && !stands.is_empty() && rels.is_empty() {
+        let first: Vec<Body> = relate::bodies(ctx, &group).into_iter().take(1).map(|(_, b)| b).collect();
+        let stand = stands.iter().copied().fold(0.0, f64::max);
+        if stand > 0.0 {
+            specific.extend(candidates::apart(&b, &first, &[stand + 0.16, stand + 0.3]));
+        }
         specific.extend(candidates::beside(ctx, &b, &group, 0));
     }
     for r in &rels {

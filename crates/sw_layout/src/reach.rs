@@ -111,6 +111,11 @@ pub(crate) fn can_work_at(ctx: &Ctx<'_>, base: [f64; 3], reach: f64, idx: usize)
         return reaches(base, reach, nearest_on_segment(a, b, sh));
     }
     let Some(spot) = ctx.placed[idx].as_ref().map(|p| p.spot) else { return false };
+    // A free item (a pallet): its centre.
+    if ctx.input.objects[idx].asset.is_free() {
+        let b = ctx.bounds[idx];
+        return reaches(base, reach, spot.apply(b.center()));
+    }
     match top_surface(ctx, idx) {
         Some(s) => {
             let corners = [[s.min[0], s.min[1]], [s.max[0], s.min[1]], [s.max[0], s.max[1]], [s.min[0], s.max[1]]];

@@ -50,13 +50,13 @@ pub(crate) fn on_arm_surface(plan: &ScenePlan, group: &str) -> bool {
     })
 }
 
-/// A workpiece on an arm's surface sized to be worked on: at most 0.42 m across and
-/// 0.28 m high (under the forearm of an arm at its home pose), so that what the prompt
+/// A workpiece on an arm's surface sized to be worked on: at most 0.36 m across and
+/// 0.26 m high (under the forearm of an arm at its home pose), so that what the prompt
 /// puts there fits within the arm's reach beside it.
 pub(crate) fn fit_workpiece(a: Asset) -> Asset {
     let s = a.bounds().size();
     let mut change: BTreeMap<&str, f64> = BTreeMap::new();
-    for (name, v, cap) in [("width", s[0], 0.42), ("depth", s[1], 0.42), ("height", s[2], 0.28)] {
+    for (name, v, cap) in [("width", s[0], 0.36), ("depth", s[1], 0.36), ("height", s[2], 0.26)] {
         if v > cap {
             change.insert(name, cap);
         }

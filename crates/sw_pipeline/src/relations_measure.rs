@@ -355,6 +355,10 @@ fn side_of(t: &Thing, p: [f64; 2]) -> usize {
     }
 }
 
+/// Farthest a piece "around" something may stand from it, m (a guard ring keeps an
+/// arm's reach plus the safety distance).
+const AROUND: f64 = 3.0;
+
 /// Pieces on at least three sides of their target (or every side they can be on).
 fn around(subjects: &[Thing], targets: &[Thing], v: &mut Verdict) {
     let mut per: Vec<(Vec<usize>, usize)> = vec![(Vec::new(), 0); targets.len()];
@@ -383,7 +387,7 @@ fn around(subjects: &[Thing], targets: &[Thing], v: &mut Verdict) {
             v.fail(format!("on {s} side(s) only"));
         }
     }
-    if worst_gap > NEAR {
+    if worst_gap > AROUND {
         v.fail(format!("{worst_gap:.2} m from it"));
     }
 }
