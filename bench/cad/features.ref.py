@@ -278,3 +278,8 @@ result = slab(-40, 40, -40, 40, 0, 10)
 for gx in (-20, 0, 20):
     for gy in (-20, 0, 20):
         result = result.cut(cyl(5, 0, 10, gx, gy))
+
+# ref: F_068
+# A point on +X (the direction is not said; extents are compared sorted).
+pts = [((30 if k % 2 == 0 else 12.5) * math.cos(math.pi * k / 5), (30 if k % 2 == 0 else 12.5) * math.sin(math.pi * k / 5)) for k in range(10)]
+result = cq.Workplane("XY").polyline(pts).close().extrude(8)

@@ -95,6 +95,9 @@ def table() -> dict[str, Ref]:
     t["F_065"] = ((150, 50, 40), (50 * 5 + 4 * 35) * 150)
     t["F_066"] = ((100, 60, 25), 100 * 60 * 5 + 100 * 5 * 20)
     t["F_067"] = ((80, 80, 10), (80 * 80 - 9 * disc(5)) * 10)
+    # Points at 0, 72 … 288 degrees: X from the point at 0 to those at 144 and 216, Y between
+    # the points at 72 and 288.
+    t["F_068"] = ((30 + 30 * cos(radians(36)), 2 * 30 * sin(radians(72)), 8), star(5, 30, 12.5) * 8)
     # The knob: a 15 x 10 cylinder, a frustum from r 15 to 8 over 4 mm, an 8 x 11 cylinder.
     knob = disc(30) * 10 + pi * 4 / 3 * (15**2 + 15 * 8 + 8**2) + disc(16) * 11
     t["F_042"] = ((30, 30, 25), knob)

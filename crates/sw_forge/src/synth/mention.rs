@@ -751,9 +751,11 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
                     o.angles.push((i, a));
                 }
             }
-            // "16 teeth", "16-tooth", "32 vertices".
+            // "16 teeth", "16-tooth", "32 vertices", a star-shaped part's "5 points".
             Tk::Num { v, unit: None, .. } if v.fract() == 0.0 && v >= 1.0 => {
+                let star_points = doc.is(i + 1, "point") && (0..doc.toks.len()).any(|j| doc.is(j, "star-shaped"));
                 let per = if doc.is(i + 1, "tooth")
+                    || star_points
                     || (doc.is(i + 2, "tooth") && doc.word(i + 1).is_some_and(|w| shape_adjective(w).is_some()))
                 {
                     Some(1)
@@ -766,7 +768,8 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
                     && let Some(o) = owner(doc, mentions, i).and_then(|o| elements.get_mut(o))
                 {
                     o.teeth.get_or_insert((v as u32) / per);
-                    let last = if doc.is(i + 1, "tooth") || doc.is(i + 1, "vertex") { i + 1 } else { i + 2 };
+                    let last =
+                        if doc.is(i + 1, "tooth") || doc.is(i + 1, "vertex") || star_points { i + 1 } else { i + 2 };
                     doc.mark_range(i, last + 1);
                 }
             }

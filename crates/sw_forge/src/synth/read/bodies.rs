@@ -395,8 +395,10 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
             (Profile::Ngon { n, d, phase }, d, None)
         }
         ShapeHint::Star => {
-            let tip = need(r.take_diameter(e, &["tip"], &[]), "tip diameter", r, e)?;
-            let root = need(r.take_diameter(e, &["root"], &[]), "root diameter", r, e)?;
+            // A gear's tip and root circles; a star's outer and inner diameters.
+            let tip = r.take_diameter(e, &["tip"], &[]).or_else(|| r.take_diameter(e, &["outer"], &[]));
+            let root = r.take_diameter(e, &["root"], &[]).or_else(|| r.take_diameter(e, &["inner"], &[]));
+            let (tip, root) = (need(tip, "tip diameter", r, e)?, need(root, "root diameter", r, e)?);
             let teeth = r.els[e]
                 .teeth
                 .or(r.els[e].count)
