@@ -134,6 +134,8 @@ def main() -> int:
     ap.add_argument("--skip-mjx", action="store_true")
     ap.add_argument("--json", action="store_true")
     args = ap.parse_args()
+    # Warp prints its start-up and kernel loads on stdout: keep stdout for the result.
+    out, sys.stdout = sys.stdout, sys.stderr
     binary()
     import scenewright
 
@@ -190,7 +192,8 @@ def main() -> int:
         f"{summary['mjx']['stable']} stable (largest settle drift {summary['mjx']['max_displacement_m'] * 1000:.2f} mm, "
         f"median JIT compile {summary['mjx']['median_compile_s']:.0f} s)\n"
         f"Warp  {summary['warp']['loaded']}/{len(warp_rows)} load, {summary['warp']['within_1e-4']} within 1e-4 of native "
-        f"after 200 steps (largest |Δqpos| {summary['warp']['max_abs_qpos_diff']:.1e})"
+        f"after 200 steps (largest |Δqpos| {summary['warp']['max_abs_qpos_diff']:.1e})",
+        file=out,
     )
     ok = all(r.get("mjx", {}).get("stable", True) for r in rows) and all(
         r.get("warp", {}).get("within_1e-4", True) for r in rows
