@@ -18,14 +18,15 @@ const STEP: f64 = 0.02;
 /// on their target, within reach of the arm that works there, else on the floor next to
 /// it (reported).
 pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
-    for &idx in items {
+    for idx in in_stack_order(ctx, items) {
         let Some(target) = surface_target(ctx, idx) else {
             continue;
         };
         let group = ctx.input.objects[idx].group.clone();
-        let k = ctx.instances(&group).iter().position(|&i| i == idx).unwrap_or(0);
         // "a stack of five plates on the counter": the first on it, the rest on each other.
         let stacked = ctx.relations(&group).iter().any(|r| matches!(r, RelationKind::Stacked));
+        let order = if stacked { stack_order(ctx, &group) } else { ctx.instances(&group) };
+        let k = order.iter().position(|&i| i == idx).unwrap_or(0);
         if stacked && k > 0 && on_the_one_below(ctx, idx, &group, k) {
             continue;
         }
@@ -54,9 +55,44 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
     }
 }
 
-/// Instance `k` of a stacked group on top of instance `k - 1`, centred over it.
+/// The members of a stacked group from the bottom up, widest first (stable): what stands
+/// on the bottom one stays within its footprint, so a stack placed near a wall does not
+/// have a wider member above poking into it ("a stack of plates" of varied sizes).
+fn stack_order(ctx: &Ctx<'_>, group: &str) -> Vec<usize> {
+    let mut v = ctx.instances(group);
+    let width = |i: usize| {
+        let s = ctx.bounds[i].size();
+        s[0].max(s[1])
+    };
+    v.sort_by(|a, b| width(*b).total_cmp(&width(*a)));
+    v
+}
+
+/// `items` with the members of each stacked group, in the places they hold, put in their
+/// stack order.
+fn in_stack_order(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
+    let mut out = items.to_vec();
+    let mut groups: Vec<String> = Vec::new();
+    for &i in items {
+        let g = &ctx.input.objects[i].group;
+        if !groups.contains(g) && ctx.relations(g).iter().any(|r| matches!(r, RelationKind::Stacked)) {
+            groups.push(g.clone());
+        }
+    }
+    for g in &groups {
+        let slots: Vec<usize> = (0..out.len()).filter(|&p| &ctx.input.objects[out[p]].group == g).collect();
+        let order: Vec<usize> = stack_order(ctx, g).into_iter().filter(|i| items.contains(i)).collect();
+        for (p, i) in slots.into_iter().zip(order) {
+            out[p] = i;
+        }
+    }
+    out
+}
+
+/// Member `k` of a stacked group (in its stack order) on top of member `k - 1`, centred
+/// over it.
 fn on_the_one_below(ctx: &mut Ctx<'_>, idx: usize, group: &str, k: usize) -> bool {
-    let Some(&below) = ctx.instances(group).get(k - 1) else { return false };
+    let Some(&below) = stack_order(ctx, group).get(k - 1) else { return false };
     let Some(bs) = ctx.placed[below].as_ref().map(|p| p.spot) else { return false };
     // On the highest point of the one below (a plate's rim, a box's lid).
     let top = ctx.bounds[below].max[2];
