@@ -56,6 +56,28 @@ pub fn check(input: &LayoutInput<'_>, scene: &LaidOutScene, profile: &Profile, d
                 && matches!(&r.kind, RelationKind::InFrontOf { target } if target == target_group)
         })
     };
+    // A robot the prompt puts at something (next to, between, reaching, tending it) works
+    // in its access space; so does the stand it is mounted on (`<robot group>_mount`).
+    let robot_group_of = |name: &str| scene.robots.iter().find(|r| r.name == name).map(|r| r.group.clone());
+    // What moves (a mobile robot, an arm on a mobile cart) passes through access space
+    // rather than blocking it, as for the exit routes below.
+    let moves = |culprit_group: &str| {
+        let robot = culprit_group.strip_suffix("_mount").unwrap_or(culprit_group);
+        input.plan.robot(robot).is_some_and(|r| r.mount == sw_plan::Mount::MobileBase)
+            || input.robots.iter().any(|x| x.group == robot && !x.is_arm)
+    };
+    let works_at = |culprit_group: &str, target_group: &str| {
+        let robot = culprit_group.strip_suffix("_mount").unwrap_or(culprit_group);
+        moves(culprit_group)
+            || input.plan.robot(robot).is_some()
+                && input.plan.relations.iter().any(|r| {
+                    r.subject == robot
+                        && match &r.kind {
+                            RelationKind::Between { first, second } => first == target_group || second == target_group,
+                            k => k.targets().contains(&target_group),
+                        }
+                })
+    };
 
     let put_at_wall = |group: &str| {
         input.plan.relations.iter().any(|r| {
@@ -137,7 +159,8 @@ pub fn check(input: &LayoutInput<'_>, scene: &LaidOutScene, profile: &Profile, d
                     && d < measured
                 {
                     measured = d.max(0.0);
-                    culprit = Some((o.name.clone(), requested_in_front(&o.group, &s.group)));
+                    culprit =
+                        Some((o.name.clone(), requested_in_front(&o.group, &s.group) || works_at(&o.group, &s.group)));
                 }
             }
             for (name, rb) in &robot_boxes {
@@ -145,7 +168,8 @@ pub fn check(input: &LayoutInput<'_>, scene: &LaidOutScene, profile: &Profile, d
                     && d < measured
                 {
                     measured = d.max(0.0);
-                    culprit = Some((name.clone(), false));
+                    let requested = robot_group_of(name).is_some_and(|g| works_at(&g, &s.group));
+                    culprit = Some((name.clone(), requested));
                 }
             }
             // The walls: how far the zone reaches before leaving the room.
