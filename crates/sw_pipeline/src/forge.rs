@@ -4,7 +4,7 @@
 use sw_catalog::{AssetRequest, CatalogError};
 use sw_geom::{Asset, Rng};
 use sw_layout::{RobotItem, RobotMount};
-use sw_plan::{Mount, ObjectPlan, RelationKind, ScenePlan, SizeHint, Stage, Warning};
+use sw_plan::{Mount, ObjectPlan, ScenePlan, SizeHint, Stage, Warning};
 use sw_robots::RobotKind;
 
 /// One object instance with its asset.
@@ -57,11 +57,7 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
         let mut noted = false;
         let filled = crate::loads::is_filled(plan, &group.id);
         let fills = crate::loads::host_of(plan, &group.id);
-        let workpiece = crate::loads::on_arm_surface(plan, &group.id);
         let under = crate::loads::under_of(plan, &group.id).and_then(|h| tops.get(&h).copied());
-        // "tires leaning on the wall": flat things stand on edge.
-        let leaning =
-            plan.relations.iter().any(|r| r.subject == group.id && matches!(r.kind, RelationKind::Leaning { .. }));
         for k in 0..group.count {
             let (asset, tags, label) = match maker(group, k) {
                 Ok(x) => x,
@@ -85,12 +81,10 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                 }
                 noted = true;
             }
-            let asset = if leaning { crate::upright::on_edge(asset) } else { asset };
-            let asset = if filled { crate::loads::pin_levels(asset) } else { asset };
+            let asset = crate::loads::shaped_by_relations(plan, &group.id, asset);
             if filled && k == 0 {
                 levels.insert(group.id.clone(), asset.surfaces.clone());
             }
-            let asset = if workpiece { crate::loads::fit_workpiece(asset) } else { asset };
             let asset = match under {
                 Some(top) => crate::loads::fit_under(asset, top),
                 None => asset,

@@ -41,6 +41,18 @@ pub(crate) fn pin_levels(a: Asset) -> Asset {
     remade(&a, &change).unwrap_or(a)
 }
 
+/// What the plan's relations make of one of `group`'s assets, whatever stands around it:
+/// flat things leaning on something stand on edge ("tires leaning on the wall"), shelving
+/// that is filled keeps the levels the plan filled, and workpieces on an arm's surface are
+/// sized to be worked on. The forge and a package's rebuild take the same steps, so that a
+/// rebuilt package bridges to the scene it was.
+pub(crate) fn shaped_by_relations(plan: &ScenePlan, group: &str, asset: Asset) -> Asset {
+    let leaning = plan.relations.iter().any(|r| r.subject == group && matches!(r.kind, RelationKind::Leaning { .. }));
+    let asset = if leaning { crate::upright::on_edge(asset) } else { asset };
+    let asset = if is_filled(plan, group) { pin_levels(asset) } else { asset };
+    if on_arm_surface(plan, group) { fit_workpiece(asset) } else { asset }
+}
+
 /// Whether `group` rests on a surface an arm is mounted on (its workpieces).
 pub(crate) fn on_arm_surface(plan: &ScenePlan, group: &str) -> bool {
     plan.relations.iter().any(|r| {

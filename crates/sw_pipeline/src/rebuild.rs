@@ -31,7 +31,10 @@ pub(crate) fn object(plan: &ScenePlan, layout: &LaidOutScene, o: &PlacedObject) 
         .find(|r| r.mount != "surface" && r.mounted_on.as_deref() == Some(o.name.as_str()))
         .map(|r| r.name.clone());
     let (asset, tags, label) = match plan.object(&o.group) {
-        Some(g) => make_seeded(g, o.asset_seed).map_err(|e| format!("{}: {e}", o.name))?,
+        Some(g) => {
+            let (asset, tags, label) = make_seeded(g, o.asset_seed).map_err(|e| format!("{}: {e}", o.name))?;
+            (crate::loads::shaped_by_relations(plan, &g.id, asset), tags, label)
+        }
         None => {
             // A robot's pedestal or cart (its group is the robot's, with `_mount`).
             let asset = sw_catalog::generate(&AssetRequest::new(&o.category, o.asset_seed))
