@@ -149,6 +149,9 @@ pub(crate) struct Parser<'a> {
     phrase_start: usize,
     /// Groups loaded since "full of" / "loaded with".
     support_taken: usize,
+    /// The phrase being taken as a target is the subject of a turned-round relation
+    /// ("surrounded by screens"): a plural without a count gets the subject's default.
+    taking_pieces: bool,
 }
 
 /// A collective noun before a phrase: "a row of", "two rows of", "a stack of", "an aisle of".
@@ -192,6 +195,7 @@ impl<'a> Parser<'a> {
             with_subject: None,
             phrase_start: 0,
             support_taken: 0,
+            taking_pieces: false,
         }
     }
 

@@ -582,6 +582,33 @@ fn around_a_table() {
 }
 
 #[test]
+fn surrounded_by_is_around_turned_round() {
+    // What follows "surrounded by" stands around what came before; the pieces are their
+    // own group with the plural default (not the two a bare plural target gets), and the
+    // participle is not part of an unknown noun ("a hydraulic press enclosed").
+    let p = ok("a factory with a CNC machine surrounded by safety fences");
+    assert_eq!(group(&p, "safety_fence").count, 4);
+    assert_eq!(group(&p, "machine").count, 1);
+    assert_rel(&p, "safety_fence", RelationKind::Around { target: "machine".into() });
+    let p = ok("a factory with a hydraulic press enclosed by three safety fences");
+    assert_eq!(group(&p, "safety_fence").count, 3);
+    let press = p.objects.iter().find(|o| o.phrase.contains("press")).expect("the press");
+    assert!(!press.phrase.contains("enclosed"), "{}", dump(&p));
+    assert_rel(&p, "safety_fence", RelationKind::Around { target: press.id.clone() });
+    // The subject can be a robot; its screens are partitions, not monitors.
+    let p = ok("a welding cell with a welding robot on a pedestal, surrounded by four safety screens");
+    assert_eq!(p.robots.len(), 1, "{}", dump(&p));
+    let screens = p.objects.iter().find(|o| o.phrase.contains("screens")).expect("the screens");
+    assert_eq!(screens.category, "welding_screen");
+    assert_eq!(screens.count, 4);
+    assert!(
+        p.relations.iter().any(|r| r.subject == screens.id && matches!(r.kind, RelationKind::Around { .. })),
+        "{}",
+        dump(&p)
+    );
+}
+
+#[test]
 fn ends_doors_corners_and_the_middle() {
     let cases: &[(&str, &str, RelationKind)] = &[
         ("a warehouse with pallets at one end", "pallet", RelationKind::AtEnd { wall: None }),

@@ -11,6 +11,9 @@ use crate::text::singular;
 
 impl Parser<'_> {
     pub(super) fn try_cue(&mut self, i: usize) -> Option<usize> {
+        if let Some(next) = self.try_surrounded(i) {
+            return Some(next);
+        }
         let (cue, len) = cue_at(&self.toks, i)?;
         let mut end = i + len;
         let mut targets = Vec::new();
@@ -170,6 +173,32 @@ impl Parser<'_> {
         Some(end)
     }
 
+    /// "a robot surrounded by safety screens", "a press enclosed by fences": what follows
+    /// "by" stands around what came before — "around" turned round. The pieces are a group
+    /// of their own (a plural without a count gets the usual default, not two).
+    fn try_surrounded(&mut self, i: usize) -> Option<usize> {
+        if !matches!(self.word(i), "surrounded" | "enclosed" | "encircled" | "ringed" | "fenced")
+            || !matches!(self.word(i + 1), "by" | "with")
+        {
+            return None;
+        }
+        let target = match self.subject.clone()? {
+            Subject::Group(g) => g,
+            Subject::Robot(r) => format!("@robot:{r}"),
+        };
+        let j = target_start(&self.toks, i + 2);
+        self.taking_pieces = true;
+        let taken = self.target_at(j, &Cue::Around);
+        self.taking_pieces = false;
+        let (pieces, next) = taken?;
+        if pieces.starts_with('@') || pieces == target {
+            return None;
+        }
+        self.mark(i, next);
+        self.apply(&Subject::Group(pieces), Cue::Around, vec![target]);
+        Some(next)
+    }
+
     fn group_is_plural(&self, id: &str) -> bool {
         self.group(id).is_some_and(|g| g.plural || g.count.is_some_and(|c| c > 1.0))
     }
@@ -227,7 +256,7 @@ impl Parser<'_> {
                 Some(g) => g,
                 None => {
                     let mut p2 = p.clone();
-                    if p2.count.is_none() && p2.plural {
+                    if p2.count.is_none() && p2.plural && !self.taking_pieces {
                         p2.count = Some(2.0);
                     }
                     let id = self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit);
@@ -251,7 +280,7 @@ impl Parser<'_> {
                             reason: format!("read '{label}' as {}", cat.replace('_', " ")),
                         });
                         let mut p2 = p.clone();
-                        if p2.count.is_none() && p2.plural {
+                        if p2.count.is_none() && p2.plural && !self.taking_pieces {
                             p2.count = Some(2.0);
                         }
                         self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit)
@@ -262,7 +291,7 @@ impl Parser<'_> {
                 Some(g) => g,
                 None => {
                     let mut p2 = p.clone();
-                    if p2.count.is_none() && p2.plural {
+                    if p2.count.is_none() && p2.plural && !self.taking_pieces {
                         p2.count = Some(2.0);
                     }
                     self.new_group(None, label.clone(), &p2, p.explicit)
