@@ -634,6 +634,18 @@ impl<'a> Parser<'a> {
         let mut found = None;
         for _ in 0..=3 {
             if let Some((m, len)) = self.lookup(k, is_head) {
+                // "five plant tables", "a desk lamp": a singular object noun before another
+                // names a kind of the second (an English compound's head is its last noun).
+                let first = self.word(k + len - 1);
+                if matches!(m, Meaning::Category(_))
+                    && singular(first) == first
+                    && let Some((m2 @ Meaning::Category(_), len2)) = self.lookup(k + len, is_head)
+                {
+                    descriptors.push(self.span(k, k + len).to_lowercase());
+                    k += len;
+                    found = Some((m2, len2));
+                    break;
+                }
                 found = Some((m, len));
                 break;
             }

@@ -582,6 +582,19 @@ fn around_a_table() {
 }
 
 #[test]
+fn a_noun_before_a_noun_names_a_kind_of_the_second() {
+    // "five plant tables" are five tables, not five plants and some tables.
+    let p = ok("a greenhouse with five plant tables and a TurtleBot");
+    assert_eq!(p.objects.len(), 1, "{}", dump(&p));
+    assert_eq!(group(&p, "table").count, 5);
+    assert_eq!(p.robots.len(), 1);
+    // Two objects listed stay two.
+    let p = ok("a kitchen with a table and four chairs");
+    assert_eq!(group(&p, "table").count, 1);
+    assert_eq!(group(&p, "chair").count, 4);
+}
+
+#[test]
 fn surrounded_by_is_around_turned_round() {
     // What follows "surrounded by" stands around what came before; the pieces are their
     // own group with the plural default (not the two a bare plural target gets), and the
