@@ -128,15 +128,8 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
         drop(checks);
         if let Some((hi, hspot, spot, surf, boxes)) = chosen {
             if !strict {
-                let plan = ctx.input.plan;
-                let unmet: Vec<String> = rels
-                    .iter()
-                    .map(|r| plan.describe(&sw_plan::Relation { subject: robot.group.clone(), kind: r.clone() }))
-                    .collect();
-                ctx.warn(
-                    "relation_unmet",
-                    format!("{}: could not keep {} on its surface", robot.name, unmet.join(", ")),
-                );
+                let unmet = described(ctx.input.plan, &robot.group, &rels);
+                ctx.warn("relation_unmet", format!("{}: could not keep {unmet} on its surface", robot.name));
             }
             let host_name = ctx.input.objects[hi].name.clone();
             let coverage = coverage(&spot, robot, &hspot, &surf);
@@ -439,14 +432,10 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
     drop(checks);
     if let Some((spot, boxes)) = fallback {
         if !implicit {
-            let plan = ctx.input.plan;
-            let unmet: Vec<String> = rels
-                .iter()
-                .map(|r| plan.describe(&sw_plan::Relation { subject: robot.group.clone(), kind: r.clone() }))
-                .collect();
+            let unmet = described(ctx.input.plan, &robot.group, &rels);
             ctx.warn(
                 "relation_unmet",
-                format!("{}: could not keep {} (no free floor there); placed nearby", robot.name, unmet.join(", ")),
+                format!("{}: could not keep {unmet} (no free floor there); placed nearby", robot.name),
             );
         }
         commit(ctx, ri, robot, spot, boxes, "floor", None, None);
@@ -514,4 +503,13 @@ fn coverage(spot: &Spot, robot: &RobotItem, host: &Spot, surf: &SupportSurface) 
         }
     }
     f64::from(hit) / f64::from(n * n)
+}
+
+/// The robot group's relations `rels` as the prompt put them, for a warning.
+fn described(plan: &sw_plan::ScenePlan, group: &str, rels: &[sw_plan::RelationKind]) -> String {
+    let said: Vec<String> = rels
+        .iter()
+        .map(|r| plan.describe(&sw_plan::Relation { subject: group.to_string(), kind: r.clone() }))
+        .collect();
+    said.join(", ")
 }
