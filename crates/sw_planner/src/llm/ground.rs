@@ -68,6 +68,19 @@ fn head(o: &ObjectPlan) -> Option<String> {
     vocab::words(&o.phrase).into_iter().rev().find(|w| vocab::color(w).is_none() && vocab::size_word(w).is_none())
 }
 
+/// The model's group `o` may be a `noun`: it is a proxy (the model, like the reader,
+/// has no category for it) or its category is a kind of that noun: "chair" for an
+/// armchair (the noun ends with the category's last word), "tool_chest" for a chest.
+/// Whole words, not substrings: an air compressor is no armchair although "armchair"
+/// contains "air".
+fn may_be(o: &ObjectPlan, noun: &str) -> bool {
+    if o.category == "proxy" {
+        return true;
+    }
+    let last = o.category.rsplit('_').next().unwrap_or(&o.category);
+    noun.ends_with(last) || vocab::words(&o.category.replace('_', " ")).iter().any(|w| w == noun)
+}
+
 /// The model's groups that stand for the reader's `fact`.
 fn matches(fact: &ObjectPlan, plan: &ScenePlan, taken: &BTreeSet<String>) -> Vec<String> {
     let same_category = |o: &ObjectPlan| fact.category != "proxy" && o.category == fact.category;
@@ -76,10 +89,12 @@ fn matches(fact: &ObjectPlan, plan: &ScenePlan, taken: &BTreeSet<String>) -> Vec
     if hits.is_empty()
         && let Some(h) = head(fact)
     {
+        // Found by the head noun of its phrase (which a small model may fill with the
+        // whole prompt), a group stands for the fact only when its category allows it.
         hits = plan
             .objects
             .iter()
-            .filter(|o| !taken.contains(&o.id) && group_words(o).contains(&h))
+            .filter(|o| !taken.contains(&o.id) && group_words(o).contains(&h) && may_be(o, &h))
             .map(|o| o.id.clone())
             .collect();
     }
@@ -488,6 +503,57 @@ mod tests {
         assert_eq!(count_of(&plan, "tool_chest"), 2);
         assert!(g.notes.iter().any(|n| n.text == "a car" && n.reason.contains("left it out")), "{:#?}", g.notes);
         plan.validate().unwrap();
+    }
+
+    #[test]
+    fn a_whole_prompt_phrase_ending_in_an_unknown_noun_does_not_make_another_category_stand_for_it() {
+        // SmolLM2-135M on llama-server (issue 16, run C): one group whose phrase is the
+        // whole prompt, planned as two air compressors. Its head noun is "armchair", but
+        // an air compressor is no kind of armchair: the reader's two armchairs stay.
+        let prompt = "a living room with a sofa, a coffee table and two armchairs";
+        let (plan, g) = grounded(
+            prompt,
+            json!({
+                "room": {"kind": "living_room"},
+                "objects": [
+                    {"phrase": "a sofa", "id": "sofa", "category": "sofa", "count": 1},
+                    {"phrase": prompt, "id": "compressors", "category": "air_compressor", "count": 2}
+                ]
+            }),
+        );
+        let armchairs: u32 = plan
+            .objects
+            .iter()
+            .filter(|o| o.proxy.as_ref().is_some_and(|p| p.label == "armchair"))
+            .map(|o| o.count)
+            .sum();
+        let reading = crate::plan(prompt).unwrap();
+        let read: u32 = reading
+            .objects
+            .iter()
+            .filter(|o| o.proxy.as_ref().is_some_and(|p| p.label == "armchair") || o.category == "armchair")
+            .map(|o| o.count)
+            .sum();
+        assert_eq!(read, 2, "the reader's armchairs: {:#?}", reading.objects);
+        assert_eq!(armchairs + count_of(&plan, "armchair"), 2, "{:#?}", plan.objects);
+        assert_eq!(count_of(&plan, "air_compressor"), 2, "what the model adds stays");
+        assert!(
+            g.notes.iter().any(|n| n.text.contains("armchair") && n.reason.contains("left it out")),
+            "{:#?}",
+            g.notes
+        );
+        plan.validate().unwrap();
+    }
+
+    #[test]
+    fn a_category_that_is_a_kind_of_the_head_noun_still_stands_for_it() {
+        // "armchair" ends with "chair": a model that plans chairs for the armchairs planned
+        // them, and the prompt's count wins.
+        let chair = ObjectPlan { category: "chair".into(), ..crate::plan("a chair").unwrap().objects[0].clone() };
+        assert!(may_be(&chair, "armchair"));
+        assert!(!may_be(&ObjectPlan { category: "air_compressor".into(), ..chair.clone() }, "armchair"));
+        assert!(may_be(&ObjectPlan { category: "tool_chest".into(), ..chair.clone() }, "chest"));
+        assert!(may_be(&ObjectPlan { category: "proxy".into(), ..chair }, "armchair"));
     }
 
     #[test]
