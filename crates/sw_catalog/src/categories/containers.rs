@@ -6,7 +6,7 @@ use super::kit::{
     CARDBOARD, INK, LABEL_WHITE, PLASTIC, WOOD, block, collider_between, decal, decal_between, fit, ordered, pick,
     shade, slab,
 };
-use super::parts::{round_collider, vessel_collider};
+use super::parts::{open_box, round_collider, vessel_collider};
 use super::shapes::{ROUND, revolve};
 use crate::{Category, ParamDef, Params};
 
@@ -165,9 +165,8 @@ pub(crate) const BIN: Category = Category {
     build: build_bin,
 };
 
-/// An open tote: a bottom and four walls, each its own collision box, so that things can
-/// be put inside. The end walls reach halfway into the side walls and the bottom halfway
-/// under all four, so that no two boxes share an edge.
+/// An open tote ([`open_box`]: it stands on its floor) with a rim band, hand holds and
+/// sometimes a label.
 fn build_bin(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
     let t = fit(b, "bin wall", p.get("wall"), 0.002, w.min(d).min(h) * 0.1);
@@ -176,15 +175,7 @@ fn build_bin(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let rim = b.material("rim", shade(rgba, 0.8), false);
     let ink = b.material("hand_hold", INK, false);
     let (hw, hd) = (w / 2.0, d / 2.0);
-    for sy in [-1.0, 1.0] {
-        let (y0, y1) = ordered(sy * (hd - t), sy * hd);
-        slab(b, [-hw, y0, 0.0], [hw, y1, h], body);
-    }
-    for sx in [-1.0, 1.0] {
-        let (x0, x1) = ordered(sx * (hw - t), sx * hw);
-        slab(b, [x0, -(hd - t / 2.0), 0.0], [x1, hd - t / 2.0, h], body);
-    }
-    let floor = slab(b, [-(hw - t / 2.0), -(hd - t / 2.0), 0.0], [hw - t / 2.0, hd - t / 2.0, t], body);
+    let floor = open_box(b, w, d, h, t, body);
 
     // A rim band outside the walls at the top, as four strips (a single box would lid it).
     let band = (h * 0.08).min(0.02);

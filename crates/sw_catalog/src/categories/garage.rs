@@ -8,7 +8,7 @@ use super::kit::{
     pick, rod, shade, slab,
 };
 use super::office::drawer_stack;
-use super::parts::{MOVING_GAP, carcass, ring_collider};
+use super::parts::{MOVING_GAP, RingBase, carcass, ring_collider};
 use super::shapes::{ROUND, revolve, rounded_ring_profile};
 use crate::{Category, ParamDef, Params};
 
@@ -216,7 +216,7 @@ pub(crate) const TIRE: Category = Category {
 };
 
 /// A tyre lying flat, with tread grooves, on a steel or alloy rim on some seeds. The tyre
-/// collides as a ring of boxes, the rim as a disc in the hole.
+/// collides as a ring of boxes standing on four of them, the rim as a disc in the hole.
 fn build_tire(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, h) = (p.get("width"), p.get("height"));
     let r = w / 2.0;
@@ -233,7 +233,7 @@ fn build_tire(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
         );
         b.visual_mesh_on(0, &g, Pose::IDENTITY, groove);
     }
-    ring_collider(b, [0.0, 0.0], r, r - r_in, 0.0, h, 16);
+    ring_collider(b, [0.0, 0.0], r, r - r_in, 0.0, h, 16, RingBase::Feet);
     let rim = rng.chance(0.4);
     if rim {
         let steel = b.material("rim", pick(rng, &[[0.75, 0.76, 0.78, 1.0], [0.35, 0.36, 0.38, 1.0]]), false);

@@ -4,8 +4,8 @@
 
 use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng};
 
-use super::kit::{LABEL_WHITE, PLASTIC, fit, ordered, pick, shade, slab};
-use super::parts::{ring_collider, round_collider, solid_box, vessel_collider};
+use super::kit::{LABEL_WHITE, PLASTIC, fit, ordered, pick, shade};
+use super::parts::{RingBase, open_box, ring_collider, round_collider, vessel_collider};
 use super::shapes::{ROUND, revolve};
 use crate::{Category, ParamDef, Params};
 
@@ -217,7 +217,7 @@ fn build_bowl(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     prof.dedup();
     b.visual_mesh_on(0, &revolve(&prof, ROUND), Pose::IDENTITY, body);
     // The rim ring above a narrower ring from the floor up, both inside the curve.
-    let (_, upper) = ring_collider(b, [0.0, 0.0], r, t * 2.0, h * 0.45, h, 16);
+    let (_, upper) = ring_collider(b, [0.0, 0.0], r, t * 2.0, h * 0.45, h, 16, RingBase::Flat);
     let lower = vessel_collider(b, [0.0, 0.0], rf, rf + (r - rf) * 0.45, t * 2.0, h * 0.08 + t, 0.0, h * 0.45, 16);
     let a = lower.half.min(upper);
     b.surface("inside", lower.floor, [-a, -a], [a, a], None);
@@ -354,7 +354,7 @@ pub(crate) const TRAY: Category = Category {
     build: build_tray,
 };
 
-/// A flat floor and four low walls, each its own collision box, with a lip band.
+/// A flat floor and four low walls ([`open_box`]: it stands on its floor) with a lip band.
 fn build_tray(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
     let t = fit(b, "tray wall", p.get("wall"), 0.002, h * 0.4);
@@ -362,15 +362,7 @@ fn build_tray(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let body = b.material("body", rgba, true);
     let lip = b.material("lip", shade(rgba, 0.8), false);
     let (hw, hd) = (w / 2.0, d / 2.0);
-    for sy in [-1.0, 1.0] {
-        let (y0, y1) = ordered(sy * (hd - t), sy * hd);
-        slab(b, [-hw, y0, 0.0], [hw, y1, h], body);
-    }
-    for sx in [-1.0, 1.0] {
-        let (x0, x1) = ordered(sx * (hw - t), sx * hw);
-        slab(b, [x0, -(hd - t / 2.0), 0.0], [x1, hd - t / 2.0, h], body);
-    }
-    let floor = solid_box(b, 0, [-(hw - t / 2.0), -(hd - t / 2.0), 0.0], [hw - t / 2.0, hd - t / 2.0, t], body);
+    let floor = open_box(b, w, d, h, t, body);
     for sy in [-1.0, 1.0] {
         let (y0, y1) = ordered(sy * (hd - 0.001), sy * (hd + 0.002));
         super::kit::decal_between(b, [-(hw + 0.002), y0, h - (h * 0.25).min(0.008)], [hw + 0.002, y1, h], lip);
