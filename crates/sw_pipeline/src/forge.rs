@@ -48,16 +48,10 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
         *n += 1;
         format!("{base}_{n}")
     };
-    // The levels of shelving said to be full, to size what fills them.
-    let mut levels: std::collections::BTreeMap<String, Vec<sw_geom::SupportSurface>> =
-        std::collections::BTreeMap::new();
-    // The height of each group's top, to size what stands under it.
-    let mut tops: std::collections::BTreeMap<String, f64> = std::collections::BTreeMap::new();
+    // What each group's first asset tells the groups after it.
+    let mut sizing = crate::loads::Sizing::default();
     for group in &plan.objects {
         let mut noted = false;
-        let filled = crate::loads::is_filled(plan, &group.id);
-        let fills = crate::loads::host_of(plan, &group.id);
-        let under = crate::loads::under_of(plan, &group.id).and_then(|h| tops.get(&h).copied());
         for k in 0..group.count {
             let (asset, tags, label) = match maker(group, k) {
                 Ok(x) => x,
@@ -81,23 +75,7 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                 }
                 noted = true;
             }
-            let asset = crate::loads::shaped_by_relations(plan, &group.id, asset);
-            if filled && k == 0 {
-                levels.insert(group.id.clone(), asset.surfaces.clone());
-            }
-            let asset = match under {
-                Some(top) => crate::loads::fit_under(asset, top),
-                None => asset,
-            };
-            if k == 0
-                && let Some(t) = crate::loads::top_height(&asset)
-            {
-                tops.insert(group.id.clone(), t);
-            }
-            let asset = match fills.as_ref().and_then(|h| levels.get(h)) {
-                Some(l) => crate::loads::fit_item(asset, l),
-                None => asset,
-            };
+            let asset = sizing.finish(plan, &group.id, k == 0, asset);
             let base = if group.category == "proxy" { slug(&label) } else { group.category.clone() };
             out.objects.push(ForgedObject {
                 name: next_name(&base),

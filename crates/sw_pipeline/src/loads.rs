@@ -53,6 +53,39 @@ pub(crate) fn shaped_by_relations(plan: &ScenePlan, group: &str, asset: Asset) -
     if on_arm_surface(plan, group) { fit_workpiece(asset) } else { asset }
 }
 
+/// What the first asset of each group tells the groups after it: the levels of shelving
+/// said to be full (to size what fills them) and the height of each group's top (to size
+/// what stands under it). The forge and a package's rebuild finish every asset through
+/// it, in the plan's group order, so that a rebuilt package bridges to the scene it was.
+#[derive(Debug, Default)]
+pub(crate) struct Sizing {
+    levels: BTreeMap<String, Vec<SupportSurface>>,
+    tops: BTreeMap<String, f64>,
+}
+
+impl Sizing {
+    /// One of `group`'s assets as the plan's relations make it ([`shaped_by_relations`],
+    /// fitted under what it stands under and to the shelving it fills); `first` is the
+    /// group's first instance, the one the groups after it are sized by.
+    pub(crate) fn finish(&mut self, plan: &ScenePlan, group: &str, first: bool, asset: Asset) -> Asset {
+        let asset = shaped_by_relations(plan, group, asset);
+        if first && is_filled(plan, group) {
+            self.levels.insert(group.to_string(), asset.surfaces.clone());
+        }
+        let asset = match under_of(plan, group).and_then(|h| self.tops.get(&h).copied()) {
+            Some(top) => fit_under(asset, top),
+            None => asset,
+        };
+        if first && let Some(t) = top_height(&asset) {
+            self.tops.insert(group.to_string(), t);
+        }
+        match host_of(plan, group).and_then(|h| self.levels.get(&h)) {
+            Some(l) => fit_item(asset, l),
+            None => asset,
+        }
+    }
+}
+
 /// Whether `group` rests on a surface an arm is mounted on (its workpieces).
 pub(crate) fn on_arm_surface(plan: &ScenePlan, group: &str) -> bool {
     plan.relations.iter().any(|r| {

@@ -5,17 +5,38 @@
 //! byte for byte (the tests check this), which is what lets an edit keep everything it
 //! does not change exactly as it was.
 
+use std::collections::{BTreeMap, BTreeSet};
+
 use sw_catalog::AssetRequest;
 use sw_layout::{RobotItem, RobotMount};
 use sw_plan::{LaidOutScene, PlacedObject, ScenePlan};
 
 use crate::forge::{Forged, ForgedObject, make_seeded, shrunk};
+use crate::loads::Sizing;
 
 /// Rebuilds the assets of a package; errors name the object.
 pub(crate) fn rebuild(plan: &ScenePlan, layout: &LaidOutScene) -> Result<Forged, String> {
+    // The plan's groups are finished in the forge's order (group by group, each group's
+    // instances in the order they were named), so that what one group's first asset
+    // tells the next (a table's top, a shelf's levels) is the same as it was.
+    let number = |name: &str| name.rsplit('_').next().and_then(|n| n.parse::<u32>().ok()).unwrap_or(u32::MAX);
+    let mut order: Vec<&PlacedObject> = Vec::with_capacity(layout.objects.len());
+    for g in &plan.objects {
+        let mut of_group: Vec<&PlacedObject> = layout.objects.iter().filter(|o| o.group == g.id).collect();
+        of_group.sort_by_key(|o| number(&o.name));
+        order.extend(of_group);
+    }
+    order.extend(layout.objects.iter().filter(|o| plan.object(&o.group).is_none()));
+    let mut sizing = Sizing::default();
+    let mut made: BTreeMap<&str, ForgedObject> = BTreeMap::new();
+    let mut seen: BTreeSet<&str> = BTreeSet::new();
+    for o in order {
+        let first = seen.insert(o.group.as_str());
+        made.insert(o.name.as_str(), object(plan, layout, o, first, &mut sizing)?);
+    }
     let mut out = Forged::default();
     for o in &layout.objects {
-        out.objects.push(object(plan, layout, o)?);
+        out.objects.extend(made.remove(o.name.as_str()));
     }
     for r in &layout.robots {
         out.robots.push(robot(plan, layout, r)?);
@@ -23,8 +44,14 @@ pub(crate) fn rebuild(plan: &ScenePlan, layout: &LaidOutScene) -> Result<Forged,
     Ok(out)
 }
 
-/// One object's asset, as the package made it.
-pub(crate) fn object(plan: &ScenePlan, layout: &LaidOutScene, o: &PlacedObject) -> Result<ForgedObject, String> {
+/// One object's asset, as the package made it; `first` when it is the first of its group.
+fn object(
+    plan: &ScenePlan,
+    layout: &LaidOutScene,
+    o: &PlacedObject,
+    first: bool,
+    sizing: &mut Sizing,
+) -> Result<ForgedObject, String> {
     let carries_robot = layout
         .robots
         .iter()
@@ -33,7 +60,7 @@ pub(crate) fn object(plan: &ScenePlan, layout: &LaidOutScene, o: &PlacedObject) 
     let (asset, tags, label) = match plan.object(&o.group) {
         Some(g) => {
             let (asset, tags, label) = make_seeded(g, o.asset_seed).map_err(|e| format!("{}: {e}", o.name))?;
-            (crate::loads::shaped_by_relations(plan, &g.id, asset), tags, label)
+            (sizing.finish(plan, &g.id, first, asset), tags, label)
         }
         None => {
             // A robot's pedestal or cart (its group is the robot's, with `_mount`).
@@ -127,6 +154,57 @@ mod tests {
             let files = crate::package::bridge(&o.plan.prompt, &o.layout, &forged).unwrap();
             let on_disk = std::fs::read_to_string(out.join("scene.xml")).unwrap();
             assert!(files.scene_xml == on_disk, "prompt {i} ({p}): the rebuilt scene differs");
+        }
+    }
+
+    /// Things sized by another group's first asset: a cabinet fitted under a table's top,
+    /// boxes sized to the levels of the shelf they fill, whatever the layout's order.
+    #[test]
+    fn assets_sized_by_another_group_are_rebuilt_to_the_same_size() {
+        use sw_plan::RelationKind;
+        let extent =
+            |a: &sw_geom::Asset| a.collision_aabbs().iter().fold(sw_geom::Aabb::EMPTY, |acc, b| acc.union(b)).size();
+        let dir = tempfile::tempdir().unwrap();
+        let prompts = [
+            "an office with a desk and a filing cabinet under the desk",
+            "a lab with a table and a fridge under the table",
+            "a warehouse with a shelving rack full of boxes",
+        ];
+        for (i, p) in prompts.iter().enumerate() {
+            let out = dir.path().join(format!("p{i}"));
+            let o = generate(p, &out, &Options { seed: 3, verify: false, ..Options::default() }, &mut |_| {}).unwrap();
+            // Some object was sized by another group (else the test proves nothing): its
+            // recorded size is not the catalog's for its seed.
+            let sized_by_other = |x: &PlacedObject| {
+                o.plan.relations.iter().any(|r| match &r.kind {
+                    RelationKind::Under { .. } => r.subject == x.group,
+                    RelationKind::FullOf { target } => *target == x.group,
+                    _ => false,
+                })
+            };
+            let resized = o.layout.objects.iter().filter(|x| sized_by_other(x)).any(|x| {
+                let plain = sw_catalog::generate(&AssetRequest::new(&x.category, x.asset_seed)).unwrap();
+                extent(&plain).iter().zip(&x.size).any(|(a, b)| (a - b).abs() > 1e-3)
+            });
+            assert!(resized, "prompt {i} ({p}): nothing was sized by another group: {:?}", o.plan.relations);
+            let on_disk = std::fs::read_to_string(out.join("scene.xml")).unwrap();
+            let rebuilt = rebuild(&o.plan, &o.layout).unwrap();
+            let files = crate::package::bridge(&o.plan.prompt, &o.layout, &rebuilt).unwrap();
+            assert!(files.scene_xml == on_disk, "prompt {i} ({p}): the rebuilt scene differs");
+            // The layout's objects in another order: each is rebuilt to its recorded size.
+            let mut reversed = o.layout.clone();
+            reversed.objects.reverse();
+            let rebuilt = rebuild(&o.plan, &reversed).unwrap();
+            for (x, f) in reversed.objects.iter().zip(&rebuilt.objects) {
+                assert_eq!(x.name, f.name);
+                let s = extent(&f.asset);
+                assert!(
+                    s.iter().zip(&x.size).all(|(a, b)| (a - b).abs() < 2e-4),
+                    "prompt {i} ({p}): {} is {s:?}, recorded {:?}",
+                    x.name,
+                    x.size
+                );
+            }
         }
     }
 }
