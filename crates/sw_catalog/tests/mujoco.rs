@@ -64,15 +64,13 @@ fn scene(cat: &Category, asset: &Asset, with_items: bool) -> (LaidOutScene, Vec<
     (layout, assets)
 }
 
-/// Writes and verifies one scene; returns what went wrong.
-fn check(cat: &Category, asset: &Asset, with_items: bool, dir: &std::path::Path) -> Option<String> {
+/// Writes the scene of [`scene`] into `dir` as a package does (`scene.xml`, meshes in
+/// `assets/`); returns its path.
+fn write(cat: &Category, asset: &Asset, with_items: bool, dir: &std::path::Path) -> Result<std::path::PathBuf, String> {
     let (layout, assets) = scene(cat, asset, with_items);
     let files =
-        match write_scene(&SceneInput { prompt: "", layout: &layout, assets: assets.iter().collect(), robots: vec![] })
-        {
-            Ok(f) => f,
-            Err(e) => return Some(format!("{} seed {}: the writer failed: {e}", cat.name, asset.seed)),
-        };
+        write_scene(&SceneInput { prompt: "", layout: &layout, assets: assets.iter().collect(), robots: vec![] })
+            .map_err(|e| format!("{} seed {}: the writer failed: {e}", cat.name, asset.seed))?;
     let assets_dir = dir.join("assets");
     std::fs::create_dir_all(&assets_dir).unwrap();
     for m in &files.meshes {
@@ -80,6 +78,16 @@ fn check(cat: &Category, asset: &Asset, with_items: bool, dir: &std::path::Path)
     }
     let path = dir.join("scene.xml");
     std::fs::write(&path, &files.scene_only_xml).unwrap();
+    Ok(path)
+}
+
+/// Writes and verifies one scene; returns what went wrong.
+fn check(cat: &Category, asset: &Asset, with_items: bool, dir: &std::path::Path) -> Option<String> {
+    let path = match write(cat, asset, with_items, dir) {
+        Ok(p) => p,
+        Err(e) => return Some(e),
+    };
+    let assets_dir = dir.join("assets");
     // The object's joints are tracked like a robot's: their drift is measured.
     let name = format!("{}_1", cat.name);
     let opts = sw_sim::VerifyOptions { robots: vec![name.clone()], ..Default::default() };
@@ -172,19 +180,10 @@ fn a_resting_movable_asset_makes_few_contacts_with_its_support() {
         (0..5)
             .filter_map(|seed| {
                 let asset = sw_catalog::generate(&AssetRequest::new(cat.name, seed)).unwrap();
-                let (layout, assets) = scene(cat, &asset, false);
-                let input = SceneInput { prompt: "", layout: &layout, assets: assets.iter().collect(), robots: vec![] };
-                let files = write_scene(&input).unwrap();
-                let assets_dir = dir.join("assets");
-                std::fs::create_dir_all(&assets_dir).unwrap();
-                for m in &files.meshes {
-                    std::fs::write(assets_dir.join(&m.file_name), &m.bytes).unwrap();
-                }
-                let path = dir.join("scene.xml");
-                std::fs::write(&path, &files.scene_only_xml).unwrap();
+                let path = write(cat, &asset, false, dir).unwrap();
                 // Measured by MuJoCo itself: the most contacts while the asset settles.
                 let contacts = sw_sim::contact_budget(&path).unwrap().contacts;
-                let _ = std::fs::remove_dir_all(&assets_dir);
+                let _ = std::fs::remove_dir_all(dir.join("assets"));
                 (contacts > limit).then(|| format!("{} seed {seed}: {contacts} contacts > {limit}", cat.name))
             })
             .collect()
