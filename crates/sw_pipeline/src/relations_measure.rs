@@ -509,20 +509,18 @@ fn stands_on(a: &crate::scene_geom::BodyGeom, b: &crate::scene_geom::BodyGeom) -
     site_under(a, b).is_some() || ((a.bounds.min[2] - b.bounds.max[2]).abs() <= REST && inside(a.center(), &b.bounds))
 }
 
-/// One stack: each resting on the one below, the lowest on the floor.
+/// One stack: each resting on the one below. The stacks are counted as the things
+/// resting on none of the others (the bottoms of the columns), so that three columns of
+/// sixteen, where the ceiling allows no more, are three stacks, not forty-eight.
 fn stacked(subjects: &[Thing], v: &mut Verdict) {
-    let mut order: Vec<&Thing> = subjects.iter().collect();
-    order.sort_by(|a, b| a.body.bounds.min[2].total_cmp(&b.body.bounds.min[2]));
-    let mut stacks = 1;
-    for p in order.windows(2) {
-        let (below, above) = (p[0], p[1]);
-        let on_top = stands_on(&above.body, &below.body);
-        if !on_top {
-            stacks += 1;
-        }
-    }
+    let bottoms = subjects
+        .iter()
+        .enumerate()
+        .filter(|(i, a)| !subjects.iter().enumerate().any(|(j, b)| *i != j && stands_on(&a.body, &b.body)))
+        .count();
+    let stacks = u32::try_from(bottoms.max(1)).unwrap_or(u32::MAX);
     v.set("stacks", f64::from(stacks));
-    v.set("height_m", order.last().map_or(0.0, |t| t.body.bounds.max[2]));
+    v.set("height_m", subjects.iter().map(|t| t.body.bounds.max[2]).fold(0.0, f64::max));
     if stacks > 1 {
         v.fail(format!("{stacks} stacks, not one"));
     }

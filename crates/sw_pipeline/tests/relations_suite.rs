@@ -237,3 +237,26 @@ fn suite_prompts_hold_every_relation() {
     assert_eq!(kinds.len(), 25, "the chosen prompts cover every relation kind: {kinds:?}");
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }
+
+#[test]
+fn more_than_the_ceiling_allows_is_counted_as_the_stacks_it_makes() {
+    // 48 pallets under a 3 m ceiling stand in columns of 20: the report says how many
+    // columns, and the judge, reading only scene.xml, counts the same.
+    let dir = tempfile::tempdir().unwrap();
+    let prompt = "a garage with a stack of 48 pallets";
+    let pkg = dir.path().join("pallets");
+    let o = generate(prompt, &pkg, &Options { seed: 1, ..Options::default() }, &mut |_| {}).unwrap();
+    assert_eq!(o.report.status, Status::Verified, "{:?}", o.report.verification.as_ref().map(|v| &v.failures));
+    let report: Value = serde_json::from_str(&std::fs::read_to_string(pkg.join("report.json")).unwrap()).unwrap();
+    let stacked = report["relations"].as_array().unwrap().iter().find(|r| r["relation"] == "stacked").unwrap();
+    let said = stacked["measured"]["stacks"].as_f64().unwrap();
+    let line = json!({"id": "pallets", "room": "garage", "prompt": prompt, "counts": {"pallet": 48}, "robots": {},
+        "relations": [{"subject": "pallet", "relation": "stacked"}]});
+    let v = &judge(&[(pkg, line)])[0];
+    let heights: Vec<u64> =
+        v["relations"][0]["measured"]["heights"].as_array().unwrap().iter().map(|h| h.as_u64().unwrap()).collect();
+    assert_eq!(heights.iter().sum::<u64>(), 48, "{v}");
+    assert!(heights.len() > 1 && heights.len() < 10, "columns under the ceiling, not singles: {heights:?}");
+    assert_eq!(said, heights.len() as f64, "the report's stacks against the judge's {heights:?}");
+    assert_eq!(stacked["held"], false, "one stack was asked for");
+}
