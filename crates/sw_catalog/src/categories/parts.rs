@@ -27,8 +27,8 @@ pub(crate) const MOVING_GAP: f64 = 0.003;
 
 /// How far the walls of an open vessel or tote stop above its bottom, m, so that only
 /// its floor touches what it stands on (at most half the floor's thickness, so that the
-/// walls still overlap the floor). Far more than a resting contact's penetration
-/// (hundredths of a millimetre), too little to see or to tip on.
+/// walls still overlap the floor). Several times a resting contact's penetration (0.1 –
+/// 0.2 mm measured under a bin, a mug and a stack of tyres), too little to see or to tip on.
 pub(crate) const STAND_GAP: f64 = 0.001;
 
 /// Collision of a round solid on `link`: a cylinder of radius `r` from `z0` to `z1`
