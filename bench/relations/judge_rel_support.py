@@ -70,11 +70,9 @@ def rests_on(item: Thing, carrier: Thing) -> str | None:
     for s in carrier.surfaces:
         if abs(b - float(s.centre[2])) <= REST_TOL_M and s.contains_xy(c, REST_XY_SLACK_M):
             return s.name
-    if (
-        not carrier.surfaces
-        and abs(b - carrier.top) <= REST_TOL_M
-        and point_in_convex(c, carrier.footprint, REST_XY_SLACK_M)
-    ):
+    # Its top: a carrier without surfaces, or an open tote's rim (its only surface is the
+    # floor inside it; totes are stacked rim on rim).
+    if abs(b - carrier.top) <= REST_TOL_M and point_in_convex(c, carrier.footprint, REST_XY_SLACK_M):
         return "top"
     return None
 

@@ -158,6 +158,10 @@ pub struct Link {
     pub mass: f64,
 }
 
+/// An open surface this far or more below an asset's top is inside it (a tote's
+/// floor), not its top, m.
+pub const INSIDE_DEPTH: f64 = 0.02;
+
 /// A horizontal surface that other objects can rest on (a table top, a shelf level).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SupportSurface {
@@ -266,6 +270,22 @@ impl Asset {
 
     pub fn is_free(&self) -> bool {
         matches!(self.mass, MassModel::Free { .. })
+    }
+
+    /// The highest support surface open above that is the asset's top: not the floor
+    /// inside a tote, bin or tray, which lies [`INSIDE_DEPTH`] or more below the top.
+    pub fn top_surface(&self) -> Option<&SupportSurface> {
+        let top = self.bounds().max[2];
+        self.surfaces
+            .iter()
+            .filter(|s| s.clearance.is_none() && s.z > top - INSIDE_DEPTH)
+            .max_by(|a, b| a.z.total_cmp(&b.z))
+    }
+
+    /// An open container (a tote, a tray, a bowl): it has surfaces open above, and all of
+    /// them are inside it. What is stacked on it rests on its rim.
+    pub fn is_open(&self) -> bool {
+        self.top_surface().is_none() && self.surfaces.iter().any(|s| s.clearance.is_none())
     }
 
     /// The value of a parameter the generator used.

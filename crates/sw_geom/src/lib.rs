@@ -14,8 +14,8 @@ mod rng;
 mod stl;
 
 pub use asset::{
-    Asset, AssetBuilder, Collision, ConvexPiece, JointKind, JointSpec, Link, MassModel, Material, PlacementKind, Shape,
-    SupportSurface, Visual,
+    Asset, AssetBuilder, Collision, ConvexPiece, INSIDE_DEPTH, JointKind, JointSpec, Link, MassModel, Material,
+    PlacementKind, Shape, SupportSurface, Visual,
 };
 pub use mesh::{Aabb, Mesh, MeshCheck};
 pub use pose::{Pose, quat_from_yaw, quat_mul, rotate};

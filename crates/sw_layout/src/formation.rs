@@ -122,25 +122,20 @@ fn stack(ctx: &Ctx<'_>, idxs: &[usize]) -> Formation {
     Formation { bounds: b, members, front_reserve: 0.0, back_reserve: 0.0, end_reserve: 0.0, stacked: true }
 }
 
-/// The height something stacked on an object rests at: its top surface, else its top.
+/// The height something stacked on an object rests at: its top surface, else its top —
+/// an open tote's rim: totes are stacked on one another, not put inside.
 pub(crate) fn top_of(ctx: &Ctx<'_>, idx: usize) -> f64 {
-    let a = ctx.input.objects[idx].asset;
-    a.surfaces
-        .iter()
-        .filter(|s| s.clearance.is_none())
-        .map(|s| s.z)
-        .fold(None, |m: Option<f64>, z| Some(m.map_or(z, |m| m.max(z))))
-        .unwrap_or(ctx.bounds[idx].max[2])
+    ctx.input.objects[idx].asset.top_surface().map_or(ctx.bounds[idx].max[2], |s| s.z)
 }
 
-/// The top surface's name (what a stacked member rests on).
+/// The top surface's name (what a stacked member rests on); "rim" for an open tote.
 fn top_surface(ctx: &Ctx<'_>, idx: usize) -> String {
     let a = ctx.input.objects[idx].asset;
-    a.surfaces
-        .iter()
-        .filter(|s| s.clearance.is_none())
-        .max_by(|x, y| x.z.total_cmp(&y.z))
-        .map_or_else(|| "top".to_string(), |s| s.name.clone())
+    match a.top_surface() {
+        Some(s) => s.name.clone(),
+        None if a.is_open() => "rim".to_string(),
+        None => "top".to_string(),
+    }
 }
 
 /// Splits `idxs` into `n` rows, the first rows one longer when they do not divide.

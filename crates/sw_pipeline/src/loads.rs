@@ -61,6 +61,8 @@ pub(crate) fn shaped_by_relations(plan: &ScenePlan, group: &str, asset: Asset) -
 pub(crate) struct Sizing {
     levels: BTreeMap<String, Vec<SupportSurface>>,
     tops: BTreeMap<String, f64>,
+    /// The parameters of the first of each stacked group of open totes.
+    stacked: BTreeMap<String, Vec<(String, f64)>>,
 }
 
 impl Sizing {
@@ -69,6 +71,23 @@ impl Sizing {
     /// group's first instance, the one the groups after it are sized by.
     pub(crate) fn finish(&mut self, plan: &ScenePlan, group: &str, first: bool, asset: Asset) -> Asset {
         let asset = shaped_by_relations(plan, group, asset);
+        // Open totes said to be stacked are one model (their colours may differ): each
+        // stands on the rim of the one below, which a smaller one would fall into.
+        let stacked = plan.relations.iter().any(|r| r.subject == group && matches!(r.kind, RelationKind::Stacked));
+        let asset = if stacked && asset.is_open() {
+            match self.stacked.get(group) {
+                Some(p) if !first => {
+                    let change: BTreeMap<&str, f64> = p.iter().map(|(n, v)| (n.as_str(), *v)).collect();
+                    remade(&asset, &change).unwrap_or(asset)
+                }
+                _ => {
+                    self.stacked.insert(group.to_string(), asset.params.clone());
+                    asset
+                }
+            }
+        } else {
+            asset
+        };
         if first && is_filled(plan, group) {
             self.levels.insert(group.to_string(), asset.surfaces.clone());
         }

@@ -157,8 +157,9 @@ mod tests {
         }
     }
 
-    /// Things sized by another group's first asset: a cabinet fitted under a table's top,
-    /// boxes sized to the levels of the shelf they fill, whatever the layout's order.
+    /// Things sized by another asset: a cabinet fitted under a table's top, boxes sized to
+    /// the levels of the shelf they fill, totes in a stack made one model, whatever the
+    /// layout's order.
     #[test]
     fn assets_sized_by_another_group_are_rebuilt_to_the_same_size() {
         use sw_plan::RelationKind;
@@ -169,6 +170,7 @@ mod tests {
             "an office with a desk and a filing cabinet under the desk",
             "a lab with a table and a fridge under the table",
             "a warehouse with a shelving rack full of boxes",
+            "a warehouse with a stack of six bins",
         ];
         for (i, p) in prompts.iter().enumerate() {
             let out = dir.path().join(format!("p{i}"));
@@ -177,7 +179,7 @@ mod tests {
             // recorded size is not the catalog's for its seed.
             let sized_by_other = |x: &PlacedObject| {
                 o.plan.relations.iter().any(|r| match &r.kind {
-                    RelationKind::Under { .. } => r.subject == x.group,
+                    RelationKind::Under { .. } | RelationKind::Stacked => r.subject == x.group,
                     RelationKind::FullOf { target } => *target == x.group,
                     _ => false,
                 })

@@ -260,3 +260,26 @@ fn more_than_the_ceiling_allows_is_counted_as_the_stacks_it_makes() {
     assert_eq!(said, heights.len() as f64, "the report's stacks against the judge's {heights:?}");
     assert_eq!(stacked["held"], false, "one stack was asked for");
 }
+
+#[test]
+fn a_stack_of_totes_stands_rim_on_rim() {
+    // Open totes are stacked on one another, not nested: each bin's floor was the surface
+    // the next one was put on, inside it, and all sixteen of "a stack of 16 bins" were
+    // removed for interpenetration. The judge reads the column from scene.xml.
+    let dir = tempfile::tempdir().unwrap();
+    let prompt = "a warehouse with a stack of 8 bins";
+    let pkg = dir.path().join("bins");
+    let o = generate(prompt, &pkg, &Options { seed: 2, ..Options::default() }, &mut |_| {}).unwrap();
+    assert_eq!(o.report.status, Status::Verified, "{:?}", o.report.verification.as_ref().map(|v| &v.failures));
+    let bins: Vec<&sw_plan::PlacedObject> = o.layout.objects.iter().filter(|x| x.category == "bin").collect();
+    assert_eq!(bins.len(), 8, "every bin kept");
+    assert!(
+        bins.windows(2).all(|w| w[0].size == w[1].size),
+        "one model of tote: {:?}",
+        bins.iter().map(|b| b.size).collect::<Vec<_>>()
+    );
+    let line = json!({"id": "bins", "room": "warehouse", "prompt": prompt, "counts": {"bin": 8}, "robots": {},
+        "relations": [{"subject": "bin", "relation": "stacked", "n": 8}]});
+    let v = &judge(&[(pkg, line)])[0];
+    assert!(held(&v["relations"][0]), "{v}");
+}
