@@ -599,11 +599,12 @@ fn stacks(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
     let rels: Vec<RelationKind> = ctx.relations(group).into_iter().cloned().collect();
     let mut first = true;
     while !rest.is_empty() {
-        // As many as fit under the ceiling.
+        // As many as fit under the ceiling, and no more than a column may hold.
+        let layers = ctx.input.max_layers.get(group).copied().unwrap_or(usize::MAX).max(1);
         let mut z = 0.0;
         let mut n = 0;
         for &i in &rest {
-            if z + ctx.bounds[i].max[2] > ceiling - 0.02 {
+            if z + ctx.bounds[i].max[2] > ceiling - 0.02 || n == layers {
                 break;
             }
             z += top_of(ctx, i);
@@ -614,14 +615,15 @@ fn stacks(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
         }
         if n < rest.len() && first {
             let phrase = ctx.input.plan.phrase_of(group);
+            let why = if n == layers {
+                "stand in one column (a taller one sinks more than 1 cm into the simulation's soft contacts)"
+                    .to_string()
+            } else {
+                format!("fit under the {ceiling:.1} m ceiling in one stack")
+            };
             ctx.warn(
                 "relation_unmet",
-                format!(
-                    "\"{phrase}\" stacked: {} of {} fit under the {:.1} m ceiling in one stack; the rest stand in more stacks beside it",
-                    n,
-                    rest.len(),
-                    ceiling
-                ),
+                format!("\"{phrase}\" stacked: {} of {} {why}; the rest stand in more stacks beside it", n, rest.len()),
             );
         }
         let these: Vec<usize> = rest.drain(..n).collect();

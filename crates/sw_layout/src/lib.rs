@@ -86,6 +86,10 @@ pub struct LayoutInput<'a> {
     pub objects: Vec<ObjectItem<'a>>,
     pub robots: Vec<RobotItem>,
     pub seed: u64,
+    /// The most members a column of a stacked group may hold, by group (besides the
+    /// ceiling). The pipeline learns it from the settle: a tall column of light things
+    /// sinks into MuJoCo's soft contacts, its top by more than verification allows.
+    pub max_layers: std::collections::BTreeMap<String, usize>,
 }
 
 /// Measures a layout against its plan's rules profile (after anomalies were injected, say).

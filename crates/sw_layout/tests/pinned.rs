@@ -52,7 +52,7 @@ fn input<'a>(plan: &'a ScenePlan, assets: &'a [(String, String, Asset, Vec<Strin
             carries_robot: None,
         })
         .collect();
-    LayoutInput { plan, objects, robots: Vec::new(), seed: 3 }
+    LayoutInput { plan, objects, robots: Vec::new(), seed: 3, max_layers: Default::default() }
 }
 
 fn boxes(assets: &[(String, String, Asset, Vec<String>)], scene: &LaidOutScene, name: &str) -> Vec<Aabb> {

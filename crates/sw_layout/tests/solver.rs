@@ -47,7 +47,7 @@ fn solve_forged(f: &Forged, robots: Vec<RobotItem>, seed: u64) -> LaidOutScene {
             carries_robot: None,
         })
         .collect();
-    solve(&LayoutInput { plan: &f.plan, objects, robots, seed })
+    solve(&LayoutInput { plan: &f.plan, objects, robots, seed, max_layers: Default::default() })
 }
 
 fn room(kind: RoomKind, size: Dims, fixed: bool) -> ScenePlan {

@@ -237,7 +237,13 @@ fn run_edit(
             objects: work.layout.objects.clone(),
             robots: work.layout.robots.clone(),
         };
-        let li = LayoutInput { plan: &work.plan, objects: work.items(), robots: work.forged.robots.clone(), seed };
+        let li = LayoutInput {
+            plan: &work.plan,
+            objects: work.items(),
+            robots: work.forged.robots.clone(),
+            seed,
+            max_layers: Default::default(),
+        };
         solve_pinned(&li, &pins)
     };
     work.land_riders(&mut layout);

@@ -30,6 +30,7 @@ mod scene_geom;
 mod upright;
 mod variations;
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -313,7 +314,7 @@ pub(crate) fn run_from_plan(
     let t = stage(Stage::Layout, on_event);
     let mut layout = {
         let _s = info_span!("stage", stage = "layout").entered();
-        let mut layout = lay_out(&plan, &forged, opts.seed, None);
+        let mut layout = lay_out(&plan, &forged, opts.seed, None, &BTreeMap::new());
         // When objects do not fit, shrink what may shrink (within the catalog's ranges):
         // each step scales the original assets of every group that has been short.
         let original = forged.clone();
@@ -330,7 +331,7 @@ pub(crate) fn run_from_plan(
             for o in smaller.objects.iter_mut().filter(|o| groups.contains(&o.group)) {
                 o.asset = forge::shrunk(o, factor);
             }
-            let candidate = lay_out(&plan, &smaller, opts.seed, None);
+            let candidate = lay_out(&plan, &smaller, opts.seed, None, &BTreeMap::new());
             if missing(&candidate) < missing(&layout) {
                 for g in &groups {
                     smaller.warnings.push(Warning::new(
@@ -345,7 +346,7 @@ pub(crate) fn run_from_plan(
             }
         }
         if let Some(a) = &plan.anomaly {
-            layout = lay_out(&plan, &forged, opts.seed, Some((a, &mut layout)));
+            layout = lay_out(&plan, &forged, opts.seed, Some((a, &mut layout)), &BTreeMap::new());
         }
         layout
     };
@@ -362,6 +363,8 @@ pub(crate) fn run_from_plan(
     let mut warnings: Vec<Warning> = prepared.warnings;
     warnings.extend(forged.warnings.iter().cloned());
     let mut verification: Option<Verification> = None;
+    // Stacked groups laid out again in shorter columns after a settle, and how short.
+    let mut max_layers: BTreeMap<String, usize> = BTreeMap::new();
     for round in 0..=MAX_REPAIRS {
         opts.check_cancel()?;
         // L4
@@ -416,6 +419,33 @@ pub(crate) fn run_from_plan(
         };
         finish(Stage::Verify, t, report::verify_summary(&v), &mut timings, on_event);
         let repairable = !v.passed && v.compiled && round < MAX_REPAIRS;
+        // Columns that sank too far: their groups are laid out again in columns as short
+        // as the layers that stayed (once per group), rather than losing their tops.
+        if repairable && plan.anomaly.is_none() {
+            let new: Vec<(String, usize)> = report::sunk_columns(&plan, &layout, &v)
+                .into_iter()
+                .filter(|(g, _)| !max_layers.contains_key(g))
+                .collect();
+            if !new.is_empty() {
+                for (g, layers) in &new {
+                    let message = format!(
+                        "\"{}\" stacked: the layers above the {} sank or slid more than 1 cm in the settle; laid out again in columns of at most {layers}",
+                        plan.phrase_of(g),
+                        ordinal(*layers)
+                    );
+                    on_event(&Event::Note { stage: Stage::Verify, message });
+                }
+                max_layers.extend(new);
+                // Counted in the layout's time; the events say it as a note above.
+                let t = Instant::now();
+                layout = lay_out(&plan, &forged, opts.seed, None, &max_layers);
+                if let Some(x) = timings.stages.iter_mut().find(|x| x.stage == Stage::Layout) {
+                    x.ms += t.elapsed().as_secs_f64() * 1000.0;
+                }
+                verification = Some(v);
+                continue;
+            }
+        }
         let removed = if repairable { report::repair(&mut layout, &v, &expected) } else { Vec::new() };
         verification = Some(v);
         if removed.is_empty() {
@@ -438,6 +468,18 @@ pub(crate) fn run_from_plan(
     Ok(Outcome { plan, layout, report, timings, out_dir })
 }
 
+/// "1st", "2nd", "3rd", "4th", … "11th", "12th", "13th", "21st".
+fn ordinal(n: usize) -> String {
+    let suffix = match (n % 10, n % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{n}{suffix}")
+}
+
 /// Footprint scales tried, in turn, for objects that did not fit.
 const SHRINK_STEPS: [f64; 2] = [0.85, 0.7];
 
@@ -453,6 +495,7 @@ fn lay_out(
     forged: &Forged,
     seed: u64,
     anomaly: Option<(&AnomalyRequest, &mut LaidOutScene)>,
+    max_layers: &BTreeMap<String, usize>,
 ) -> LaidOutScene {
     let input = sw_layout::LayoutInput {
         plan,
@@ -471,6 +514,7 @@ fn lay_out(
             .collect(),
         robots: forged.robots.clone(),
         seed,
+        max_layers: max_layers.clone(),
     };
     match anomaly {
         None => sw_layout::solve(&input),

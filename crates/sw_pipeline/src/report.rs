@@ -92,6 +92,40 @@ pub(crate) fn anomaly_bodies(layout: &LaidOutScene) -> Vec<String> {
     names.into_iter().collect()
 }
 
+/// Stacked groups whose columns sank or fell in the settle: for each, how many layers of
+/// its columns stayed (the lowest layer that moved, counted from 0 at the floor). A tall
+/// column of light things sinks into MuJoCo's soft contacts by roughly the square of its
+/// height, its top by more than verification allows; a column that short would not.
+pub(crate) fn sunk_columns(
+    plan: &ScenePlan,
+    layout: &LaidOutScene,
+    v: &Verification,
+) -> std::collections::BTreeMap<String, usize> {
+    let mut caps = std::collections::BTreeMap::new();
+    let Some(settle) = &v.settle else { return caps };
+    let stacked =
+        |g: &str| plan.relations.iter().any(|r| r.subject == g && matches!(r.kind, sw_plan::RelationKind::Stacked));
+    let object = |n: &str| layout.objects.iter().find(|o| o.name == n);
+    for m in &settle.moved {
+        let Some(o) = object(&m.body).filter(|o| stacked(&o.group)) else { continue };
+        // Its layer: how many of its group it stands on, one on another, down to the floor.
+        let mut layer = 0;
+        let mut at = o;
+        while let Support::Object { object: below, .. } = &at.support
+            && let Some(b) = object(below).filter(|b| b.group == o.group)
+            && layer < layout.objects.len()
+        {
+            layer += 1;
+            at = b;
+        }
+        if layer > 0 {
+            let cap = caps.entry(o.group.clone()).or_insert(layer);
+            *cap = (*cap).min(layer);
+        }
+    }
+    caps
+}
+
 /// Removes the objects a failed verification points at (and whatever rests on them).
 /// Robots are never removed. Returns (name, reason) for each removed object.
 pub(crate) fn repair(layout: &mut LaidOutScene, v: &Verification, expected: &[String]) -> Vec<(String, String)> {

@@ -283,3 +283,27 @@ fn a_stack_of_totes_stands_rim_on_rim() {
     let v = &judge(&[(pkg, line)])[0];
     assert!(held(&v["relations"][0]), "{v}");
 }
+
+#[test]
+fn a_column_that_sinks_in_the_settle_is_laid_out_again_shorter_and_nothing_is_lost() {
+    // Sixteen cardboard boxes in one column sink into MuJoCo's soft contacts, the top
+    // layers by more than 1 cm, and verification used to remove the top nine. The pipeline
+    // now lays the group out again in columns as short as the layers that stayed.
+    let dir = tempfile::tempdir().unwrap();
+    let prompt = "a warehouse with a stack of 16 cardboard boxes";
+    let pkg = dir.path().join("boxes");
+    let o = generate(prompt, &pkg, &Options { seed: 1, ..Options::default() }, &mut |_| {}).unwrap();
+    let v = o.report.verification.as_ref().unwrap();
+    assert_eq!(o.report.status, Status::Verified, "{:?}", v.failures);
+    assert!(v.settle.as_ref().unwrap().moved.is_empty());
+    let boxes = o.layout.objects.iter().filter(|x| x.category == "cardboard_box").count();
+    assert_eq!(boxes, 16, "nothing removed: {:?}", o.report.warnings);
+    assert!(o.report.warnings.iter().any(|w| w.message.contains("in one column")), "{:?}", o.report.warnings);
+    let line = json!({"id": "boxes", "room": "warehouse", "prompt": prompt, "counts": {"cardboard_box": 16}, "robots": {},
+        "relations": [{"subject": "cardboard_box", "relation": "stacked"}]});
+    let v = &judge(&[(pkg, line)])[0];
+    let heights: Vec<u64> =
+        v["relations"][0]["measured"]["heights"].as_array().unwrap().iter().map(|h| h.as_u64().unwrap()).collect();
+    assert_eq!(heights.iter().sum::<u64>(), 16, "{v}");
+    assert!(heights.len() >= 2 && heights.iter().all(|h| *h >= 2), "short columns, not singles: {heights:?}");
+}
