@@ -442,6 +442,7 @@ pub(crate) fn run_from_plan(
                 if let Some(x) = timings.stages.iter_mut().find(|x| x.stage == Stage::Layout) {
                     x.ms += t.elapsed().as_secs_f64() * 1000.0;
                 }
+                placement_events(&layout, on_event);
                 verification = Some(v);
                 continue;
             }
