@@ -23,6 +23,8 @@ from judge_scene import Scene, Surface, Thing
 
 REST_TOL_M = 0.03
 REST_XY_SLACK_M = 0.02
+# A surface this far or more below a carrier's top is inside it (a tote's floor).
+OPEN_DEPTH_M = 0.02
 UNDER_SLACK_M = 0.01
 STACK_OFFSET_M = 0.25
 FULL_SHARE = 0.75
@@ -70,9 +72,11 @@ def rests_on(item: Thing, carrier: Thing) -> str | None:
     for s in carrier.surfaces:
         if abs(b - float(s.centre[2])) <= REST_TOL_M and s.contains_xy(c, REST_XY_SLACK_M):
             return s.name
-    # Its top: a carrier without surfaces, or an open tote's rim (its only surface is the
-    # floor inside it; totes are stacked rim on rim).
-    if abs(b - carrier.top) <= REST_TOL_M and point_in_convex(c, carrier.footprint, REST_XY_SLACK_M):
+    # Its top: a carrier without surfaces, or an open tote's rim (every surface is a floor
+    # well inside it; totes are stacked rim on rim). Not a plate's rim: its surface is its
+    # top, and a plate two below in a stack is not what the top one rests on.
+    rim = all(carrier.top - float(s.centre[2]) >= OPEN_DEPTH_M for s in carrier.surfaces)
+    if rim and abs(b - carrier.top) <= REST_TOL_M and point_in_convex(c, carrier.footprint, REST_XY_SLACK_M):
         return "top"
     return None
 
