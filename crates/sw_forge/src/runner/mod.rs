@@ -12,6 +12,7 @@
 
 mod process;
 mod setup;
+mod stale;
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -211,10 +212,15 @@ impl CadRunner {
         if !config.python.exists() {
             return Err(RunnerError::NotInstalled { python: config.python.display().to_string() });
         }
+        for d in stale::sweep(&std::env::temp_dir()) {
+            debug!("removed the runtime directory of a runner that was killed: {}", d.display());
+        }
         let runtime = tempfile::Builder::new()
-            .prefix("scenewright-cad-")
+            .prefix(stale::PREFIX)
             .tempdir()
             .map_err(|e| RunnerError::Io(format!("creating the runtime directory: {e}")))?;
+        stale::claim(runtime.path())
+            .map_err(|e| RunnerError::Io(format!("writing the runtime directory's owner: {e}")))?;
         let script = setup::write_sources(&runtime.path().join("py"))
             .map_err(|e| RunnerError::Io(format!("writing the worker's sources: {e}")))?;
         let workers = config.workers.max(1);
