@@ -241,24 +241,44 @@ fn suite_prompts_hold_every_relation() {
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }
 
+/// A verified package of `prompt` (seed `seed`) in `dir`.
+fn verified(prompt: &str, seed: u64, dir: &Path) -> (PathBuf, sw_pipeline::Outcome) {
+    let pkg = dir.join("pkg");
+    let o = generate(prompt, &pkg, &Options { seed, ..Options::default() }, &mut |_| {}).unwrap();
+    let v = o.report.verification.as_ref().unwrap();
+    assert_eq!(o.report.status, Status::Verified, "{prompt}: {:?}", v.failures);
+    assert!(v.settle.as_ref().unwrap().moved.is_empty(), "{prompt}: {:?}", v.settle);
+    (pkg, o)
+}
+
+/// The judge's verdict on "`n` (or any number of) `category` stacked" in the package, with
+/// `count` of them: (held, the heights of the columns it found in scene.xml).
+fn judged_stack(pkg: PathBuf, prompt: &str, category: &str, count: u32, n: Option<u32>) -> (bool, Vec<u64>) {
+    let mut rel = json!({"subject": category, "relation": "stacked"});
+    if let Some(n) = n {
+        rel["n"] = json!(n);
+    }
+    let line = json!({"id": category, "room": "warehouse", "prompt": prompt, "counts": {category: count},
+        "robots": {}, "relations": [rel]});
+    let v = &judge(&[(pkg, line)])[0];
+    assert!(held(&v["counts"]), "{v}");
+    let r = &v["relations"][0];
+    let heights = r["measured"]["heights"].as_array().unwrap().iter().map(|h| h.as_u64().unwrap()).collect();
+    (held(r), heights)
+}
+
 #[test]
 fn more_than_the_ceiling_allows_is_counted_as_the_stacks_it_makes() {
     // 48 pallets under a 3 m ceiling stand in columns of 20: the report says how many
     // columns, and the judge, reading only scene.xml, counts the same.
     let dir = tempfile::tempdir().unwrap();
     let prompt = "a garage with a stack of 48 pallets";
-    let pkg = dir.path().join("pallets");
-    let o = generate(prompt, &pkg, &Options { seed: 1, ..Options::default() }, &mut |_| {}).unwrap();
-    assert_eq!(o.report.status, Status::Verified, "{:?}", o.report.verification.as_ref().map(|v| &v.failures));
+    let (pkg, _) = verified(prompt, 1, dir.path());
     let report: Value = serde_json::from_str(&std::fs::read_to_string(pkg.join("report.json")).unwrap()).unwrap();
     let stacked = report["relations"].as_array().unwrap().iter().find(|r| r["relation"] == "stacked").unwrap();
     let said = stacked["measured"]["stacks"].as_f64().unwrap();
-    let line = json!({"id": "pallets", "room": "garage", "prompt": prompt, "counts": {"pallet": 48}, "robots": {},
-        "relations": [{"subject": "pallet", "relation": "stacked"}]});
-    let v = &judge(&[(pkg, line)])[0];
-    let heights: Vec<u64> =
-        v["relations"][0]["measured"]["heights"].as_array().unwrap().iter().map(|h| h.as_u64().unwrap()).collect();
-    assert_eq!(heights.iter().sum::<u64>(), 48, "{v}");
+    let (_, heights) = judged_stack(pkg, prompt, "pallet", 48, None);
+    assert_eq!(heights.iter().sum::<u64>(), 48);
     assert!(heights.len() > 1 && heights.len() < 10, "columns under the ceiling, not singles: {heights:?}");
     assert_eq!(said, heights.len() as f64, "the report's stacks against the judge's {heights:?}");
     assert_eq!(stacked["held"], false, "one stack was asked for");
@@ -271,9 +291,7 @@ fn a_stack_of_totes_stands_rim_on_rim() {
     // removed for interpenetration. The judge reads the column from scene.xml.
     let dir = tempfile::tempdir().unwrap();
     let prompt = "a warehouse with a stack of 8 bins";
-    let pkg = dir.path().join("bins");
-    let o = generate(prompt, &pkg, &Options { seed: 2, ..Options::default() }, &mut |_| {}).unwrap();
-    assert_eq!(o.report.status, Status::Verified, "{:?}", o.report.verification.as_ref().map(|v| &v.failures));
+    let (pkg, o) = verified(prompt, 2, dir.path());
     let bins: Vec<&sw_plan::PlacedObject> = o.layout.objects.iter().filter(|x| x.category == "bin").collect();
     assert_eq!(bins.len(), 8, "every bin kept");
     assert!(
@@ -281,10 +299,8 @@ fn a_stack_of_totes_stands_rim_on_rim() {
         "one model of tote: {:?}",
         bins.iter().map(|b| b.size).collect::<Vec<_>>()
     );
-    let line = json!({"id": "bins", "room": "warehouse", "prompt": prompt, "counts": {"bin": 8}, "robots": {},
-        "relations": [{"subject": "bin", "relation": "stacked", "n": 8}]});
-    let v = &judge(&[(pkg, line)])[0];
-    assert!(held(&v["relations"][0]), "{v}");
+    let (held, heights) = judged_stack(pkg, prompt, "bin", 8, Some(8));
+    assert!(held, "{heights:?}");
 }
 
 #[test]
@@ -294,19 +310,11 @@ fn a_column_that_sinks_in_the_settle_is_laid_out_again_shorter_and_nothing_is_lo
     // now lays the group out again in columns as short as the layers that stayed.
     let dir = tempfile::tempdir().unwrap();
     let prompt = "a warehouse with a stack of 16 cardboard boxes";
-    let pkg = dir.path().join("boxes");
-    let o = generate(prompt, &pkg, &Options { seed: 1, ..Options::default() }, &mut |_| {}).unwrap();
-    let v = o.report.verification.as_ref().unwrap();
-    assert_eq!(o.report.status, Status::Verified, "{:?}", v.failures);
-    assert!(v.settle.as_ref().unwrap().moved.is_empty());
+    let (pkg, o) = verified(prompt, 1, dir.path());
     let boxes = o.layout.objects.iter().filter(|x| x.category == "cardboard_box").count();
     assert_eq!(boxes, 16, "nothing removed: {:?}", o.report.warnings);
     assert!(o.report.warnings.iter().any(|w| w.message.contains("in one column")), "{:?}", o.report.warnings);
-    let line = json!({"id": "boxes", "room": "warehouse", "prompt": prompt, "counts": {"cardboard_box": 16}, "robots": {},
-        "relations": [{"subject": "cardboard_box", "relation": "stacked"}]});
-    let v = &judge(&[(pkg, line)])[0];
-    let heights: Vec<u64> =
-        v["relations"][0]["measured"]["heights"].as_array().unwrap().iter().map(|h| h.as_u64().unwrap()).collect();
-    assert_eq!(heights.iter().sum::<u64>(), 16, "{v}");
+    let (_, heights) = judged_stack(pkg, prompt, "cardboard_box", 16, None);
+    assert_eq!(heights.iter().sum::<u64>(), 16);
     assert!(heights.len() >= 2 && heights.iter().all(|h| *h >= 2), "short columns, not singles: {heights:?}");
 }
