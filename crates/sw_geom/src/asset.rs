@@ -275,7 +275,12 @@ impl Asset {
     /// The highest support surface open above that is the asset's top: not the floor
     /// inside a tote, bin or tray, which lies [`INSIDE_DEPTH`] or more below the top.
     pub fn top_surface(&self) -> Option<&SupportSurface> {
-        let top = self.bounds().max[2];
+        self.top_surface_under(self.bounds().max[2])
+    }
+
+    /// [`Self::top_surface`] with the asset's top height given (a caller that keeps its
+    /// bounds need not walk every mesh again).
+    pub fn top_surface_under(&self, top: f64) -> Option<&SupportSurface> {
         self.surfaces
             .iter()
             .filter(|s| s.clearance.is_none() && s.z > top - INSIDE_DEPTH)

@@ -125,15 +125,16 @@ fn stack(ctx: &Ctx<'_>, idxs: &[usize]) -> Formation {
 /// The height something stacked on an object rests at: its top surface, else its top —
 /// an open tote's rim: totes are stacked on one another, not put inside.
 pub(crate) fn top_of(ctx: &Ctx<'_>, idx: usize) -> f64 {
-    ctx.input.objects[idx].asset.top_surface().map_or(ctx.bounds[idx].max[2], |s| s.z)
+    let top = ctx.bounds[idx].max[2];
+    ctx.input.objects[idx].asset.top_surface_under(top).map_or(top, |s| s.z)
 }
 
 /// The top surface's name (what a stacked member rests on); "rim" for an open tote.
 fn top_surface(ctx: &Ctx<'_>, idx: usize) -> String {
     let a = ctx.input.objects[idx].asset;
-    match a.top_surface() {
+    match a.top_surface_under(ctx.bounds[idx].max[2]) {
         Some(s) => s.name.clone(),
-        None if a.is_open() => "rim".to_string(),
+        None if a.surfaces.iter().any(|s| s.clearance.is_none()) => "rim".to_string(),
         None => "top".to_string(),
     }
 }

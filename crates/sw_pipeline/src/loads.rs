@@ -22,6 +22,11 @@ pub(crate) fn is_filled(plan: &ScenePlan, group: &str) -> bool {
     plan.relations.iter().any(|r| r.subject == group && matches!(r.kind, RelationKind::FullOf { .. }))
 }
 
+/// Whether `group` is said to be stacked.
+pub(crate) fn is_stacked(plan: &ScenePlan, group: &str) -> bool {
+    plan.relations.iter().any(|r| r.subject == group && matches!(r.kind, RelationKind::Stacked))
+}
+
 /// The same catalog asset made again with some parameters changed (same seed, colour).
 fn remade(a: &Asset, change: &BTreeMap<&str, f64>) -> Option<Asset> {
     sw_catalog::find(&a.category)?;
@@ -73,8 +78,7 @@ impl Sizing {
         let asset = shaped_by_relations(plan, group, asset);
         // Open totes said to be stacked are one model (their colours may differ): each
         // stands on the rim of the one below, which a smaller one would fall into.
-        let stacked = plan.relations.iter().any(|r| r.subject == group && matches!(r.kind, RelationKind::Stacked));
-        let asset = if stacked && asset.is_open() {
+        let asset = if is_stacked(plan, group) && asset.is_open() {
             match self.stacked.get(group) {
                 Some(p) if !first => {
                     let change: BTreeMap<&str, f64> = p.iter().map(|(n, v)| (n.as_str(), *v)).collect();

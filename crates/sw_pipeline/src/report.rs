@@ -103,11 +103,9 @@ pub(crate) fn sunk_columns(
 ) -> std::collections::BTreeMap<String, usize> {
     let mut caps = std::collections::BTreeMap::new();
     let Some(settle) = &v.settle else { return caps };
-    let stacked =
-        |g: &str| plan.relations.iter().any(|r| r.subject == g && matches!(r.kind, sw_plan::RelationKind::Stacked));
     let object = |n: &str| layout.objects.iter().find(|o| o.name == n);
     for m in &settle.moved {
-        let Some(o) = object(&m.body).filter(|o| stacked(&o.group)) else { continue };
+        let Some(o) = object(&m.body).filter(|o| crate::loads::is_stacked(plan, &o.group)) else { continue };
         // Its layer: how many of its group it stands on, one on another, down to the floor.
         let mut layer = 0;
         let mut at = o;

@@ -243,6 +243,12 @@ impl Parser<'_> {
         let definite = self.is_definite(j);
         let p = self.phrase_at(j, true, Bare::Target).ok().flatten()?;
         let end = p.end;
+        // A new group for a plural target without a count ("next to tables") gets two;
+        // the pieces of a turned-round relation ("surrounded by screens") the usual default.
+        let mut p2 = p.clone();
+        if p2.count.is_none() && p2.plural && !self.taking_pieces {
+            p2.count = Some(2.0);
+        }
         let raw_head = p.text.split_whitespace().last().map(|h| singular(&h.to_lowercase())).unwrap_or_default();
         let id = match &p.head {
             // "the cell", "the work cell": the arm's work, or the arm.
@@ -255,10 +261,6 @@ impl Parser<'_> {
             Head::Known(Meaning::Category(cat)) => match self.resolve_group(Some(cat), &raw_head) {
                 Some(g) => g,
                 None => {
-                    let mut p2 = p.clone();
-                    if p2.count.is_none() && p2.plural && !self.taking_pieces {
-                        p2.count = Some(2.0);
-                    }
                     let id = self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit);
                     if definite && !matches!(cue, Cue::On | Cue::Under) {
                         self.note_accommodated(&p.text, cat);
@@ -279,23 +281,13 @@ impl Parser<'_> {
                             became: cat.to_string(),
                             reason: format!("read '{label}' as {}", cat.replace('_', " ")),
                         });
-                        let mut p2 = p.clone();
-                        if p2.count.is_none() && p2.plural && !self.taking_pieces {
-                            p2.count = Some(2.0);
-                        }
                         self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit)
                     }
                 }
             }
             Head::Unknown(label) => match self.resolve_group(None, label) {
                 Some(g) => g,
-                None => {
-                    let mut p2 = p.clone();
-                    if p2.count.is_none() && p2.plural && !self.taking_pieces {
-                        p2.count = Some(2.0);
-                    }
-                    self.new_group(None, label.clone(), &p2, p.explicit)
-                }
+                None => self.new_group(None, label.clone(), &p2, p.explicit),
             },
             _ => return None,
         };
