@@ -130,7 +130,7 @@ pub(crate) fn top_of(ctx: &Ctx<'_>, idx: usize) -> f64 {
 }
 
 /// The top surface's name (what a stacked member rests on); "rim" for an open tote.
-fn top_surface(ctx: &Ctx<'_>, idx: usize) -> String {
+pub(crate) fn top_surface(ctx: &Ctx<'_>, idx: usize) -> String {
     let a = ctx.input.objects[idx].asset;
     match a.top_surface_under(ctx.bounds[idx].max[2]) {
         Some(s) => s.name.clone(),

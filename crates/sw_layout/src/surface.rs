@@ -27,7 +27,10 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
         let stacked = ctx.relations(&group).iter().any(|r| matches!(r, RelationKind::Stacked));
         let order = if stacked { stack_order(ctx, &group) } else { ctx.instances(&group) };
         let k = order.iter().position(|&i| i == idx).unwrap_or(0);
-        if stacked && k > 0 && on_the_one_below(ctx, idx, &group, k) {
+        // Columns no taller than the group may have (learnt from a settle): every
+        // `layers`-th member starts a new one on the surface.
+        let layers = ctx.input.max_layers.get(&group).copied().unwrap_or(usize::MAX).max(1);
+        if stacked && k % layers != 0 && on_the_one_below(ctx, idx, &group, k) {
             continue;
         }
         if place_on_group(ctx, idx, &target, k, true) {
@@ -105,13 +108,7 @@ fn on_the_one_below(ctx: &mut Ctx<'_>, idx: usize, group: &str, k: usize) -> boo
     if !ctx.space.fits(&spot.boxes(&ctx.local[idx]), 0.0, &[], false, &[]) {
         return false;
     }
-    let surface = ctx.input.objects[below]
-        .asset
-        .surfaces
-        .iter()
-        .filter(|s| s.clearance.is_none())
-        .max_by(|a, b| a.z.total_cmp(&b.z))
-        .map_or_else(|| "top".to_string(), |s| s.name.clone());
+    let surface = crate::formation::top_surface(ctx, below);
     let name = ctx.input.objects[below].name.clone();
     ctx.commit(idx, spot, Support::Object { object: name, surface });
     true

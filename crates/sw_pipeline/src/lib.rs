@@ -433,7 +433,8 @@ pub(crate) fn run_from_plan(
                         plan.phrase_of(g),
                         ordinal(*layers)
                     );
-                    on_event(&Event::Note { stage: Stage::Verify, message });
+                    on_event(&Event::Note { stage: Stage::Verify, message: message.clone() });
+                    warnings.push(Warning::new(Stage::Verify, "stack_shortened", message));
                 }
                 max_layers.extend(new);
                 // Counted in the layout's time; the events say it as a note above.

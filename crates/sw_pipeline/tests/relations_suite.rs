@@ -251,14 +251,14 @@ fn verified(prompt: &str, seed: u64, dir: &Path) -> (PathBuf, sw_pipeline::Outco
     (pkg, o)
 }
 
-/// The judge's verdict on "`n` (or any number of) `category` stacked" in the package, with
-/// `count` of them: (held, the heights of the columns it found in scene.xml).
-fn judged_stack(pkg: PathBuf, prompt: &str, category: &str, count: u32, n: Option<u32>) -> (bool, Vec<u64>) {
+/// The judge's verdict on "`n` (or any number of) `category` stacked" in the package, whose
+/// objects are `counts`: (held, the heights of the columns it found in scene.xml).
+fn judged_stack(pkg: PathBuf, prompt: &str, category: &str, counts: Value, n: Option<u32>) -> (bool, Vec<u64>) {
     let mut rel = json!({"subject": category, "relation": "stacked"});
     if let Some(n) = n {
         rel["n"] = json!(n);
     }
-    let line = json!({"id": category, "room": "warehouse", "prompt": prompt, "counts": {category: count},
+    let line = json!({"id": category, "room": "warehouse", "prompt": prompt, "counts": counts,
         "robots": {}, "relations": [rel]});
     let v = &judge(&[(pkg, line)])[0];
     assert!(held(&v["counts"]), "{v}");
@@ -277,7 +277,7 @@ fn more_than_the_ceiling_allows_is_counted_as_the_stacks_it_makes() {
     let report: Value = serde_json::from_str(&std::fs::read_to_string(pkg.join("report.json")).unwrap()).unwrap();
     let stacked = report["relations"].as_array().unwrap().iter().find(|r| r["relation"] == "stacked").unwrap();
     let said = stacked["measured"]["stacks"].as_f64().unwrap();
-    let (_, heights) = judged_stack(pkg, prompt, "pallet", 48, None);
+    let (_, heights) = judged_stack(pkg, prompt, "pallet", json!({"pallet": 48}), None);
     assert_eq!(heights.iter().sum::<u64>(), 48);
     assert!(heights.len() > 1 && heights.len() < 10, "columns under the ceiling, not singles: {heights:?}");
     assert_eq!(said, heights.len() as f64, "the report's stacks against the judge's {heights:?}");
@@ -299,7 +299,7 @@ fn a_stack_of_totes_stands_rim_on_rim() {
         "one model of tote: {:?}",
         bins.iter().map(|b| b.size).collect::<Vec<_>>()
     );
-    let (held, heights) = judged_stack(pkg, prompt, "bin", 8, Some(8));
+    let (held, heights) = judged_stack(pkg, prompt, "bin", json!({"bin": 8}), Some(8));
     assert!(held, "{heights:?}");
 }
 
@@ -314,7 +314,22 @@ fn a_column_that_sinks_in_the_settle_is_laid_out_again_shorter_and_nothing_is_lo
     let boxes = o.layout.objects.iter().filter(|x| x.category == "cardboard_box").count();
     assert_eq!(boxes, 16, "nothing removed: {:?}", o.report.warnings);
     assert!(o.report.warnings.iter().any(|w| w.message.contains("in one column")), "{:?}", o.report.warnings);
-    let (_, heights) = judged_stack(pkg, prompt, "cardboard_box", 16, None);
+    let (_, heights) = judged_stack(pkg, prompt, "cardboard_box", json!({"cardboard_box": 16}), None);
     assert_eq!(heights.iter().sum::<u64>(), 16);
     assert!(heights.len() >= 2 && heights.iter().all(|h| *h >= 2), "short columns, not singles: {heights:?}");
+}
+
+#[test]
+fn a_tower_on_a_table_that_falls_is_laid_out_again_and_nothing_is_lost() {
+    // Forty mugs stacked on a table topple in the settle (the one-stack-on-a-surface
+    // path): the group is laid out again in columns as short as what stood, one mug each
+    // here, and every mug stays on the table instead of most being removed.
+    let dir = tempfile::tempdir().unwrap();
+    let prompt = "a stack of 40 mugs on a table";
+    let (pkg, o) = verified(prompt, 1, dir.path());
+    let mugs: Vec<&sw_plan::PlacedObject> = o.layout.objects.iter().filter(|x| x.category == "mug").collect();
+    assert_eq!(mugs.len(), 40, "nothing removed: {:?}", o.report.warnings);
+    assert!(o.report.warnings.iter().any(|w| w.code == "stack_shortened"), "{:?}", o.report.warnings);
+    let (_, heights) = judged_stack(pkg, prompt, "mug", json!({"mug": 40, "table": 1}), None);
+    assert_eq!(heights.iter().sum::<u64>(), 40);
 }
