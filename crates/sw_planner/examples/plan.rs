@@ -1,9 +1,11 @@
-//! Prints the plan of a prompt: `cargo run -p sw_planner --example plan -- "a warehouse ..."`.
-#![allow(clippy::print_stdout)]
+//! Prints the offline plan of each argument as JSON (one line per prompt), or the one-line
+//! error: `cargo run -p sw_planner --example plan -- "a kitchen with two mugs on a table"`.
+
 fn main() {
-    let prompt = std::env::args().skip(1).collect::<Vec<_>>().join(" ");
-    match sw_planner::plan(&prompt) {
-        Ok(p) => println!("{}", serde_json::to_string_pretty(&p).unwrap_or_default()),
-        Err(e) => println!("error: {e}"),
+    for prompt in std::env::args().skip(1) {
+        match sw_planner::plan(&prompt) {
+            Ok(p) => println!("{}", serde_json::to_string(&p).unwrap_or_default()),
+            Err(e) => println!("error: {e}"),
+        }
     }
 }

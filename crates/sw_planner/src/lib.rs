@@ -12,8 +12,11 @@ mod cues;
 mod lexicon;
 pub mod llm;
 mod parse;
+mod phrase;
 mod priors;
+mod quantity;
 pub mod refine;
+mod tables;
 mod text;
 pub mod vocab;
 

@@ -6,9 +6,11 @@ use sw_catalog::PlacementKind;
 use sw_plan::{Approximation, ExplicitSize, Mount, NamedColor, RelationKind, RoomKind, SizeWord};
 
 use crate::PlannerError;
-use crate::cues::{Cue, cue_at};
-use crate::lexicon::{Lexicon, Meaning, RobotWord, is_head};
-use crate::text::{Token, TokenKind, edit_distance, number_word, singular};
+use crate::cues::Cue;
+use crate::lexicon::{Lexicon, Meaning, RobotWord};
+use crate::phrase::PlaceKind;
+pub(crate) use crate::phrase::{Bare, Head, NounPhrase as Phrase, Phrases};
+use crate::text::{Token, TokenKind, number_word, singular};
 
 mod discourse;
 mod relate;
@@ -71,40 +73,6 @@ pub(crate) struct RobotDraft {
     pub near: Option<String>,
 }
 
-/// The head of a phrase.
-#[derive(Debug, Clone)]
-enum Head {
-    Known(Meaning),
-    /// Words with no meaning in the lexicon: a proxy candidate (singular label).
-    Unknown(String),
-}
-
-#[derive(Debug, Clone)]
-struct Phrase {
-    end: usize,
-    count: Option<f64>,
-    color: Option<NamedColor>,
-    sizes: Vec<SizeWord>,
-    explicit: ExplicitSize,
-    /// Unknown words between the count and a known head ("storage" in "storage shelves").
-    descriptors: Vec<String>,
-    head: Head,
-    plural: bool,
-    text: String,
-    /// The word as typed, when the head was matched despite a typo or by its last word.
-    fuzzy_from: Option<String>,
-}
-
-/// When a phrase may consist of unknown words with nothing before them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Bare {
-    No,
-    /// The target of a relation ("on the racks").
-    Target,
-    /// A plural in a list ("… and mugs on the table").
-    PluralInList,
-}
-
 /// Who a relation applies to.
 #[derive(Debug, Clone, PartialEq)]
 enum Subject {
@@ -152,6 +120,9 @@ pub(crate) struct Parser<'a> {
     /// The phrase being taken as a target is the subject of a turned-round relation
     /// ("surrounded by screens"): a plural without a count gets the subject's default.
     taking_pieces: bool,
+    /// The clause is about a place ("a clear path to the door"): its relations are the
+    /// place's, not the subject's.
+    in_place_clause: bool,
 }
 
 /// A collective noun before a phrase: "a row of", "two rows of", "a stack of", "an aisle of".
@@ -196,6 +167,7 @@ impl<'a> Parser<'a> {
             phrase_start: 0,
             support_taken: 0,
             taking_pieces: false,
+            in_place_clause: false,
         }
     }
 
@@ -364,6 +336,7 @@ impl<'a> Parser<'a> {
 
     fn end_sentence(&mut self) {
         self.subject = None;
+        self.in_place_clause = false;
         self.list.clear();
         self.with_host = None;
         self.support = None;
@@ -390,13 +363,12 @@ impl<'a> Parser<'a> {
 
     // ---------------------------------------------------------------- dimensions
 
-    /// A number followed by an optional unit: (value in metres, tokens used, unit given).
+    fn phrases(&self) -> Phrases<'_> {
+        Phrases { lex: self.lex, toks: &self.toks, text: self.text, room: self.draft.room.as_ref().map(|(k, _)| *k) }
+    }
+
     fn length_at(&self, i: usize) -> Option<(f64, usize, bool)> {
-        let n = self.toks.get(i)?.number()?;
-        match self.lookup(i + 1, |m| matches!(m, Meaning::Unit(_))) {
-            Some((Meaning::Unit(f), len)) => Some((n * f, 1 + len, true)),
-            _ => Some((n, 1, false)),
-        }
+        self.phrases().length_at(i)
     }
 
     /// "10 by 6 m", "12x12 m", "2m x 2m x 3m", "30 m by 20 m", "100 square meters",
@@ -548,214 +520,23 @@ impl<'a> Parser<'a> {
         false
     }
 
-    /// "2 m tall", "1.5 m wide", "80 cm deep": one explicit dimension.
-    fn axis_length_at(&self, i: usize) -> Option<(f64, &'static str, usize, String)> {
-        let (v, len, _) = self.length_at(i)?;
-        let axis = match self.word(i + len) {
-            "tall" | "high" | "height" => "height",
-            "wide" | "width" => "width",
-            "long" | "length" => "width",
-            "deep" | "depth" => "depth",
-            _ => return None,
-        };
-        Some((v, axis, len + 1, self.span(i, i + len + 1)))
-    }
-
     // ---------------------------------------------------------------- phrases
 
-    /// A count, modifiers and a head noun starting at `i`.
+    /// The noun phrase starting at `i` (the phrase stage).
     fn phrase_at(&self, i: usize, allow_unknown: bool, bare: Bare) -> Result<Option<Phrase>, PlannerError> {
-        let mut j = i;
-        let mut count = None;
-        if let Some(n) = self.toks.get(j).and_then(Token::number) {
-            count = Some(n);
-            j += 1;
-        } else if let Some(n) = number_word(self.word(j)) {
-            let mut value = n;
-            j += 1;
-            if let Some(m) = number_word(self.word(j)) {
-                if m == 100.0 {
-                    value *= 100.0;
-                    j += 1;
-                } else if n >= 20.0 && n % 10.0 == 0.0 && m < 10.0 {
-                    value += m;
-                    j += 1;
-                }
-            }
-            if self.word(j) == "of" {
-                j += 1;
-            }
-            count = Some(value);
-        } else if let Some((Meaning::Count(n), len)) = self.lookup(j, |m| matches!(m, Meaning::Count(_))) {
-            count = Some(n);
-            j += len;
-        }
-        let mut color = None;
-        let mut sizes = Vec::new();
-        let mut explicit = ExplicitSize::default();
-        let mut fuzzy_from: Option<String> = None;
-        loop {
-            if let Some((v, axis, len, text)) = self.axis_length_at(j) {
-                if !(v.is_finite() && v > 0.0) {
-                    return Err(PlannerError::InvalidSize(format!("sizes must be positive lengths, got '{text}'")));
-                }
-                set_axis(&mut explicit, axis, v);
-                j += len;
-                // "2 m wide, 1 m deep" / "2 m wide and 1 m deep".
-                let joined = self.toks.get(j).is_some_and(|t| t.kind == TokenKind::Comma) || self.word(j) == "and";
-                if joined && self.axis_length_at(j + 1).is_some() {
-                    j += 1;
-                }
-                continue;
-            }
-            match self.lookup(j, |m| matches!(m, Meaning::Color(..) | Meaning::Size(_) | Meaning::Material(..))) {
-                Some((Meaning::Color(name, rgba), len)) => {
-                    color = Some(NamedColor { name: name.to_string(), rgba });
-                    j += len;
-                }
-                Some((Meaning::Size(s), len)) => {
-                    sizes.push(s);
-                    j += len;
-                }
-                Some((Meaning::Material(name, rgba), len)) => {
-                    if color.is_none()
-                        && let Some(rgba) = rgba
-                    {
-                        color = Some(NamedColor { name: name.to_string(), rgba });
-                    }
-                    j += len;
-                }
-                _ => break,
-            }
-        }
-        // The head, allowing up to three unknown descriptor words before it.
-        let mut descriptors = Vec::new();
-        let mut k = j;
-        let mut found = None;
-        for _ in 0..=3 {
-            if let Some((m, len)) = self.lookup(k, is_head) {
-                // "five plant tables", "a desk lamp": a singular object noun before another
-                // names a kind of the second (an English compound's head is its last noun).
-                let first = self.word(k + len - 1);
-                if matches!(m, Meaning::Category(_))
-                    && singular(first) == first
-                    && let Some((m2 @ Meaning::Category(_), len2)) = self.lookup(k + len, is_head)
-                {
-                    descriptors.push(self.span(k, k + len).to_lowercase());
-                    k += len;
-                    found = Some((m2, len2));
-                    break;
-                }
-                found = Some((m, len));
-                break;
-            }
-            if !self.is_plain_unknown_word(k) {
-                break;
-            }
-            descriptors.push(self.word(k).to_string());
-            k += 1;
-        }
-        let has_modifier = count.is_some() || color.is_some() || !sizes.is_empty() || !explicit.is_empty();
-        let (head, mut end, plural) = match found {
-            Some((m, len)) => {
-                let last = self.word(k + len - 1);
-                let plural = singular(last) != last;
-                (Head::Known(m), k + len, plural)
-            }
-            None => {
-                if !allow_unknown || !(has_modifier || bare != Bare::No) {
-                    return Ok(None);
-                }
-                descriptors.clear();
-                let mut words = Vec::new();
-                let mut e = j;
-                while words.len() < 4 && self.is_plain_unknown_word(e) {
-                    words.push(self.word(e).to_string());
-                    e += 1;
-                }
-                if words.is_empty() {
-                    return Ok(None);
-                }
-                let last = words.last().cloned().unwrap_or_default();
-                let plural = singular(&last) != last;
-                // A bare plural in a list ("… and mugs on the table") is an object only when
-                // it is short and a relation follows it.
-                let known_typo = words.len() == 1 && self.fuzzy(&singular(&last)).is_some();
-                if bare == Bare::PluralInList
-                    && !has_modifier
-                    && (!plural || words.len() > 2 || (cue_at(&self.toks, e).is_none() && !known_typo))
-                {
-                    return Ok(None);
-                }
-                let n = words.len();
-                words[n - 1] = singular(&last);
-                match self.fuzzy(&words[n - 1]) {
-                    Some(m) if n == 1 => {
-                        fuzzy_from = Some(last.clone());
-                        (Head::Known(m), e, plural)
-                    }
-                    _ => match self.category_by_head(&words.join(" ")) {
-                        Some(cat) if n == 1 => {
-                            fuzzy_from = Some(last.clone());
-                            (Head::Known(Meaning::Category(cat)), e, plural)
-                        }
-                        _ => (Head::Unknown(words.join(" ")), e, plural),
-                    },
-                }
-            }
-        };
-        // "UR5e arm", "TurtleBot robots": absorb the generic word after a robot name.
-        if matches!(head, Head::Known(Meaning::Robot(_)))
-            && matches!(self.word(end), "arm" | "arms" | "robot" | "robots" | "cobot" | "cobots" | "manipulator")
-        {
-            end += 1;
-        }
-        // "a table 2 m long".
-        while let Some((v, axis, len, text)) = self.axis_length_at(end) {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(PlannerError::InvalidSize(format!("sizes must be positive lengths, got '{text}'")));
-            }
-            set_axis(&mut explicit, axis, v);
-            end += len;
-        }
-        let text = self.span(i, end);
-        Ok(Some(Phrase { end, count, color, sizes, explicit, descriptors, head, plural, text, fuzzy_from }))
+        self.phrases().noun_phrase(i, allow_unknown, bare)
     }
 
-    /// A word that is not in the lexicon at all and does not start a relation cue.
     fn is_plain_unknown_word(&self, i: usize) -> bool {
-        let Some(t) = self.toks.get(i) else {
-            return false;
-        };
-        if t.kind != TokenKind::Word || number_word(&t.norm).is_some() {
-            return false;
-        }
-        if cue_at(&self.toks, i).is_some() {
-            return false;
-        }
-        self.lookup(i, |_| true).is_none()
-    }
-
-    /// A typo-tolerant match of one unknown word against head nouns.
-    fn fuzzy(&self, word: &str) -> Option<Meaning> {
-        let limit = match word.chars().count() {
-            0..=4 => return None,
-            5..=7 => 1,
-            _ => 2,
-        };
-        let mut best: Option<(usize, &str, &Meaning)> = None;
-        for (w, m) in self.lex.head_words() {
-            let d = edit_distance(word, w);
-            if d <= limit && best.is_none_or(|(bd, bw, _)| d < bd || (d == bd && w < bw)) {
-                best = Some((d, w, m));
-            }
-        }
-        best.map(|(_, _, m)| m.clone())
+        self.phrases().is_plain_unknown_word(i)
     }
 
     /// Records a phrase as a room, an object group or a robot.
     fn take_phrase(&mut self, p: Phrase, start: usize) {
         self.phrase_start = start;
+        if !matches!(p.head, Head::Place(_)) {
+            self.in_place_clause = false;
+        }
         let dims_here = self.pending_dims.take();
         if let (Some(typed), Head::Known(Meaning::Category(cat))) = (&p.fuzzy_from, &p.head) {
             self.draft.approximated.push(Approximation {
@@ -763,6 +544,12 @@ impl<'a> Parser<'a> {
                 became: cat.to_string(),
                 reason: format!("read '{typed}' as {}", cat.replace('_', " ")),
             });
+        }
+        // "the kitchen sink", "the warehouse floor": the room a modifier names.
+        if let Some(k) = p.room_modifier
+            && self.draft.room.is_none()
+        {
+            self.draft.room = Some((k, p.text.clone()));
         }
 
         match p.head.clone() {
@@ -885,7 +672,33 @@ impl<'a> Parser<'a> {
                 self.after_new_group(&id);
             }
             Head::Known(_) => {}
+            Head::Place(kind) => self.take_place(&p, kind, start),
         }
+    }
+
+    /// A place where an object phrase was expected ("a clear path to the door", "the
+    /// corridor"): no object; what is said of it is not said of the subject before it.
+    /// "An aisle with two racks" at the start of a prompt is a warehouse aisle.
+    fn take_place(&mut self, p: &Phrase, kind: PlaceKind, start: usize) {
+        let first_words = start <= 1 && self.draft.groups.is_empty() && self.draft.robots.is_empty();
+        let aisle = p.text.to_lowercase().split_whitespace().any(|w| singular(w) == "aisle");
+        if kind == PlaceKind::Path && aisle && first_words {
+            self.draft.aisle = true;
+            if self.draft.room.is_none() {
+                self.draft.room = Some((RoomKind::Warehouse, p.text.clone()));
+            }
+            self.subject = None;
+            return;
+        }
+        self.draft.approximated.push(Approximation {
+            text: p.text.clone(),
+            became: "a place, not an object".into(),
+            reason:
+                "place nouns (sides, ends, walls, corridors, routes …) name where things are; nothing is added for them"
+                    .into(),
+        });
+        self.subject = None;
+        self.in_place_clause = true;
     }
 
     fn new_group(
@@ -999,14 +812,6 @@ impl<'a> Parser<'a> {
         if !self.draft.relations.contains(&entry) {
             self.draft.relations.push(entry);
         }
-    }
-}
-
-fn set_axis(e: &mut ExplicitSize, axis: &str, v: f64) {
-    match axis {
-        "width" => e.width = Some(v),
-        "depth" => e.depth = Some(v),
-        _ => e.height = Some(v),
     }
 }
 

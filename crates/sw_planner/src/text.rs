@@ -298,6 +298,32 @@ pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
     prev[b.len()]
 }
 
+/// Edit distance counting a swap of two neighbouring letters as one edit ("tabel" is one
+/// edit from "table"): the optimal string alignment distance, for typos.
+pub(crate) fn typo_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    let (n, m) = (a.len(), b.len());
+    let mut d = vec![vec![0usize; m + 1]; n + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
+    }
+    for j in 0..=m {
+        d[0][j] = j;
+    }
+    for i in 1..=n {
+        for j in 1..=m {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            let mut v = (d[i - 1][j] + 1).min(d[i][j - 1] + 1).min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                v = v.min(d[i - 2][j - 2] + 1);
+            }
+            d[i][j] = v;
+        }
+    }
+    d[n][m]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -341,5 +367,8 @@ mod tests {
         assert_eq!(singular("glasses"), "glass");
         assert_eq!(singular("turtlebots"), "turtlebot");
         assert_eq!(edit_distance("conveyer", "conveyor"), 1);
+        assert_eq!(typo_distance("tabel", "table"), 1);
+        assert_eq!(typo_distance("chiar", "chair"), 1);
+        assert_eq!(typo_distance("broom", "room"), 1);
     }
 }

@@ -16,6 +16,17 @@ impl Parser<'_> {
         }
         let (cue, len) = cue_at(&self.toks, i)?;
         let mut end = i + len;
+        // "a clear path to the door": the relation is the place's, not the subject's.
+        if self.in_place_clause && self.subject.is_none() {
+            if cue.takes_target() {
+                let j = target_start(&self.toks, end);
+                if let Some(p) = self.phrase_at(j, true, Bare::Target).ok().flatten() {
+                    end = p.end;
+                }
+            }
+            self.mark(i, end);
+            return Some(end);
+        }
         let mut targets = Vec::new();
         if cue.takes_target() {
             let wanted = if cue == Cue::Between { 2 } else { 1 };
@@ -242,6 +253,7 @@ impl Parser<'_> {
         }
         let definite = self.is_definite(j);
         let p = self.phrase_at(j, true, Bare::Target).ok().flatten()?;
+        let indefinite = p.quantity.is_some() || (j > 0 && matches!(self.word(j - 1), "a" | "an" | "another"));
         let end = p.end;
         // A new group for a plural target without a count ("next to tables") gets two;
         // the pieces of a turned-round relation ("surrounded by screens") the usual default.
@@ -258,7 +270,13 @@ impl Parser<'_> {
                 let r = self.resolve_robot(word.wants, word.kind, generic)?;
                 format!("@robot:{r}")
             }
-            Head::Known(Meaning::Category(cat)) => match self.resolve_group(Some(cat), &raw_head) {
+            // An indefinite phrase ("a filing cabinet") names a new thing unless a group of
+            // its very category exists; only a definite one ("the cabinet") refers by head.
+            Head::Known(Meaning::Category(cat)) => match if definite || !indefinite {
+                self.resolve_group(Some(cat), &raw_head)
+            } else {
+                self.draft.groups.iter().rev().find(|g| g.category == Some(*cat)).map(|g| g.id.clone())
+            } {
                 Some(g) => g,
                 None => {
                     let id = self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit);

@@ -1,0 +1,609 @@
+//! The phrase stage: noun phrases read from the tokens — quantity, modifiers (colours,
+//! materials, size words, stated dimensions, compound nouns), and the head noun — with
+//! what the head is: an object (a catalog category or an unknown noun, a proxy), a robot,
+//! a room, or a place (an edge, an end, a wall, a corridor), which is never an object.
+//!
+//! The head of an English noun phrase is its last noun: in "a robot assembly cell" the
+//! head is "cell" (a room), in "a space heater" "heater" (an unknown noun, made a proxy),
+//! in "the table edge" "edge" (a place, of the table). A noun before another is a
+//! modifier unless the pair is a known compound ("kitchen counter", "desk lamp").
+
+use std::collections::HashMap;
+use std::sync::OnceLock;
+
+use sw_plan::{ExplicitSize, NamedColor, RoomKind, SizeWord};
+
+use crate::PlannerError;
+use crate::cues::cue_at;
+use crate::lexicon::{Lexicon, Meaning, is_head};
+use crate::quantity::{Quantity, quantity_at};
+use crate::tables::{COMPOUND_MODIFIERS, PLACES, rows};
+use crate::text::{Token, TokenKind, number_word, singular, typo_distance};
+
+/// What kind of place a place noun names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum PlaceKind {
+    Edge,
+    End,
+    Start,
+    Side,
+    Corner,
+    Middle,
+    Wall,
+    Door,
+    /// A way through: an aisle, a corridor, a route.
+    Path,
+    Row,
+    Front,
+    Back,
+    Top,
+    Bottom,
+    Floor,
+    Ceiling,
+}
+
+impl PlaceKind {
+    fn parse(s: &str) -> Option<Self> {
+        Some(match s {
+            "edge" => PlaceKind::Edge,
+            "end" => PlaceKind::End,
+            "start" => PlaceKind::Start,
+            "side" => PlaceKind::Side,
+            "corner" => PlaceKind::Corner,
+            "middle" => PlaceKind::Middle,
+            "wall" => PlaceKind::Wall,
+            "door" => PlaceKind::Door,
+            "path" => PlaceKind::Path,
+            "row" => PlaceKind::Row,
+            "front" => PlaceKind::Front,
+            "back" => PlaceKind::Back,
+            "top" => PlaceKind::Top,
+            "bottom" => PlaceKind::Bottom,
+            "floor" => PlaceKind::Floor,
+            "ceiling" => PlaceKind::Ceiling,
+            _ => return None,
+        })
+    }
+}
+
+fn places() -> &'static HashMap<&'static str, PlaceKind> {
+    static P: OnceLock<HashMap<&'static str, PlaceKind>> = OnceLock::new();
+    P.get_or_init(|| rows(PLACES).filter_map(|r| Some((r[0], PlaceKind::parse(r[1])?))).collect())
+}
+
+fn compound_modifiers() -> &'static [&'static str] {
+    static C: OnceLock<Vec<&'static str>> = OnceLock::new();
+    C.get_or_init(|| rows(COMPOUND_MODIFIERS).map(|r| r[0]).collect())
+}
+
+/// The place a word (or two words) at `i` names, and how many tokens.
+pub(crate) fn place_at(toks: &[Token], i: usize) -> Option<(PlaceKind, usize)> {
+    let w = |k: usize| toks.get(k).filter(|t| t.kind == TokenKind::Word).map_or("", |t| t.norm.as_str());
+    let two = format!("{} {}", w(i), w(i + 1));
+    if let Some(k) = places().get(two.as_str()) {
+        return Some((*k, 2));
+    }
+    places().get(w(i)).map(|k| (*k, 1))
+}
+
+/// The head of a noun phrase.
+#[derive(Debug, Clone)]
+pub(crate) enum Head {
+    /// A category, robot or room in the vocabulary.
+    Known(Meaning),
+    /// A place noun: never an object.
+    Place(PlaceKind),
+    /// Words with no meaning in the vocabulary: a proxy candidate (singular label).
+    Unknown(String),
+}
+
+/// A noun phrase: what was counted and said about a head noun.
+#[derive(Debug, Clone)]
+pub(crate) struct NounPhrase {
+    /// Token after the phrase.
+    pub end: usize,
+    pub count: Option<f64>,
+    /// The quantity as read ("several" is not exact; "three more" adds).
+    pub quantity: Option<Quantity>,
+    pub color: Option<NamedColor>,
+    pub sizes: Vec<SizeWord>,
+    pub explicit: ExplicitSize,
+    /// Words before a known head that are not modelled ("storage" in "storage shelves").
+    pub descriptors: Vec<String>,
+    /// A room a modifier names ("the kitchen sink").
+    pub room_modifier: Option<RoomKind>,
+    /// The thing a place belongs to, written as a modifier ("the table edge").
+    pub place_owner: Option<Meaning>,
+    pub head: Head,
+    pub plural: bool,
+    pub text: String,
+    /// The word as typed, when the head was matched despite a typo or by its last word.
+    pub fuzzy_from: Option<String>,
+}
+
+/// When a phrase may consist of unknown words with nothing before them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Bare {
+    No,
+    /// The target of a relation ("on the racks").
+    Target,
+    /// A plural in a list ("… and mugs on the table").
+    PluralInList,
+}
+
+/// What the phrase stage reads with: the vocabulary, the tokens and the room named so
+/// far (some nouns depend on it: a "rack" is a pallet rack in a warehouse).
+pub(crate) struct Phrases<'a> {
+    pub lex: &'a Lexicon,
+    pub toks: &'a [Token],
+    pub text: &'a str,
+    pub room: Option<RoomKind>,
+}
+
+/// One element of the run of nouns a phrase ends with.
+#[derive(Debug, Clone)]
+enum Noun {
+    Known(Meaning, usize, usize),
+    Place(PlaceKind, usize, usize),
+    Unknown(usize),
+    /// A word that only modifies what follows ("standing" in "a standing fan").
+    Modifier(usize),
+}
+
+impl Noun {
+    fn end(&self) -> usize {
+        match self {
+            Noun::Known(_, s, l) | Noun::Place(_, s, l) => s + l,
+            Noun::Unknown(s) | Noun::Modifier(s) => s + 1,
+        }
+    }
+}
+
+impl Phrases<'_> {
+    pub fn word(&self, i: usize) -> &str {
+        self.toks.get(i).filter(|t| t.kind == TokenKind::Word).map_or("", |t| t.norm.as_str())
+    }
+
+    fn words_from(&self, i: usize) -> Vec<&str> {
+        self.toks[i.min(self.toks.len())..]
+            .iter()
+            .take(6)
+            .map_while(|t| {
+                (t.kind == TokenKind::Word || matches!(t.kind, TokenKind::Number(_))).then_some(t.norm.as_str())
+            })
+            .collect()
+    }
+
+    pub fn lookup(&self, i: usize, accept: impl Fn(&Meaning) -> bool) -> Option<(Meaning, usize)> {
+        let words = self.words_from(i);
+        self.lex.longest(&words, accept).map(|(e, n)| (e.meaning.clone(), n))
+    }
+
+    pub fn span(&self, from: usize, to: usize) -> String {
+        match (self.toks.get(from), self.toks.get(to.saturating_sub(1))) {
+            (Some(a), Some(b)) if to > from => self.text[a.start..b.end].to_string(),
+            _ => String::new(),
+        }
+    }
+
+    /// A number followed by an optional unit: (value in metres, tokens used, unit given).
+    /// A foot or inch mark counts as a unit: 6' is 1.83 m, 36" is 0.91 m.
+    pub fn length_at(&self, i: usize) -> Option<(f64, usize, bool)> {
+        let n = self.toks.get(i)?.number()?;
+        if let Some(t) = self.toks.get(i + 1)
+            && t.kind == TokenKind::Other
+            && t.start == self.toks[i].end
+        {
+            match t.norm.as_str() {
+                "'" | "′" | "’" => {
+                    // 6'2" is six feet two inches.
+                    if let (Some(inch), Some(mark)) =
+                        (self.toks.get(i + 2).and_then(Token::number), self.toks.get(i + 3))
+                        && matches!(mark.norm.as_str(), "\"" | "″" | "”")
+                    {
+                        return Some((n * 0.3048 + inch * 0.0254, 4, true));
+                    }
+                    return Some((n * 0.3048, 2, true));
+                }
+                "\"" | "″" | "”" => return Some((n * 0.0254, 2, true)),
+                _ => {}
+            }
+        }
+        match self.lookup(i + 1, |m| matches!(m, Meaning::Unit(_))) {
+            Some((Meaning::Unit(f), len)) => Some((n * f, 1 + len, true)),
+            _ => Some((n, 1, false)),
+        }
+    }
+
+    /// "2 m tall", "1.5 m wide", "80 cm deep": one explicit dimension.
+    pub fn axis_length_at(&self, i: usize) -> Option<(f64, Axis, usize, String)> {
+        let (v, len, _) = self.length_at(i)?;
+        // "a 2-metre-long bench" is tokenised "2", "metre-long".
+        let axis = Axis::of(self.word(i + len))?;
+        Some((v, axis, len + 1, self.span(i, i + len + 1)))
+    }
+
+    /// A word that is not in the vocabulary at all and does not start a relation cue.
+    pub fn is_plain_unknown_word(&self, i: usize) -> bool {
+        let Some(t) = self.toks.get(i) else {
+            return false;
+        };
+        if t.kind != TokenKind::Word || number_word(&t.norm).is_some() {
+            return false;
+        }
+        if cue_at(self.toks, i).is_some() || place_at(self.toks, i).is_some() {
+            return false;
+        }
+        self.lookup(i, |_| true).is_none()
+    }
+
+    /// A word that can be the head of an unknown noun phrase: not an adverb ("neatly"),
+    /// a participle ("leaving") or a past form ("placed").
+    fn can_be_noun(&self, i: usize) -> bool {
+        let w = self.word(i);
+        !(w.ends_with("ly") || w.ends_with("ing") || (w.ends_with("ed") && w.len() > 4))
+    }
+
+    /// A word that only modifies the noun after it: a participle or an adjective the
+    /// vocabulary does not model ("standing", "folding", "rolling").
+    fn is_modifier_word(&self, i: usize) -> bool {
+        let w = self.word(i);
+        let participle = (w.ends_with("ing") && w.len() > 5) || (w.ends_with("ed") && w.len() > 4);
+        (participle && cue_at(self.toks, i).is_none()) || compound_modifiers().contains(&w)
+    }
+
+    /// True where a phrase ends: punctuation, a conjunction, "with", a relation cue, a
+    /// number, a verb or other vocabulary word that is no noun.
+    fn boundary(&self, i: usize) -> bool {
+        let Some(t) = self.toks.get(i) else {
+            return true;
+        };
+        if t.kind != TokenKind::Word {
+            return true;
+        }
+        if cue_at(self.toks, i).is_some() || number_word(&t.norm).is_some() {
+            return true;
+        }
+        matches!(self.lookup(i, |_| true), Some((Meaning::Filler | Meaning::Count(_) | Meaning::Unit(_), _)))
+    }
+
+    /// A typo-tolerant match of one unknown word against head nouns: the first letter
+    /// kept (a typo rarely changes it, and "broom" is no "room"), one edit in a word of
+    /// five to seven letters, two from eight.
+    pub fn fuzzy(&self, word: &str) -> Option<Meaning> {
+        let limit = match word.chars().count() {
+            0..=4 => return None,
+            5..=7 => 1,
+            _ => 2,
+        };
+        let first = word.chars().next()?;
+        let mut best: Option<(usize, &str, &Meaning)> = None;
+        for (w, m) in self.lex.head_words() {
+            if !w.starts_with(first) || w.len().abs_diff(word.len()) > limit {
+                continue;
+            }
+            let d = typo_distance(word, w);
+            if d <= limit && best.is_none_or(|(bd, bw, _)| d < bd || (d == bd && w < bw)) {
+                best = Some((d, w, m));
+            }
+        }
+        best.map(|(_, _, m)| m.clone())
+    }
+
+    /// A catalog category a one-word noun names by the last word of its name: "bench" for
+    /// a workbench. "rack" and "workstation" depend on the room: pallet racks and
+    /// workbenches in industrial rooms, shelves and desks elsewhere.
+    pub fn category_by_head(&self, label: &str) -> Option<&'static str> {
+        if label.contains(' ') || label.len() < 4 {
+            return None;
+        }
+        let industrial = self.room.is_some_and(|k| {
+            matches!(k, RoomKind::Warehouse | RoomKind::LoadingDock | RoomKind::Factory | RoomKind::StorageRoom)
+        });
+        if label == "rack" {
+            return Some(if industrial { "pallet_rack" } else { "shelf" });
+        }
+        if matches!(label, "workstation" | "station" | "workplace") {
+            let office =
+                self.room.is_some_and(|k| matches!(k, RoomKind::Office | RoomKind::Classroom | RoomKind::LivingRoom));
+            return Some(if office { "desk" } else { "workbench" });
+        }
+        sw_catalog::categories().iter().find_map(|c| {
+            let last = c.display.split_whitespace().last()?;
+            (last != label && last.ends_with(label) && label.len() >= 5).then_some(c.name)
+        })
+    }
+
+    /// The run of nouns (and noun modifiers) at `k`: at most five.
+    fn nouns_at(&self, mut k: usize, after_quantity: bool) -> Vec<Noun> {
+        let mut out = Vec::new();
+        while out.len() < 5 {
+            if let Some((m, len)) = self.lookup(k, is_head) {
+                out.push(Noun::Known(m, k, len));
+                k += len;
+                continue;
+            }
+            if let Some((p, len)) = place_at(self.toks, k) {
+                out.push(Noun::Place(p, k, len));
+                k += len;
+                continue;
+            }
+            // "three cans", "two stands": a counted word the vocabulary reads as a verb is a
+            // noun here.
+            let counted_function_word = after_quantity
+                && out.is_empty()
+                && self.toks.get(k).is_some_and(|t| t.kind == TokenKind::Word)
+                && singular(self.word(k)) != self.word(k)
+                && matches!(self.lookup(k, |_| true), Some((Meaning::Filler, 1)))
+                && self.boundary(k + 1);
+            if (self.is_plain_unknown_word(k) && self.can_be_noun(k)) || counted_function_word {
+                out.push(Noun::Unknown(k));
+                k += 1;
+                continue;
+            }
+            if self.is_modifier_word(k) && !self.boundary(k + 1) {
+                out.push(Noun::Modifier(k));
+                k += 1;
+                continue;
+            }
+            break;
+        }
+        // Trailing modifiers modify nothing.
+        while matches!(out.last(), Some(Noun::Modifier(_))) {
+            out.pop();
+        }
+        out
+    }
+
+    /// A count, modifiers and a head noun starting at `i`.
+    pub fn noun_phrase(&self, i: usize, allow_unknown: bool, bare: Bare) -> Result<Option<NounPhrase>, PlannerError> {
+        let mut j = i;
+        let quantity = quantity_at(self.toks, j);
+        if let Some(q) = quantity {
+            j += q.len;
+        }
+        let count = quantity.map(|q| q.value);
+        let mut color = None;
+        let mut sizes = Vec::new();
+        let mut explicit = ExplicitSize::default();
+        let mut fuzzy_from: Option<String> = None;
+        loop {
+            if let Some((v, axis, len, text)) = self.axis_length_at(j) {
+                check_positive(v, &text)?;
+                axis.set(&mut explicit, v);
+                j += len;
+                // "2 m wide, 1 m deep" / "2 m wide and 1 m deep".
+                let joined = self.toks.get(j).is_some_and(|t| t.kind == TokenKind::Comma) || self.word(j) == "and";
+                if joined && self.axis_length_at(j + 1).is_some() {
+                    j += 1;
+                }
+                continue;
+            }
+            match self.lookup(j, |m| matches!(m, Meaning::Color(..) | Meaning::Size(_) | Meaning::Material(..))) {
+                Some((Meaning::Color(name, rgba), len)) if !self.boundary_after_modifier(j + len) => {
+                    color = Some(NamedColor { name: name.to_string(), rgba });
+                    j += len;
+                }
+                Some((Meaning::Size(s), len)) => {
+                    sizes.push(s);
+                    j += len;
+                }
+                Some((Meaning::Material(name, rgba), len)) if !self.boundary_after_modifier(j + len) => {
+                    if color.is_none()
+                        && let Some(rgba) = rgba
+                    {
+                        color = Some(NamedColor { name: name.to_string(), rgba });
+                    }
+                    j += len;
+                }
+                _ => break,
+            }
+        }
+        let has_modifier = count.is_some() || color.is_some() || !sizes.is_empty() || !explicit.is_empty();
+        let nouns = self.nouns_at(j, count.is_some());
+        let Some((head, head_at, head_len, mods)) = self.pick_head(&nouns, allow_unknown, has_modifier, bare) else {
+            return Ok(None);
+        };
+        let mut descriptors = Vec::new();
+        let mut room_modifier = None;
+        let mut place_owner = None;
+        for m in &mods {
+            match m {
+                Noun::Known(Meaning::Room(k) | Meaning::RoomAisle(k), ..) => room_modifier = Some(*k),
+                Noun::Known(m @ (Meaning::Category(_) | Meaning::Robot(_)), s, l) => {
+                    if matches!(head, Head::Place(_)) {
+                        place_owner = Some(m.clone());
+                    }
+                    descriptors.push(self.span(*s, s + l).to_lowercase());
+                }
+                Noun::Known(_, s, l) | Noun::Place(_, s, l) => descriptors.push(self.span(*s, s + l).to_lowercase()),
+                Noun::Unknown(s) | Noun::Modifier(s) => descriptors.push(self.word(*s).to_string()),
+            }
+        }
+        let mut end = head_at + head_len;
+        let last = self.word(end - 1).to_string();
+        let plural = singular(&last) != last;
+        let head = match head {
+            Head::Unknown(label) => {
+                let words: Vec<&str> = label.split(' ').collect();
+                let n = words.len();
+                match self.fuzzy(&label) {
+                    Some(m) if n == 1 && self.fuzzy_allowed(bare, &nouns) => {
+                        fuzzy_from = Some(last.clone());
+                        Head::Known(m)
+                    }
+                    _ => match self.category_by_head(&label) {
+                        Some(cat) if n == 1 => {
+                            fuzzy_from = Some(last.clone());
+                            Head::Known(Meaning::Category(cat))
+                        }
+                        _ => Head::Unknown(label),
+                    },
+                }
+            }
+            h => h,
+        };
+        // "UR5e arm", "TurtleBot robots": absorb the generic word after a robot name.
+        if matches!(head, Head::Known(Meaning::Robot(_)))
+            && matches!(self.word(end), "arm" | "arms" | "robot" | "robots" | "cobot" | "cobots" | "manipulator")
+        {
+            end += 1;
+        }
+        // "a table 2 m long", "a bench (2 m long)".
+        while let Some((v, axis, len, text)) = self.axis_length_at(end) {
+            check_positive(v, &text)?;
+            axis.set(&mut explicit, v);
+            end += len;
+        }
+        let text = self.span(i, end);
+        Ok(Some(NounPhrase {
+            end,
+            count,
+            quantity,
+            color,
+            sizes,
+            explicit,
+            descriptors,
+            room_modifier,
+            place_owner,
+            head,
+            plural,
+            text,
+            fuzzy_from,
+        }))
+    }
+
+    /// A colour or material word followed by no noun is itself the noun ("an orange").
+    fn boundary_after_modifier(&self, i: usize) -> bool {
+        self.boundary(i) && self.lookup(i, |m| matches!(m, Meaning::Color(..) | Meaning::Size(_))).is_none()
+    }
+
+    fn fuzzy_allowed(&self, _bare: Bare, nouns: &[Noun]) -> bool {
+        nouns.len() == 1
+    }
+
+    /// The head of a run of nouns and the nouns that modify it: (head, its first token,
+    /// its length, modifiers).
+    fn pick_head(
+        &self,
+        nouns: &[Noun],
+        allow_unknown: bool,
+        has_modifier: bool,
+        bare: Bare,
+    ) -> Option<(Head, usize, usize, Vec<Noun>)> {
+        let last_known = nouns.iter().rposition(|n| matches!(n, Noun::Known(..) | Noun::Place(..)));
+        let unknown_tail: Vec<usize> = nouns
+            .iter()
+            .skip(last_known.map_or(0, |k| k + 1))
+            .filter_map(|n| match n {
+                Noun::Unknown(s) | Noun::Modifier(s) => Some(*s),
+                _ => None,
+            })
+            .collect();
+        if let Some(k) = last_known {
+            let compound = !unknown_tail.is_empty() && {
+                // A known noun that names a kind of what follows ("table saw", "space
+                // heater", "bench vice"), where the unknown noun ends the phrase.
+                let tail_end = nouns.last().map_or(0, Noun::end);
+                let modifier_noun = match &nouns[k] {
+                    Noun::Known(Meaning::Room(_) | Meaning::RoomWord | Meaning::RoomAisle(_), ..) => true,
+                    Noun::Known(_, s, l) | Noun::Place(_, s, l) => {
+                        let w = singular(self.word(s + l - 1));
+                        compound_modifiers().contains(&w.as_str())
+                            && singular(self.word(s + l - 1)) == self.word(s + l - 1)
+                    }
+                    _ => false,
+                };
+                modifier_noun && allow_unknown && self.boundary(tail_end)
+            };
+            if !compound {
+                let (head, s, l) = match &nouns[k] {
+                    Noun::Known(m, s, l) => (Head::Known(m.clone()), *s, *l),
+                    Noun::Place(p, s, l) => (Head::Place(*p), *s, *l),
+                    _ => return None,
+                };
+                return Some((head, s, l, nouns[..k].to_vec()));
+            }
+            // The compound's words, singular, as the proxy's label.
+            let first = match &nouns[k] {
+                Noun::Known(_, s, _) | Noun::Place(_, s, _) => *s,
+                _ => return None,
+            };
+            let end = nouns.last().map_or(first, Noun::end);
+            let label = self.label(first, end);
+            return Some((Head::Unknown(label), first, end - first, nouns[..k].to_vec()));
+        }
+        // Only unknown words: a proxy, when something marks them as a noun phrase.
+        if !allow_unknown || !(has_modifier || bare != Bare::No) || unknown_tail.is_empty() {
+            return None;
+        }
+        let first = match nouns.first() {
+            Some(Noun::Unknown(s) | Noun::Modifier(s)) => *s,
+            _ => return None,
+        };
+        let end = nouns.last().map_or(first, Noun::end).min(first + 4);
+        let last = self.word(end - 1);
+        let plural = singular(last) != last;
+        // A bare plural in a list ("… and mugs on the table") is an object only when it is
+        // short and a relation follows it.
+        let known_typo = end - first == 1 && self.fuzzy(&singular(last)).is_some();
+        if bare == Bare::PluralInList
+            && !has_modifier
+            && (!plural || end - first > 2 || (cue_at(self.toks, end).is_none() && !known_typo))
+        {
+            return None;
+        }
+        Some((Head::Unknown(self.label(first, end)), first, end - first, Vec::new()))
+    }
+
+    /// Words `from..to` lowercase, the last singular: a proxy's label.
+    fn label(&self, from: usize, to: usize) -> String {
+        let mut words: Vec<String> = (from..to).map(|k| self.word(k).to_string()).filter(|w| !w.is_empty()).collect();
+        if let Some(last) = words.last_mut() {
+            *last = singular(last);
+        }
+        words.join(" ")
+    }
+}
+
+fn check_positive(v: f64, text: &str) -> Result<(), PlannerError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(PlannerError::InvalidSize(format!("sizes must be positive lengths, got '{text}'")))
+    }
+}
+
+/// The axis a dimension word names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Axis {
+    /// The longer side on the floor ("long", "length").
+    Length,
+    Width,
+    Depth,
+    Height,
+}
+
+impl Axis {
+    fn of(word: &str) -> Option<Axis> {
+        let w = word.rsplit('-').next().unwrap_or(word);
+        Some(match w {
+            "tall" | "high" | "height" => Axis::Height,
+            "wide" | "width" | "across" => Axis::Width,
+            "long" | "length" => Axis::Length,
+            "deep" | "depth" => Axis::Depth,
+            _ => return None,
+        })
+    }
+
+    /// Records the value: a length and a width are both the width of the catalog's box
+    /// (its long side along X); the category's own axes are sorted out where the size
+    /// reaches the asset.
+    pub fn set(self, e: &mut ExplicitSize, v: f64) {
+        match self {
+            Axis::Length | Axis::Width => e.width = Some(v),
+            Axis::Depth => e.depth = Some(v),
+            Axis::Height => e.height = Some(v),
+        }
+    }
+}
