@@ -34,6 +34,16 @@ pub(crate) enum Cue {
     /// "picking from", "tending", "working at", "at": an arm works at the target.
     Tend,
     Floor,
+    /// "in the sink", "inside the cabinet", "into the tray": within the target.
+    In,
+    /// "on either side of", "flanking": one on each of two opposite sides of the target.
+    EachSide,
+    /// "opposite the sofa", "across from the desk", "facing the TV".
+    FacingTarget,
+    /// "above the sink", "over the desk".
+    Above,
+    /// "on the edge of the table" (read from a place noun, not a cue phrase).
+    OnEdge,
 }
 
 impl Cue {
@@ -51,6 +61,11 @@ impl Cue {
                 | Cue::Around
                 | Cue::EndOf
                 | Cue::Tend
+                | Cue::In
+                | Cue::EachSide
+                | Cue::FacingTarget
+                | Cue::Above
+                | Cue::OnEdge
         )
     }
 }
@@ -149,6 +164,28 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
     let t = toks.get(i)?;
     if t.kind != TokenKind::Word {
         return None;
+    }
+    if let Some(n) = any_of(
+        toks,
+        i,
+        &[
+            "on either side of",
+            "on each side of",
+            "on both sides of",
+            "on opposite sides of",
+            "at either side of",
+            "at each side of",
+            "at both sides of",
+            "at either end of",
+            "either side of",
+            "each side of",
+            "both sides of",
+            "to either side of",
+            "flanking",
+            "flanked by",
+        ],
+    ) {
+        return Some((Cue::EachSide, n));
     }
     if let Some(n) = any_of(
         toks,
@@ -582,6 +619,25 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
         let j = skip_determiners(toks, i + n);
         if toks.get(j).is_some_and(|w| w.kind == TokenKind::Word) {
             return Some((Cue::Tend, n));
+        }
+    }
+    if let Some(n) = any_of(
+        toks,
+        i,
+        &["opposite", "across from", "directly opposite", "right opposite", "opposite to", "across the room from"],
+    ) {
+        return Some((Cue::FacingTarget, n));
+    }
+    if let Some(n) = any_of(toks, i, &["above", "over", "directly above", "hanging above", "mounted above"]) {
+        let j = skip_determiners(toks, i + n);
+        if toks.get(j).is_some_and(|w| w.kind == TokenKind::Word) {
+            return Some((Cue::Above, n));
+        }
+    }
+    if let Some(n) = any_of(toks, i, &["in", "inside", "into", "within", "inside of", "in the inside of"]) {
+        let j = skip_determiners(toks, i + n);
+        if toks.get(j).is_some_and(|w| w.kind == TokenKind::Word) {
+            return Some((Cue::In, n));
         }
     }
     if matches!(t.norm.as_str(), "around" | "surrounding" | "encircling" | "round") {

@@ -16,6 +16,7 @@ mod phrase;
 mod priors;
 mod quantity;
 pub mod refine;
+mod said;
 mod tables;
 mod text;
 pub mod vocab;

@@ -15,6 +15,7 @@ use crate::text::{Token, TokenKind, number_word, singular};
 mod discourse;
 mod relate;
 mod support;
+mod title;
 
 /// What the scan found, before defaults and resolution.
 #[derive(Debug, Default)]
@@ -120,6 +121,12 @@ pub(crate) struct Parser<'a> {
     /// The phrase being taken as a target is the subject of a turned-round relation
     /// ("surrounded by screens"): a plural without a count gets the subject's default.
     taking_pieces: bool,
+    /// The place a relation's target named ("the edge of the table"), for `apply`.
+    place_of: Option<(PlaceKind, Option<String>)>,
+    /// Tokens before this index are a title: rooms only, no objects.
+    title_end: usize,
+    /// Robots a title named ("Bin picking with a UR5e:"), kept when the body names none.
+    title_robots: Vec<RobotDraft>,
     /// The clause is about a place ("a clear path to the door"): its relations are the
     /// place's, not the subject's.
     in_place_clause: bool,
@@ -168,6 +175,9 @@ impl<'a> Parser<'a> {
             support_taken: 0,
             taking_pieces: false,
             in_place_clause: false,
+            place_of: None,
+            title_end: 0,
+            title_robots: Vec::new(),
         }
     }
 
@@ -227,6 +237,10 @@ impl<'a> Parser<'a> {
     pub fn run(&mut self) -> Result<(), PlannerError> {
         let mut i = 0;
         while i < self.toks.len() {
+            if let Some(end) = self.title_at(i) {
+                self.title_end = end;
+                self.used[end] = true;
+            }
             let kind = self.toks[i].kind.clone();
             match kind {
                 TokenKind::Stop => {
@@ -325,6 +339,13 @@ impl<'a> Parser<'a> {
             i += 1;
         }
         self.end_sentence();
+        if self.draft.robots.is_empty() {
+            let robots = std::mem::take(&mut self.title_robots);
+            self.draft.robots.extend(robots);
+        }
+        // A title's words name the scene.
+        let title_end = self.title_end.min(self.used.len());
+        self.mark(0, title_end);
         // Articles carry no meaning of their own.
         for (i, t) in self.toks.iter().enumerate() {
             if t.kind == TokenKind::Word && matches!(t.norm.as_str(), "a" | "an" | "the") {
@@ -552,6 +573,9 @@ impl<'a> Parser<'a> {
             self.draft.room = Some((k, p.text.clone()));
         }
 
+        if start < self.title_end && self.title_phrase(&p) {
+            return;
+        }
         match p.head.clone() {
             Head::Known(Meaning::Room(kind)) | Head::Known(Meaning::RoomAisle(kind)) => {
                 if matches!(p.head, Head::Known(Meaning::RoomAisle(_))) {

@@ -318,6 +318,12 @@ impl Phrases<'_> {
     fn nouns_at(&self, mut k: usize, after_quantity: bool) -> Vec<Noun> {
         let mut out = Vec::new();
         while out.len() < 5 {
+            // Walls, windows and doors are places even where the catalog has a model of one.
+            if let Some((p @ (PlaceKind::Wall | PlaceKind::Door), len)) = place_at(self.toks, k) {
+                out.push(Noun::Place(p, k, len));
+                k += len;
+                continue;
+            }
             if let Some((m, len)) = self.lookup(k, is_head) {
                 out.push(Noun::Known(m, k, len));
                 k += len;

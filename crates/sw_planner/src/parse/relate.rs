@@ -7,6 +7,8 @@ use sw_plan::{Mount, RelationKind};
 use super::{Bare, Head, Parser, Subject};
 use crate::cues::{Cue, cue_at, target_start};
 use crate::lexicon::Meaning;
+use crate::phrase::PlaceKind;
+use crate::said::{Said, is_set_into};
 use crate::text::singular;
 
 impl Parser<'_> {
@@ -253,6 +255,41 @@ impl Parser<'_> {
         }
         let definite = self.is_definite(j);
         let p = self.phrase_at(j, true, Bare::Target).ok().flatten()?;
+        // "the edge of the table", "the far end of the conveyor", "the middle of the room":
+        // a place of a thing; the relation is to the thing, qualified by the place.
+        if let Head::Place(kind) = p.head {
+            if self.word(p.end) == "of" {
+                let k = target_start(&self.toks, p.end + 1);
+                // "at the end of each of two aisles".
+                let k = if self.word(k) == "of" { target_start(&self.toks, k + 1) } else { k };
+                if let Some(q) = self.phrase_at(k, true, Bare::Target).ok().flatten()
+                    && let Head::Place(inner) = q.head
+                {
+                    // A place of a place ("the end of the aisle"): no object, the outer kind.
+                    self.mark(j, q.end);
+                    self.place_of = Some((kind, None));
+                    let _ = inner;
+                    return Some((String::from("@place"), q.end));
+                }
+                let room = self.phrase_at(k, true, Bare::Target).ok().flatten().filter(|q| {
+                    matches!(q.head, Head::Known(Meaning::Room(_) | Meaning::RoomWord | Meaning::RoomAisle(_)))
+                });
+                if let Some(q) = room {
+                    self.mark(j, q.end);
+                    self.place_of = Some((kind, None));
+                    return Some((String::from("@room"), q.end));
+                }
+                let (inner, end) = self.target_at(k, cue)?;
+                self.mark(j, end);
+                self.place_of = Some((kind, Some(inner.clone())));
+                return Some((inner, end));
+            }
+            // "a place, not an object": a bare place ("near the window") is where the room's
+            // walls are.
+            self.mark(j, p.end);
+            self.place_of = Some((kind, None));
+            return Some((String::from("@place"), p.end));
+        }
         let indefinite = p.quantity.is_some() || (j > 0 && matches!(self.word(j - 1), "a" | "an" | "another"));
         let end = p.end;
         // A new group for a plural target without a count ("next to tables") gets two;
@@ -264,7 +301,9 @@ impl Parser<'_> {
         let raw_head = p.text.split_whitespace().last().map(|h| singular(&h.to_lowercase())).unwrap_or_default();
         let id = match &p.head {
             // "the cell", "the work cell": the arm's work, or the arm.
-            Head::Known(Meaning::RoomWord) if p.text.to_lowercase().contains("cell") => self.resolve_cell()?,
+            Head::Known(Meaning::RoomWord) if p.text.to_lowercase().contains("cell") && *cue != Cue::In => {
+                self.resolve_cell()?
+            }
             Head::Known(Meaning::Robot(word)) => {
                 let generic = !word.exact;
                 let r = self.resolve_robot(word.wants, word.kind, generic)?;
@@ -360,6 +399,16 @@ impl Parser<'_> {
     }
 
     pub(super) fn apply(&mut self, subject: &Subject, cue: Cue, targets: Vec<String>) {
+        // A cue whose target was a place ("on the edge of the table", "at the end of the
+        // conveyor", "in the corners of the room") says something else.
+        if let Some((place, of)) = self.place_of.take()
+            && let Some((cue, targets)) = self.placed(&cue, place, of, &targets)
+        {
+            return self.apply(subject, cue, targets);
+        }
+        if targets.iter().any(|t| t.starts_with("@place") || t.starts_with("@room")) {
+            return;
+        }
         match subject {
             Subject::Robot(idx) => self.apply_to_robot(*idx, cue, targets),
             Subject::Group(g) => {
@@ -411,6 +460,18 @@ impl Parser<'_> {
                         RelationKind::InFrontOf { target: t.clone() }
                     }
                     (Cue::Tend, [t]) => RelationKind::NextTo { target: t.clone() },
+                    (Cue::In, [t]) => {
+                        let (sc, tc) = (self.category_of(&subject), self.category_of(t));
+                        if is_set_into(sc, tc) { Said::SetInto(t.clone()) } else { Said::Inside(t.clone()) }.kind()
+                    }
+                    (Cue::EachSide, [t]) => {
+                        self.one_each_side(&subject);
+                        Said::OnEachSideOf(t.clone()).kind()
+                    }
+                    (Cue::FacingTarget, [t]) => Said::Facing(t.clone()).kind(),
+                    (Cue::OnEdge, [t]) => Said::OnEdgeOf(t.clone()).kind(),
+                    (Cue::EndOf, [t]) if !self.group_is_plural_row(t) => Said::AtEndOf(t.clone()).kind(),
+                    (Cue::Above, [t]) => RelationKind::Near { target: t.clone() },
                     (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
                     (Cue::Row, _) => RelationKind::InRow,
                     (Cue::Rows(n), _) => RelationKind::InRows { n },
@@ -432,6 +493,61 @@ impl Parser<'_> {
                 }
                 self.relate(&subject, kind);
             }
+        }
+    }
+
+    /// The cue a place qualifies: (cue, place, the thing it is a place of, targets) to what
+    /// is said of the subject. `None` when the place changes nothing.
+    fn placed(
+        &self,
+        cue: &Cue,
+        place: PlaceKind,
+        of: Option<String>,
+        targets: &[String],
+    ) -> Option<(Cue, Vec<String>)> {
+        let room = targets.first().is_some_and(|t| t == "@room");
+        let thing = of.map(|t| vec![t]);
+        Some(match (place, thing) {
+            (PlaceKind::Edge, Some(t)) => (Cue::OnEdge, t),
+            (PlaceKind::End | PlaceKind::Start, Some(t)) => (Cue::EndOf, t),
+            (PlaceKind::End | PlaceKind::Start, None) if room => (Cue::End(None), Vec::new()),
+            (PlaceKind::Side, Some(t)) => (Cue::NextTo, t),
+            (PlaceKind::Front, Some(t)) => (Cue::InFront, t),
+            (PlaceKind::Back, Some(t)) => (Cue::Behind, t),
+            (PlaceKind::Top | PlaceKind::Bottom, Some(t)) => (Cue::On, t),
+            (PlaceKind::Middle, Some(t)) if *cue == Cue::On => (Cue::On, t),
+            (PlaceKind::Middle | PlaceKind::Corner, Some(t)) => (Cue::Near, t),
+            (PlaceKind::Middle, None) => (Cue::Center, Vec::new()),
+            (PlaceKind::Corner, None) => (Cue::Corner(None), Vec::new()),
+            (PlaceKind::Wall, None) => (Cue::Wall(None), Vec::new()),
+            (PlaceKind::Door, None) => (Cue::Door, Vec::new()),
+            (PlaceKind::Floor, None) => (Cue::Floor, Vec::new()),
+            _ => return None,
+        })
+    }
+
+    /// A group standing in a row (or several of them): its end is the row's end.
+    fn group_is_plural_row(&self, id: &str) -> bool {
+        self.group_is_plural(id)
+            || self
+                .draft
+                .relations
+                .iter()
+                .any(|(s, k)| s == id && matches!(k, RelationKind::InRow | RelationKind::InRows { .. }))
+    }
+
+    fn category_of(&self, id: &str) -> Option<&'static str> {
+        self.group(id).and_then(|g| g.category)
+    }
+
+    /// "a chair on either side of the desk": one on each side, so two of a single thing.
+    fn one_each_side(&mut self, id: &str) {
+        if let Some(g) = self.draft.groups.iter_mut().find(|g| g.id == id)
+            && g.count_rule.is_none()
+            && g.count.is_some_and(|c| c <= 1.0)
+        {
+            g.count = Some(2.0);
+            g.plural = true;
         }
     }
 
@@ -496,7 +612,7 @@ impl Parser<'_> {
                 self.set_mount(idx, Mount::Floor);
                 return;
             }
-            (Cue::On, [t]) => {
+            (Cue::On | Cue::OnEdge, [t]) => {
                 self.set_mount(idx, Mount::OnSurface { target: t.clone() });
                 return;
             }
@@ -514,7 +630,9 @@ impl Parser<'_> {
             (Cue::Near, [t]) => RelationKind::Near { target: t.clone() },
             (Cue::InFront, [t]) => RelationKind::InFrontOf { target: t.clone() },
             (Cue::Behind, [t]) => RelationKind::Behind { target: t.clone() },
-            (Cue::Around, [t]) => RelationKind::Near { target: t.clone() },
+            (Cue::Around, [t]) | (Cue::FacingTarget, [t]) => RelationKind::Near { target: t.clone() },
+            (Cue::EachSide, [t]) => RelationKind::NextTo { target: t.clone() },
+            (Cue::In | Cue::Above, _) => return,
             (Cue::EndOf, [t]) => RelationKind::AtEndOfRow { target: t.clone() },
             (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
             (Cue::Door, _) => RelationKind::NearDoor,
@@ -582,5 +700,10 @@ pub(super) fn cue_name(c: &Cue) -> &'static str {
         Cue::Stacked => "stacked",
         Cue::Tend => "working at",
         Cue::Floor => "on the floor",
+        Cue::In => "in",
+        Cue::EachSide => "on either side of",
+        Cue::FacingTarget => "opposite",
+        Cue::Above => "above",
+        Cue::OnEdge => "on the edge of",
     }
 }

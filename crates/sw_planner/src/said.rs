@@ -1,0 +1,42 @@
+//! What the reader says with the relations issue 20 adds to the vocabulary (inside, set
+//! into, at the end of, on the edge of, on each side of, facing …), in one place: each
+//! is written as the plan's relation that states it, or — while the plan has no such
+//! relation — the nearest one it has, which the layout keeps and the report measures.
+
+use sw_plan::RelationKind;
+
+/// A relation as the reader understood it, before it is written into the plan.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Said {
+    /// Within a container, a cabinet or a shelf's levels ("cups in the sink").
+    Inside(String),
+    /// A sink or hob set into a counter run ("a hob in the worktop").
+    SetInto(String),
+    /// Beyond an end of the target ("a bin at the end of the conveyor").
+    AtEndOf(String),
+    /// Resting on the target near an edge of its top.
+    OnEdgeOf(String),
+    /// On two opposite sides of the target ("a chair on either side of the desk").
+    OnEachSideOf(String),
+    /// Front turned to the target ("a sofa facing the TV", "opposite the desk").
+    Facing(String),
+}
+
+impl Said {
+    /// The plan's relation for what was said.
+    pub fn kind(self) -> RelationKind {
+        match self {
+            Said::Inside(target) | Said::SetInto(target) | Said::OnEdgeOf(target) => RelationKind::On { target },
+            Said::AtEndOf(target) => RelationKind::AtEndOfRow { target },
+            Said::OnEachSideOf(target) => RelationKind::NextTo { target },
+            Said::Facing(target) => RelationKind::InFrontOf { target },
+        }
+    }
+}
+
+/// Categories a thing is set into rather than put in ("a sink in the counter").
+pub(crate) fn is_set_into(subject: Option<&str>, target: Option<&str>) -> bool {
+    let inset = subject.and_then(sw_catalog::find).is_some_and(|c| matches!(c.name, "sink" | "stove"));
+    let run = target.and_then(sw_catalog::find).is_some_and(|c| c.name == "counter" || c.has_tag("counter"));
+    inset && run
+}
