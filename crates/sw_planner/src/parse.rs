@@ -260,6 +260,10 @@ impl<'a> Parser<'a> {
                 i = next;
                 continue;
             }
+            if let Some(next) = self.try_trailing_size(i)? {
+                i = next;
+                continue;
+            }
             if let Some(next) = self.try_collective(i) {
                 i = next;
                 continue;
@@ -511,6 +515,25 @@ impl<'a> Parser<'a> {
         Ok(Some(end))
     }
 
+    /// "a chair, 2.2 m long", "a fridge that is 0.7 m wide", "a bench (2 m long, 80 cm
+    /// deep)": a dimension after its phrase is the current group's. Returns the index after.
+    fn try_trailing_size(&mut self, i: usize) -> Result<Option<usize>, PlannerError> {
+        let Some(Subject::Group(g)) = self.subject.clone() else {
+            return Ok(None);
+        };
+        let Some((v, axis, len, text)) = self.phrases().axis_length_at(i) else {
+            return Ok(None);
+        };
+        if !(v.is_finite() && v > 0.0) {
+            return Err(PlannerError::InvalidSize(format!("sizes must be positive lengths, got '{text}'")));
+        }
+        if let Some(group) = self.draft.groups.iter_mut().find(|x| x.id == g) {
+            axis.set(&mut group.explicit, v);
+        }
+        self.mark(i, i + len);
+        Ok(Some(i + len))
+    }
+
     fn unit_factor(&self, i: usize) -> Option<f64> {
         match self.lookup(i, |m| matches!(m, Meaning::Unit(_))) {
             Some((Meaning::Unit(f), _)) => Some(f),
@@ -524,7 +547,13 @@ impl<'a> Parser<'a> {
         while j > 0 {
             j -= 1;
             let w = self.word(j);
-            if matches!(w, "of" | "measuring" | "is" | "about" | "approximately" | "sized" | "with" | "that" | "size") {
+            let punctuation = matches!(self.toks[j].kind, TokenKind::Comma | TokenKind::Other);
+            if punctuation
+                || matches!(
+                    w,
+                    "of" | "measuring" | "is" | "about" | "approximately" | "sized" | "with" | "that" | "size"
+                )
+            {
                 continue;
             }
             let words = self.words_from(j);
@@ -714,12 +743,20 @@ impl<'a> Parser<'a> {
             self.subject = None;
             return;
         }
+        let (became, reason) = match kind {
+            PlaceKind::Person => ("a person, not an object", "people are not modelled; nothing is added for them"),
+            PlaceKind::Shape => {
+                ("an arrangement, not an object", "a shape names how things stand; nothing is added for it")
+            }
+            _ => (
+                "a place, not an object",
+                "place nouns (sides, ends, walls, corridors, routes …) name where things are; nothing is added for them",
+            ),
+        };
         self.draft.approximated.push(Approximation {
             text: p.text.clone(),
-            became: "a place, not an object".into(),
-            reason:
-                "place nouns (sides, ends, walls, corridors, routes …) name where things are; nothing is added for them"
-                    .into(),
+            became: became.into(),
+            reason: reason.into(),
         });
         self.subject = None;
         self.in_place_clause = true;

@@ -17,7 +17,7 @@ use crate::PlannerError;
 use crate::cues::cue_at;
 use crate::lexicon::{Lexicon, Meaning, is_head};
 use crate::quantity::{Quantity, quantity_at};
-use crate::tables::{COMPOUND_MODIFIERS, PLACES, rows};
+use crate::tables::{COMPOUND_MODIFIERS, PEOPLE, PLACES, rows};
 use crate::text::{Token, TokenKind, number_word, singular, typo_distance};
 
 /// What kind of place a place noun names.
@@ -40,6 +40,10 @@ pub(crate) enum PlaceKind {
     Bottom,
     Floor,
     Ceiling,
+    /// An arrangement's shape: a U, a semicircle, a grid.
+    Shape,
+    /// A person: people are not modelled.
+    Person,
 }
 
 impl PlaceKind {
@@ -61,6 +65,8 @@ impl PlaceKind {
             "bottom" => PlaceKind::Bottom,
             "floor" => PlaceKind::Floor,
             "ceiling" => PlaceKind::Ceiling,
+            "shape" => PlaceKind::Shape,
+            "person" => PlaceKind::Person,
             _ => return None,
         })
     }
@@ -68,7 +74,12 @@ impl PlaceKind {
 
 fn places() -> &'static HashMap<&'static str, PlaceKind> {
     static P: OnceLock<HashMap<&'static str, PlaceKind>> = OnceLock::new();
-    P.get_or_init(|| rows(PLACES).filter_map(|r| Some((r[0], PlaceKind::parse(r[1])?))).collect())
+    P.get_or_init(|| {
+        rows(PLACES)
+            .filter_map(|r| Some((r[0], PlaceKind::parse(r[1])?)))
+            .chain(rows(PEOPLE).map(|r| (r[0], PlaceKind::Person)))
+            .collect()
+    })
 }
 
 fn compound_modifiers() -> &'static [&'static str] {
@@ -319,7 +330,7 @@ impl Phrases<'_> {
         let mut out = Vec::new();
         while out.len() < 5 {
             // Walls, windows and doors are places even where the catalog has a model of one.
-            if let Some((p @ (PlaceKind::Wall | PlaceKind::Door), len)) = place_at(self.toks, k) {
+            if let Some((p @ (PlaceKind::Wall | PlaceKind::Door | PlaceKind::Person), len)) = place_at(self.toks, k) {
                 out.push(Noun::Place(p, k, len));
                 k += len;
                 continue;

@@ -99,6 +99,22 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
             while chars.get(k).is_some_and(|(_, c)| c.is_alphanumeric()) {
                 k += 1;
             }
+            // "6x2m", "4x3.5": a number, a times sign, and the rest read on.
+            if chars.get(j).is_some_and(|(_, c)| *c == 'x' || *c == 'X')
+                && chars.get(j + 1).is_some_and(|(_, c)| c.is_ascii_digit())
+                && chars[i].1.is_ascii_digit()
+            {
+                let raw: String = chars[i..j].iter().map(|(_, ch)| *ch).filter(|ch| *ch != ',').collect();
+                out.push(Token {
+                    kind: TokenKind::Number(raw.parse::<f64>().unwrap_or(f64::NAN)),
+                    norm: raw,
+                    start,
+                    end: end_of(j),
+                });
+                out.push(Token { kind: TokenKind::Times, norm: "x".into(), start: end_of(j), end: end_of(j + 1) });
+                i = j + 1;
+                continue;
+            }
             if k > j {
                 let suffix: String = chars[j..k].iter().map(|(_, c)| c.to_ascii_lowercase()).collect();
                 let unit = matches!(suffix.as_str(), "m" | "cm" | "mm" | "km" | "ft" | "in" | "m2" | "sqm" | "x")
@@ -346,6 +362,8 @@ mod tests {
     fn dimensions_split_into_numbers_units_and_times() {
         assert_eq!(kinds("2m x 2m"), ["#2", "m", "x", "#2", "m"]);
         assert_eq!(kinds("12x12 m"), ["#12", "x", "#12", "m"]);
+        assert_eq!(kinds("6x2m"), ["#6", "x", "#2", "m"]);
+        assert_eq!(kinds("4x3.5 m"), ["#4", "x", "#3.5", "m"]);
         assert_eq!(kinds("10 by 6 meter room"), ["#10", "by", "#6", "meter", "room"]);
         assert_eq!(kinds("3.5m×4.25m"), ["#3.5", "m", "x", "#4.25", "m"]);
         assert_eq!(kinds("a -5 by 3"), ["a", "#-5", "by", "#3"]);

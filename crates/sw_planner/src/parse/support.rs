@@ -194,10 +194,35 @@ impl Parser<'_> {
     /// sentence is the subject it refers to.
     pub(super) fn try_pronoun_subject(&mut self, i: usize) -> Option<usize> {
         let w = self.word(i);
-        if !matches!(w, "it" | "they" | "these" | "those" | "both") || self.subject.is_some() {
+        if !matches!(w, "it" | "they" | "them" | "these" | "those" | "both") || self.subject.is_some() {
             return None;
         }
-        let sentence_start = i == 0 || matches!(self.toks[i - 1].kind, TokenKind::Stop);
+        // At the start of a sentence, or after its imperative verb ("Put them on the bench").
+        let mut k = i;
+        while k > 0
+            && self.toks[k - 1].kind == TokenKind::Word
+            && matches!(
+                self.word(k - 1),
+                "put"
+                    | "place"
+                    | "set"
+                    | "stand"
+                    | "move"
+                    | "stack"
+                    | "arrange"
+                    | "position"
+                    | "keep"
+                    | "leave"
+                    | "line"
+                    | "then"
+                    | "and"
+                    | "now"
+                    | "please"
+            )
+        {
+            k -= 1;
+        }
+        let sentence_start = k == 0 || matches!(self.toks[k - 1].kind, TokenKind::Stop);
         if !sentence_start {
             return None;
         }
