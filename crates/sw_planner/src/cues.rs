@@ -569,6 +569,7 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             "besides",
             "by",
             "alongside",
+            "along",
             "adjacent to",
             "to the left of",
             "to the right of",

@@ -571,6 +571,7 @@ const FILLERS: &[&str] = &[
     "distributed",
     "arrayed",
     "except",
+    "per",
     "not",
     "without",
     "skip",
@@ -591,7 +592,6 @@ impl Lexicon {
             lex.add(w, Meaning::Room(*k));
         }
         lex.add("warehouse aisle", Meaning::RoomAisle(RoomKind::Warehouse));
-        lex.add("aisle", Meaning::RoomAisle(RoomKind::Warehouse));
         lex.add("store aisle", Meaning::RoomAisle(RoomKind::RetailStore));
         lex.add("supermarket aisle", Meaning::RoomAisle(RoomKind::RetailStore));
         for w in ROOM_WORDS {

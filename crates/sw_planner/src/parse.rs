@@ -62,6 +62,9 @@ pub(crate) struct GroupDraft {
     pub sizes: Vec<SizeWord>,
     pub explicit: ExplicitSize,
     pub count_rule: Option<CountRule>,
+    /// Stacks: how many columns ("three stacks of …") and layers ("… four high").
+    pub stacks: Option<f64>,
+    pub layers: Option<f64>,
 }
 
 #[derive(Debug, Clone)]
@@ -260,6 +263,10 @@ impl<'a> Parser<'a> {
                 i = next;
                 continue;
             }
+            if let Some(next) = self.try_layers(i) {
+                i = next;
+                continue;
+            }
             if let Some(next) = self.try_trailing_size(i)? {
                 i = next;
                 continue;
@@ -277,6 +284,10 @@ impl<'a> Parser<'a> {
                 continue;
             }
             if let Some(next) = self.try_pronoun_subject(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_per(i) {
                 i = next;
                 continue;
             }
@@ -310,7 +321,14 @@ impl<'a> Parser<'a> {
             let after_list_word = i > 0
                 && (self.toks[i - 1].kind == TokenKind::Comma
                     || matches!(self.word(i - 1), "and" | "with" | "plus" | "&"));
-            let bare = if after_list_word { Bare::PluralInList } else { Bare::No };
+            // "two rows of desks", "a stack of boxes": what follows a collective is an object.
+            let bare = if self.collective.is_some() {
+                Bare::Target
+            } else if after_list_word {
+                Bare::PluralInList
+            } else {
+                Bare::No
+            };
             if let Some(p) = self.phrase_at(i, true, bare)? {
                 let end = p.end;
                 self.mark(i, end);
@@ -787,6 +805,8 @@ impl<'a> Parser<'a> {
             sizes: p.sizes.clone(),
             explicit,
             count_rule: None,
+            stacks: None,
+            layers: None,
         });
         id
     }

@@ -92,38 +92,29 @@ impl Parser<'_> {
                 twin = true;
                 j += 1;
             }
-            // "at each of the desks"
-            if self.word(j) == "of" && j > 0 && matches!(self.word(j - 1), "each" | "every" | "one") {
-                let k = target_start(&self.toks, j + 1);
-                if k > j + 1 || self.phrase_at(j + 1, true, Bare::Target).ok().flatten().is_some() {
-                    self.used[j] = true;
-                    j = k.max(j + 1);
-                    // Keep "each" visible to the companion check below.
-                    if !matches!(self.word(j - 1), "each" | "every") && j >= 2 {
-                        let each_at = (i..j).rev().find(|&x| matches!(self.word(x), "each" | "every"));
-                        if let Some(x) = each_at {
-                            let (target, next) = self.target_at(j, &cue)?;
-                            if let Some(Subject::Group(g)) = self.subject.clone()
-                                && !target.starts_with('@')
-                                && target != g
-                            {
-                                self.mark(i, next);
-                                let _ = x;
-                                self.add_companion(&target, &g);
-                                return Some(next);
-                            }
-                            return None;
-                        }
-                    }
-                }
+            // "at each of the desks", "on each of seven tables", "a stool at each station", "a
+            // chair in front of every desk", "a lamp on both desks": one for every instance.
+            if self.word(j) == "of" && j > 0 && matches!(self.word(j - 1), "each" | "every" | "one" | "both") {
+                self.used[j] = true;
+                j = target_start(&self.toks, j + 1);
             }
-            // "a stool at each station", "a chair in front of every desk": companions.
-            let each = j > 0 && matches!(self.word(j - 1), "each" | "every");
-            if each
-                && matches!(cue, Cue::Tend | Cue::NextTo | Cue::InFront | Cue::On | Cue::Near)
+            if (self.each_before(j) || matches!(self.word(j), "each" | "both"))
+                && matches!(cue, Cue::Tend | Cue::NextTo | Cue::InFront | Cue::On | Cue::Near | Cue::In | Cue::Behind)
                 && let Some(Subject::Group(g)) = self.subject.clone()
             {
-                let (target, next) = self.target_at(j, &cue)?;
+                // "on each", "on both": the plural group named before.
+                let pronoun = j > 0
+                    && matches!(self.word(j - 1), "each" | "both" | "all")
+                    && self.phrase_at(j, true, Bare::Target).ok().flatten().is_none();
+                let found = if pronoun {
+                    match self.resolve_pronoun("they") {
+                        Some(Subject::Group(h)) => Some((h, j)),
+                        _ => None,
+                    }
+                } else {
+                    self.target_at(j, &cue)
+                };
+                let (target, next) = found?;
                 if !target.starts_with('@') && target != g {
                     self.mark(i, next);
                     self.add_companion(&target, &g);
@@ -212,6 +203,36 @@ impl Parser<'_> {
         Some(next)
     }
 
+    /// "a bin at the end of each of two aisles": one at each of `count` places.
+    fn one_at_each_place(&mut self, count: Option<f64>, at: usize) {
+        if let (Some(n), true, Some(Subject::Group(g))) = (count, self.each_before(at), self.subject.clone())
+            && n > 1.0
+            && let Some(group) = self.draft.groups.iter_mut().find(|x| x.id == g)
+            && group.count_rule.is_none()
+        {
+            group.count = Some(group.count.unwrap_or(1.0) * n);
+            group.plural = true;
+        }
+    }
+
+    /// True when the target starting at `j` is distributive: "each", "every", "both", "each
+    /// of the", "every one of".
+    fn each_before(&self, j: usize) -> bool {
+        let mut k = j;
+        for _ in 0..4 {
+            if k == 0 {
+                return false;
+            }
+            k -= 1;
+            match self.word(k) {
+                "each" | "every" | "both" => return true,
+                "of" | "the" | "these" | "those" | "one" | "its" | "their" => {}
+                _ => return false,
+            }
+        }
+        false
+    }
+
     fn group_is_plural(&self, id: &str) -> bool {
         self.group(id).is_some_and(|g| g.plural || g.count.is_some_and(|c| c > 1.0))
     }
@@ -231,11 +252,13 @@ impl Parser<'_> {
     /// introduced — a new group (noted when the phrase was definite).
     fn target_at(&mut self, j: usize, cue: &Cue) -> Option<(String, usize)> {
         let w = self.word(j);
-        if matches!(w, "it" | "them" | "this" | "that" | "these" | "those" | "one" | "each") {
-            if let Some(host) = &self.with_host
+        if matches!(w, "it" | "them" | "this" | "that" | "these" | "those" | "one" | "each" | "both" | "all") {
+            // "each with a stool and a vice on it": it is each host.
+            if let Some(host) = self.each_host.clone().or_else(|| self.with_host.clone())
                 && self.subject != Some(Subject::Group(host.clone()))
+                && matches!(w, "it" | "them" | "one" | "each")
             {
-                return Some((host.clone(), j + 1));
+                return Some((host, j + 1));
             }
             let previous = self.resolve_pronoun(w)?;
             return Some((
@@ -265,10 +288,12 @@ impl Parser<'_> {
                 if let Some(q) = self.phrase_at(k, true, Bare::Target).ok().flatten()
                     && let Head::Place(inner) = q.head
                 {
-                    // A place of a place ("the end of the aisle"): no object, the outer kind.
+                    // A place of a place ("the end of the aisle"): no object, the outer kind;
+                    // "at the end of each of two aisles" is one at each.
                     self.mark(j, q.end);
                     self.place_of = Some((kind, None));
                     let _ = inner;
+                    self.one_at_each_place(q.count, k);
                     return Some((String::from("@place"), q.end));
                 }
                 let room = self.phrase_at(k, true, Bare::Target).ok().flatten().filter(|q| {
@@ -286,6 +311,7 @@ impl Parser<'_> {
             }
             // "a place, not an object": a bare place ("near the window") is where the room's
             // walls are.
+            self.one_at_each_place(p.count, j);
             self.mark(j, p.end);
             self.place_of = Some((kind, None));
             return Some((String::from("@place"), p.end));

@@ -49,6 +49,16 @@ impl Parser<'_> {
             Collective::Aisle if n >= 2.0 => RelationKind::InAisles,
             Collective::Aisle => RelationKind::FacingEachOther,
         };
+        // "three stacks of four boxes": four in each.
+        if kind == Collective::Stack
+            && let Some(g) = self.draft.groups.iter_mut().find(|g| g.id == id)
+        {
+            g.stacks = Some(n.round().max(1.0));
+            if n >= 2.0 {
+                g.layers = g.count;
+                g.count = g.count.map(|c| c * n.round());
+            }
+        }
         // "two rows of five desks": five in each.
         if kind == Collective::Row
             && n >= 2.0
@@ -95,6 +105,76 @@ impl Parser<'_> {
         self.each_taken = 0;
         self.with_host = None;
         self.subject = Some(Subject::Group(host));
+        Some(j)
+    }
+
+    /// "one lamp per desk", "two chairs for each table", "10 bags per pallet": the group just
+    /// named is a companion of the group after "per". A bare number before "per" ("12
+    /// printers on four units, 3 per unit") restates a count already given. Returns the
+    /// index after.
+    pub(super) fn try_per(&mut self, i: usize) -> Option<usize> {
+        let len = match (self.word(i), self.word(i + 1)) {
+            ("per", _) | ("a" | "an", _) if self.word(i) == "per" => 1,
+            ("for", "each" | "every") => 2,
+            _ => return None,
+        };
+        let Some(Subject::Group(g)) = self.subject.clone() else {
+            return None;
+        };
+        let j = i + len;
+        let p = self.phrase_at(j, true, super::Bare::Target).ok().flatten()?;
+        let host = match &p.head {
+            super::Head::Known(crate::lexicon::Meaning::Category(cat)) => {
+                self.resolve_group(Some(cat), &singular_head(&p.text))
+            }
+            super::Head::Unknown(label) => self.resolve_group(None, label),
+            _ => None,
+        };
+        let bare_number = i > 0
+            && self.toks[i - 1].number().is_some()
+            && !self.group(&g).is_some_and(|x| x.phrase.ends_with(&self.toks[i - 1].norm));
+        self.mark(i, p.end);
+        match host {
+            Some(h) if h != g && !bare_number => self.add_companion(&h, &g),
+            _ => {}
+        }
+        Some(p.end)
+    }
+
+    /// "stacked two high", "6 high", "in stacks four high": the layers of the current
+    /// group's stacks (a count with no unit; "2 m high" is a size). A group with no count
+    /// gets stacks × layers. Returns the index after.
+    pub(super) fn try_layers(&mut self, i: usize) -> Option<usize> {
+        let Some(Subject::Group(g)) = self.subject.clone() else {
+            return None;
+        };
+        let mut j = i;
+        let stacked = matches!(self.word(j), "stacked" | "piled" | "stacking");
+        if stacked {
+            j += 1;
+        }
+        let (n, len) = crate::quantity::numeral_at(&self.toks, j)?;
+        j += len;
+        if self.lookup(j, |m| matches!(m, crate::lexicon::Meaning::Unit(_))).is_some() {
+            return None;
+        }
+        if !matches!(self.word(j), "high" | "tall" | "deep" | "layers" | "levels" | "tiers")
+            || !(1.0..=100.0).contains(&n)
+        {
+            return None;
+        }
+        j += 1;
+        if let Some(group) = self.draft.groups.iter_mut().find(|x| x.id == g) {
+            group.layers = Some(n.round());
+            if group.count.is_none() || !group.plural && group.count == Some(1.0) {
+                group.count = Some(n.round() * group.stacks.unwrap_or(1.0));
+            } else if group.stacks.is_some_and(|s| s >= 2.0) && group.count == group.stacks {
+                // "5 stacks of totes, 6 high": the count so far was the stacks'.
+                group.count = Some(n.round() * group.stacks.unwrap_or(1.0));
+            }
+        }
+        self.relate(&g, RelationKind::Stacked);
+        self.mark(i, j);
         Some(j)
     }
 
@@ -235,4 +315,8 @@ impl Parser<'_> {
         self.subject = Some(s);
         Some(i + 1)
     }
+}
+
+fn singular_head(text: &str) -> String {
+    text.split_whitespace().last().map(|h| crate::text::singular(&h.to_lowercase())).unwrap_or_default()
 }
