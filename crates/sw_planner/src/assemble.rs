@@ -169,6 +169,16 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         if dropped.contains(subject) || kind.targets().iter().any(|t| dropped.iter().any(|x| x == t)) {
             continue;
         }
+        // A stack's layers and columns, as the prompt counted them.
+        let kind = &match kind {
+            RelationKind::Stacked { .. } => {
+                let g = d.groups.iter().find(|g| &g.id == subject);
+                let whole = |v: Option<f64>| v.filter(|v| v.is_finite() && *v >= 1.0).map(|v| v.round() as u32);
+                let stacks = whole(g.and_then(|g| g.stacks)).filter(|s| *s > 1);
+                RelationKind::Stacked { n: whole(g.and_then(|g| g.layers)), stacks }
+            }
+            k => k.clone(),
+        };
         plan.relations.push(Relation { subject: subject.clone(), kind: kind.clone() });
     }
     if d.aisle {

@@ -1,7 +1,7 @@
 //! Relation cues: the fixed phrases that introduce a spatial relation ("against the north
 //! wall", "on top of", "in a row", "facing each other").
 
-use sw_plan::{Corner, Wall};
+use sw_plan::{Corner, EndOf, Wall};
 
 use crate::text::{Token, TokenKind};
 
@@ -23,12 +23,20 @@ pub(crate) enum Cue {
     Facing,
     End(Option<Wall>),
     /// "at the end of": the row (or group) named next.
-    EndOf,
+    EndOf(Option<EndOf>),
     Corner(Option<Corner>),
     Center,
     Door,
     Wall(Option<Wall>),
     TwoWalls,
+    /// "on opposite walls", "along both long walls".
+    OppositeWalls {
+        long: bool,
+    },
+    /// "in the corners", "in each corner", "in two corners": no two in one corner.
+    Corners,
+    /// "back to back".
+    BackToBack,
     Leaning(Option<Wall>),
     Stacked,
     /// "picking from", "tending", "working at", "at": an arm works at the target.
@@ -59,7 +67,7 @@ impl Cue {
                 | Cue::Behind
                 | Cue::Between
                 | Cue::Around
-                | Cue::EndOf
+                | Cue::EndOf(_)
                 | Cue::Tend
                 | Cue::In
                 | Cue::EachSide
@@ -394,6 +402,17 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             }
             j += 1;
         }
+        let several = toks[i + 1..j.min(toks.len())].iter().any(|w| {
+            matches!(
+                w.norm.as_str(),
+                "each" | "every" | "all" | "two" | "three" | "four" | "both" | "different" | "separate"
+            )
+        });
+        if toks.get(j).is_some_and(|w| w.norm == "corners")
+            || (several && toks.get(j).is_some_and(|w| w.norm == "corner"))
+        {
+            return Some((Cue::Corners, j + 1 - i));
+        }
         if toks.get(j).is_some_and(|w| w.norm == "corner" || w.norm == "corners") {
             let corner = compass.or_else(|| match dirs.as_slice() {
                 [a, b] => corner_word(*a, *b),
@@ -422,7 +441,9 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
                     )
                 });
                 if !room_end {
-                    return Some((Cue::EndOf, j + 2 - i));
+                    let both = toks[i + 1..j].iter().any(|w| matches!(w.norm.as_str(), "both" | "either"))
+                        || toks[j].norm == "ends";
+                    return Some((Cue::EndOf(both.then_some(EndOf::Both)), j + 2 - i));
                 }
                 return Some((Cue::End(wall), k + 1 - i));
             }
@@ -488,6 +509,10 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
                 e += 1;
             }
             if toks.get(e).is_some_and(|w| w.norm == "walls") {
+                let said = |w: &str| toks[i + n..e].iter().any(|t| t.norm == w);
+                if said("opposite") || said("both") {
+                    return Some((Cue::OppositeWalls { long: said("long") }, e + 1 - i));
+                }
                 return Some((Cue::TwoWalls, e + 1 - i));
             }
         }
@@ -509,10 +534,17 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             return Some((Cue::Floor, j + 1 - i));
         }
     }
-    if let Some(n) =
-        any_of(toks, i, &["in front of", "right in front of", "directly in front of", "just in front of", "facing"])
+    if let Some(n) = any_of(toks, i, &["back to back", "back-to-back"]) {
+        return Some((Cue::BackToBack, n));
+    }
+    if let Some(n) = any_of(toks, i, &["in front of", "right in front of", "directly in front of", "just in front of"])
     {
         return Some((Cue::InFront, n));
+    }
+    if let Some(n) =
+        any_of(toks, i, &["facing", "facing towards", "facing toward", "turned towards", "looking at", "faces"])
+    {
+        return Some((Cue::FacingTarget, n));
     }
     if let Some(n) = any_of(
         toks,

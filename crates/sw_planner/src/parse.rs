@@ -896,12 +896,14 @@ impl<'a> Parser<'a> {
     }
 }
 
+/// "a 4.5 m conveyor" (its length), "a 2 x 1 m table" (length and width), "a 1.2 x 0.8 x
+/// 0.9 m crate" (and height).
 fn apply_dims(e: &mut ExplicitSize, d: &[f64]) {
-    if let Some(w) = d.first() {
-        e.width = Some(*w);
+    if let Some(l) = d.first() {
+        e.length = Some(*l);
     }
     if let Some(v) = d.get(1) {
-        e.depth = Some(*v);
+        e.width = Some(*v);
     }
     if let Some(h) = d.get(2) {
         e.height = Some(*h);

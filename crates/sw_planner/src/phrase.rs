@@ -396,6 +396,20 @@ impl Phrases<'_> {
                 }
                 continue;
             }
+            // "a 4.5 m conveyor", "a 6' bench": a length before the noun is its length.
+            if let Some((v, len, true)) = self.length_at(j)
+                && !self.toks.get(j + len).is_some_and(|t| t.kind == TokenKind::Times || t.is_word("by"))
+                && !self.boundary(j + len)
+                && matches!(
+                    self.nouns_at(j + len, false).last(),
+                    Some(Noun::Known(Meaning::Category(_) | Meaning::Robot(_), ..) | Noun::Unknown(_))
+                )
+            {
+                check_positive(v, &self.span(j, j + len))?;
+                explicit.length = Some(v);
+                j += len;
+                continue;
+            }
             match self.lookup(j, |m| matches!(m, Meaning::Color(..) | Meaning::Size(_) | Meaning::Material(..))) {
                 Some((Meaning::Color(name, rgba), len)) if !self.boundary_after_modifier(j + len) => {
                     color = Some(NamedColor { name: name.to_string(), rgba });
@@ -533,6 +547,15 @@ impl Phrases<'_> {
                 };
                 modifier_noun && allow_unknown && self.boundary(tail_end)
             };
+            // "the table edge" is a place of the table; "desks back to back" is desks.
+            if let (Noun::Place(..), Some(Noun::Known(_, ps, pl))) = (&nouns[k], k.checked_sub(1).map(|p| &nouns[p])) {
+                let w = self.word(ps + pl - 1);
+                if singular(w) != w {
+                    if let Noun::Known(m, s, l) = &nouns[k - 1] {
+                        return Some((Head::Known(m.clone()), *s, *l, nouns[..k - 1].to_vec()));
+                    }
+                }
+            }
             if !compound {
                 let (head, s, l) = match &nouns[k] {
                     Noun::Known(m, s, l) => (Head::Known(m.clone()), *s, *l),
@@ -599,6 +622,7 @@ pub(crate) enum Axis {
     Width,
     Depth,
     Height,
+    Diameter,
 }
 
 impl Axis {
@@ -606,19 +630,21 @@ impl Axis {
         let w = word.rsplit('-').next().unwrap_or(word);
         Some(match w {
             "tall" | "high" | "height" => Axis::Height,
-            "wide" | "width" | "across" => Axis::Width,
+            "wide" | "width" => Axis::Width,
+            "across" | "diameter" => Axis::Diameter,
             "long" | "length" => Axis::Length,
             "deep" | "depth" => Axis::Depth,
             _ => return None,
         })
     }
 
-    /// Records the value: a length and a width are both the width of the catalog's box
-    /// (its long side along X); the category's own axes are sorted out where the size
-    /// reaches the asset.
+    /// Records the value; a length is the longer side on the floor, whichever of the
+    /// category's axes that is (sorted out where the size reaches the asset).
     pub fn set(self, e: &mut ExplicitSize, v: f64) {
         match self {
-            Axis::Length | Axis::Width => e.width = Some(v),
+            Axis::Length => e.length = Some(v),
+            Axis::Width => e.width = Some(v),
+            Axis::Diameter => e.diameter = Some(v),
             Axis::Depth => e.depth = Some(v),
             Axis::Height => e.height = Some(v),
         }

@@ -1,9 +1,8 @@
 //! What the reader says with the relations issue 20 adds to the vocabulary (inside, set
 //! into, at the end of, on the edge of, on each side of, facing …), in one place: each
-//! is written as the plan's relation that states it, or — while the plan has no such
-//! relation — the nearest one it has, which the layout keeps and the report measures.
+//! is written as the plan's relation that states it.
 
-use sw_plan::RelationKind;
+use sw_plan::{EndOf, RelationKind};
 
 /// A relation as the reader understood it, before it is written into the plan.
 #[derive(Debug, Clone, PartialEq)]
@@ -20,16 +19,21 @@ pub(crate) enum Said {
     OnEachSideOf(String),
     /// Front turned to the target ("a sofa facing the TV", "opposite the desk").
     Facing(String),
+    /// Beyond a named end of the target: its start, its end, or both.
+    AtEnd(String, EndOf),
 }
 
 impl Said {
     /// The plan's relation for what was said.
     pub fn kind(self) -> RelationKind {
         match self {
-            Said::Inside(target) | Said::SetInto(target) | Said::OnEdgeOf(target) => RelationKind::On { target },
-            Said::AtEndOf(target) => RelationKind::AtEndOfRow { target },
-            Said::OnEachSideOf(target) => RelationKind::NextTo { target },
-            Said::Facing(target) => RelationKind::InFrontOf { target },
+            Said::Inside(target) => RelationKind::Inside { target },
+            Said::SetInto(target) => RelationKind::SetInto { target },
+            Said::OnEdgeOf(target) => RelationKind::OnEdgeOf { target },
+            Said::AtEndOf(target) => RelationKind::AtEndOf { target, end: None },
+            Said::AtEnd(target, end) => RelationKind::AtEndOf { target, end: Some(end) },
+            Said::OnEachSideOf(target) => RelationKind::OnEachSideOf { target },
+            Said::Facing(target) => RelationKind::Facing { target },
         }
     }
 }

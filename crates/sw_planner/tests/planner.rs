@@ -423,10 +423,9 @@ fn explicit_object_sizes_in_metres() {
     ];
     for (prompt, category, want) in cases {
         let p = ok(prompt);
-        let e = group(&p, category).size.explicit;
-        for (name, got, want) in
-            [("width", e.width, want[0]), ("depth", e.depth, want[1]), ("height", e.height, want[2])]
-        {
+        // A length is the long side on the floor: the table's X (its width parameter).
+        let e = group(&p, category).size.explicit.axes(true);
+        for (name, got, want) in [("width", e[0], want[0]), ("depth", e[1], want[1]), ("height", e[2], want[2])] {
             match (got, want) {
                 (Some(g), Some(w)) => assert_close(g, w, &format!("{prompt:?} {name}")),
                 (None, None) => {}

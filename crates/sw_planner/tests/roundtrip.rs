@@ -187,14 +187,18 @@ struct Meaning {
     room: Option<String>,
     room_size_cm: Option<(i64, i64)>,
     counts: BTreeMap<String, u32>,
-    sizes: BTreeMap<String, [Option<i64>; 3]>,
+    sizes: BTreeMap<String, Vec<(&'static str, i64)>>,
     relations: BTreeSet<String>,
 }
 
 fn relation_key(subject: &str, kind: &RelationKind, name_of: &dyn Fn(&str) -> String) -> String {
     let detail = match kind {
         RelationKind::AgainstWall { wall: Some(w) } => format!(" wall={}", w.name()),
-        RelationKind::InRows { n: Some(n) } => format!(" n={n}"),
+        RelationKind::InRows { n: Some(n), m: Some(m) } => format!(" n={n} m={m}"),
+        RelationKind::InRows { n: Some(n), m: None } => format!(" n={n}"),
+        RelationKind::Stacked { n, stacks } => format!(" n={n:?} stacks={stacks:?}"),
+        RelationKind::AtEndOf { end: Some(e), .. } => format!(" end={}", e.name()),
+        RelationKind::OnOppositeWalls { long: true } => " long".to_string(),
         _ => String::new(),
     };
     let targets: Vec<String> = kind.targets().iter().map(|t| name_of(t)).collect();
@@ -224,8 +228,10 @@ fn meaning_of(p: &ScenePlan, with_room: bool) -> Meaning {
         *m.counts.entry(o.category.clone()).or_insert(0) += o.count;
         let e = o.size.explicit;
         if !e.is_empty() {
-            let mm = |v: Option<f64>| v.map(|v| (v * 1000.0).round() as i64);
-            m.sizes.insert(o.category.clone(), [mm(e.width), mm(e.depth), mm(e.height)]);
+            m.sizes.insert(
+                o.category.clone(),
+                e.stated().into_iter().map(|(n, v)| (n, (v * 1000.0).round() as i64)).collect(),
+            );
         }
     }
     for r in &p.relations {
@@ -478,8 +484,9 @@ fn floor_pairs(rng: &mut Rng) -> Case {
 fn sizes(rng: &mut Rng) -> Case {
     let s = *rng.pick(&[nouns(Role::Surface), nouns(Role::Floor)].concat());
     let sf = s.forms[0];
-    // (axis word, axis index) — "long" is the width the reader gives the long side.
-    let (axis, idx): (&str, usize) = *rng.pick(&[("long", 0), ("wide", 0), ("deep", 1), ("tall", 2), ("high", 2)]);
+    // (axis word, the dimension it names).
+    let (axis, name): (&str, &'static str) =
+        *rng.pick(&[("long", "length"), ("wide", "width"), ("deep", "depth"), ("tall", "height"), ("high", "height")]);
     let cm = 40 + 10 * rng.below(20) as i64;
     let (value, unit) = match rng.below(5) {
         0 => (format!("{}", cm as f64 / 100.0), *rng.pick(&[" m", "m", " metres", " meters"])),
@@ -497,9 +504,7 @@ fn sizes(rng: &mut Rng) -> Case {
     };
     let mut want = Meaning::default();
     want.counts.insert(s.cat.into(), 1);
-    let mut dims = [None; 3];
-    dims[idx] = Some(cm * 10);
-    want.sizes.insert(s.cat.into(), dims);
+    want.sizes.insert(s.cat.into(), vec![(name, cm * 10)]);
     Case { prompt, want, with_room: false }
 }
 
@@ -516,7 +521,10 @@ fn room_sizes(rng: &mut Rng) -> Case {
         2 => (format!("{w}x{d}m"), (w * 100, d * 100)),
         3 => (format!("{w} x {d} metres"), (w * 100, d * 100)),
         4 => (format!("{} by {} cm", w * 100, d * 100), (w * 100, d * 100)),
-        _ => (format!("{w} ft by {d} ft"), ((w as f64 * 30.48).round() as i64, (d as f64 * 30.48).round() as i64)),
+        _ => {
+            let (wf, df) = (w * 3, d * 3);
+            (format!("{wf} ft by {df} ft"), ((wf as f64 * 30.48).round() as i64, (df as f64 * 30.48).round() as i64))
+        }
     };
     let chair = counted(rng, 2, "chair");
     let prompt = match rng.below(4) {
@@ -533,10 +541,7 @@ fn room_sizes(rng: &mut Rng) -> Case {
 /// Counts that add up: "three chairs and two more chairs", "a stool and another stool",
 /// "two rows of four desks", "three stacks of four boxes".
 fn quantities(rng: &mut Rng) -> Case {
-    let mut f = *rng.pick(&nouns(Role::Floor));
-    while f.cat == "desk" {
-        f = *rng.pick(&nouns(Role::Floor));
-    }
+    let f = *rng.pick(&nouns(Role::Floor));
     let ff = f.forms[0];
     let a = 1 + rng.below(5) as u32;
     let b = 1 + rng.below(4) as u32;
@@ -557,7 +562,7 @@ fn quantities(rng: &mut Rng) -> Case {
             let rows = 2 + rng.below(3) as u32;
             let per = 2 + rng.below(4) as u32;
             want.counts.insert(f.cat.into(), rows * per);
-            want.relations.insert(rel(f.cat, "in_rows", None) + &format!(" n={rows}"));
+            want.relations.insert(rel(f.cat, "in_rows", None) + &format!(" n={rows} m={per}"));
             format!("{} rows of {} {}", NUMBER_WORDS[rows as usize], NUMBER_WORDS[per as usize], plural(ff))
         }
         _ => {
@@ -615,7 +620,7 @@ fn no_objects_from_places(rng: &mut Rng) -> Case {
 const PER_FAMILY: usize = 400;
 
 /// Wordings allowed to read differently: a ratchet lowered as the reader learns, to zero.
-const ALLOWED_FAILURES: usize = 453;
+const ALLOWED_FAILURES: usize = 4;
 
 #[test]
 fn every_wording_of_a_scene_gives_the_same_plan() {

@@ -2,7 +2,7 @@
 //! targets resolved through the discourse model, and the relation it states about the
 //! current subject — an object group or a robot.
 
-use sw_plan::{Mount, RelationKind};
+use sw_plan::{EndOf, Mount, RelationKind};
 
 use super::{Bare, Head, Parser, Subject};
 use crate::cues::{Cue, cue_at, target_start};
@@ -64,7 +64,7 @@ impl Parser<'_> {
             }
             // "at the end of the row", "between the rows": the most recent group in rows.
             if matches!(self.word(j), "row" | "line" | "rows" | "lines" | "aisle" | "aisles")
-                && matches!(cue, Cue::EndOf | Cue::Between | Cue::InFront | Cue::Behind | Cue::NextTo | Cue::Near)
+                && matches!(cue, Cue::EndOf(_) | Cue::Between | Cue::InFront | Cue::Behind | Cue::NextTo | Cue::Near)
             {
                 let row = self.draft.relations.iter().rev().find_map(|(s, k)| {
                     matches!(k, RelationKind::InRow | RelationKind::InRows { .. } | RelationKind::FacingEachOther)
@@ -457,7 +457,7 @@ impl Parser<'_> {
                         | Cue::Door
                         | Cue::Corner(_)
                         | Cue::End(_)
-                        | Cue::EndOf
+                        | Cue::EndOf(_)
                         | Cue::Center
                         | Cue::NextTo
                         | Cue::Near
@@ -481,7 +481,15 @@ impl Parser<'_> {
                     (Cue::InFront, [t]) => RelationKind::InFrontOf { target: t.clone() },
                     (Cue::Behind, [t]) => RelationKind::Behind { target: t.clone() },
                     (Cue::Around, [t]) => RelationKind::Around { target: t.clone() },
-                    (Cue::EndOf, [t]) => RelationKind::AtEndOfRow { target: t.clone() },
+                    (Cue::EndOf(end), [t]) if !self.group_is_plural_row(t) || end.is_some() => match end {
+                        Some(EndOf::Both) => {
+                            self.one_each_side(&subject);
+                            Said::AtEnd(t.clone(), EndOf::Both).kind()
+                        }
+                        Some(e) => Said::AtEnd(t.clone(), e).kind(),
+                        None => Said::AtEndOf(t.clone()).kind(),
+                    },
+                    (Cue::EndOf(_), [t]) => RelationKind::AtEndOfRow { target: t.clone() },
                     (Cue::Tend, [t]) if self.group_is_seating(&subject) => {
                         RelationKind::InFrontOf { target: t.clone() }
                     }
@@ -496,7 +504,6 @@ impl Parser<'_> {
                     }
                     (Cue::FacingTarget, [t]) => Said::Facing(t.clone()).kind(),
                     (Cue::OnEdge, [t]) => Said::OnEdgeOf(t.clone()).kind(),
-                    (Cue::EndOf, [t]) if !self.group_is_plural_row(t) => Said::AtEndOf(t.clone()).kind(),
                     (Cue::Above, [t]) => RelationKind::Near { target: t.clone() },
                     (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
                     (Cue::Row, _) => RelationKind::InRow,
@@ -509,6 +516,9 @@ impl Parser<'_> {
                     (Cue::Door, _) => RelationKind::NearDoor,
                     (Cue::Wall(w), _) => RelationKind::AgainstWall { wall: w },
                     (Cue::TwoWalls, _) => RelationKind::OnTwoWalls,
+                    (Cue::OppositeWalls { long }, _) => RelationKind::OnOppositeWalls { long },
+                    (Cue::Corners, _) => RelationKind::InCorners,
+                    (Cue::BackToBack, _) => RelationKind::BackToBack,
                     (Cue::Leaning(w), _) => RelationKind::Leaning { wall: w },
                     (Cue::Stacked, _) => RelationKind::Stacked { n: None, stacks: None },
                     (Cue::Floor, _) => return,
@@ -535,7 +545,8 @@ impl Parser<'_> {
         let thing = of.map(|t| vec![t]);
         Some(match (place, thing) {
             (PlaceKind::Edge, Some(t)) => (Cue::OnEdge, t),
-            (PlaceKind::End | PlaceKind::Start, Some(t)) => (Cue::EndOf, t),
+            (PlaceKind::Start, Some(t)) => (Cue::EndOf(Some(EndOf::Start)), t),
+            (PlaceKind::End, Some(t)) => (Cue::EndOf(None), t),
             (PlaceKind::End | PlaceKind::Start, None) if room => (Cue::End(None), Vec::new()),
             (PlaceKind::Side, Some(t)) => (Cue::NextTo, t),
             (PlaceKind::Front, Some(t)) => (Cue::InFront, t),
@@ -640,6 +651,12 @@ impl Parser<'_> {
             }
             (Cue::On | Cue::OnEdge, [t]) => {
                 self.set_mount(idx, Mount::OnSurface { target: t.clone() });
+                if cue == Cue::OnEdge {
+                    let rel = Said::OnEdgeOf(t.clone()).kind();
+                    if !self.draft.robot_relations.contains(&(idx, rel.clone())) {
+                        self.draft.robot_relations.push((idx, rel));
+                    }
+                }
                 return;
             }
             // "a Panda picking from the belt": it works there (its reach is stated).
@@ -659,7 +676,7 @@ impl Parser<'_> {
             (Cue::Around, [t]) | (Cue::FacingTarget, [t]) => RelationKind::Near { target: t.clone() },
             (Cue::EachSide, [t]) => RelationKind::NextTo { target: t.clone() },
             (Cue::In | Cue::Above, _) => return,
-            (Cue::EndOf, [t]) => RelationKind::AtEndOfRow { target: t.clone() },
+            (Cue::EndOf(_), [t]) => RelationKind::AtEndOfRow { target: t.clone() },
             (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
             (Cue::Door, _) => RelationKind::NearDoor,
             (Cue::Corner(c), _) => RelationKind::InCorner { corner: *c },
@@ -716,12 +733,15 @@ pub(super) fn cue_name(c: &Cue) -> &'static str {
         Cue::Aisles => "in aisles",
         Cue::Facing => "facing each other",
         Cue::End(_) => "at one end",
-        Cue::EndOf => "at the end of",
+        Cue::EndOf(_) => "at the end of",
         Cue::Corner(_) => "in the corner",
         Cue::Center => "in the middle",
         Cue::Door => "near the door",
         Cue::Wall(_) => "against the wall",
         Cue::TwoWalls => "on two walls",
+        Cue::OppositeWalls { .. } => "on opposite walls",
+        Cue::Corners => "in the corners",
+        Cue::BackToBack => "back to back",
         Cue::Leaning(_) => "leaning on the wall",
         Cue::Stacked => "stacked",
         Cue::Tend => "working at",

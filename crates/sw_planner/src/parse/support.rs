@@ -43,7 +43,10 @@ impl Parser<'_> {
     pub(super) fn take_collective(&mut self, id: &str) {
         let Some((kind, n)) = self.collective.take() else { return };
         let rel = match kind {
-            Collective::Row if n >= 2.0 => RelationKind::InRows { n: Some(n.round() as u32), m: None },
+            Collective::Row if n >= 2.0 => RelationKind::InRows {
+                n: Some(n.round() as u32),
+                m: self.group(id).and_then(|g| g.count).filter(|c| *c >= 1.0).map(|c| c.round() as u32),
+            },
             Collective::Row => RelationKind::InRow,
             Collective::Stack => RelationKind::Stacked { n: None, stacks: None },
             Collective::Aisle if n >= 2.0 => RelationKind::InAisles,
@@ -173,7 +176,7 @@ impl Parser<'_> {
                 group.count = Some(n.round() * group.stacks.unwrap_or(1.0));
             }
         }
-        self.relate(&g, RelationKind::Stacked);
+        self.relate(&g, RelationKind::Stacked { n: None, stacks: None });
         self.mark(i, j);
         Some(j)
     }
