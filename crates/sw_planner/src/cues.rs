@@ -33,8 +33,9 @@ pub(crate) enum Cue {
     OppositeWalls {
         long: bool,
     },
-    /// "in the corners", "in each corner", "in two corners": no two in one corner.
-    Corners,
+    /// "in the corners", "in each corner", "in two corners": no two in one corner; the
+    /// number of corners when said ("each" is four).
+    Corners(Option<u32>),
     /// "back to back".
     BackToBack,
     Leaning(Option<Wall>),
@@ -411,7 +412,13 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
         if toks.get(j).is_some_and(|w| w.norm == "corners")
             || (several && toks.get(j).is_some_and(|w| w.norm == "corner"))
         {
-            return Some((Cue::Corners, j + 1 - i));
+            let n = toks[i + 1..j].iter().find_map(|w| match w.norm.as_str() {
+                "each" | "every" | "all" | "four" => Some(4),
+                "two" | "both" => Some(2),
+                "three" => Some(3),
+                _ => None,
+            });
+            return Some((Cue::Corners(n), j + 1 - i));
         }
         if toks.get(j).is_some_and(|w| w.norm == "corner" || w.norm == "corners") {
             let corner = compass.or_else(|| match dirs.as_slice() {
@@ -650,7 +657,8 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
     ) {
         // Bare "at" needs an object after it ("at the bench"), not a number ("at 2 m").
         let j = skip_determiners(toks, i + n);
-        if toks.get(j).is_some_and(|w| w.kind == TokenKind::Word) {
+        let each = toks.get(i + n).is_some_and(|w| matches!(w.norm.as_str(), "each" | "every" | "both"));
+        if toks.get(j).is_some_and(|w| w.kind == TokenKind::Word) || each {
             return Some((Cue::Tend, n));
         }
     }
@@ -676,6 +684,10 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
     if matches!(t.norm.as_str(), "around" | "surrounding" | "encircling" | "round") {
         // "around 20 boxes" means about twenty.
         if toks.get(i + 1).is_some_and(|n| matches!(n.kind, TokenKind::Number(_))) {
+            return None;
+        }
+        // "round tables" are tables; "round the table" is around it.
+        if t.norm == "round" && !toks.get(i + 1).is_some_and(|w| DETERMINERS.contains(&w.norm.as_str())) {
             return None;
         }
         return Some((Cue::Around, 1));

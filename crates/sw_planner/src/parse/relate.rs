@@ -509,6 +509,31 @@ impl Parser<'_> {
                     (Cue::Row, _) => RelationKind::InRow,
                     (Cue::Rows(n), _) => RelationKind::InRows { n, m: None },
                     (Cue::Aisles, _) => RelationKind::InAisles,
+                    // "a chair on either side": of the thing named before.
+                    (Cue::Facing, []) if !self.group_is_plural(&subject) => {
+                        // The thing named before, or what that was placed by ("a bed, a
+                        // stand beside it, a chair on either side": of the bed).
+                        let other = self.draft.groups.iter().rev().find(|x| x.id != subject).map(|x| x.id.clone());
+                        let other = other.map(|o| {
+                            self.draft
+                                .relations
+                                .iter()
+                                .rev()
+                                .find(|(s, k)| {
+                                    s == &o && matches!(k, RelationKind::NextTo { .. } | RelationKind::Near { .. })
+                                })
+                                .and_then(|(_, k)| k.targets().first().map(|t| t.to_string()))
+                                .filter(|t| t != &subject)
+                                .unwrap_or(o)
+                        });
+                        match other {
+                            Some(t) => {
+                                self.one_each_side(&subject);
+                                Said::OnEachSideOf(t).kind()
+                            }
+                            None => return,
+                        }
+                    }
                     (Cue::Facing, _) => RelationKind::FacingEachOther,
                     (Cue::End(w), _) => RelationKind::AtEnd { wall: w },
                     (Cue::Corner(c), _) => RelationKind::InCorner { corner: c },
@@ -517,7 +542,19 @@ impl Parser<'_> {
                     (Cue::Wall(w), _) => RelationKind::AgainstWall { wall: w },
                     (Cue::TwoWalls, _) => RelationKind::OnTwoWalls,
                     (Cue::OppositeWalls { long }, _) => RelationKind::OnOppositeWalls { long },
-                    (Cue::Corners, _) => RelationKind::InCorners,
+                    (Cue::Corners(n), _) => {
+                        // "a fan in each corner": one in every corner.
+                        if let Some(n) = n
+                            && let Some(g) = self.draft.groups.iter_mut().find(|x| x.id == subject)
+                            && g.count_rule.is_none()
+                            && g.count.is_some_and(|c| c <= 1.0)
+                        {
+                            g.count = Some(f64::from(n));
+                            g.plural = true;
+                        }
+                        RelationKind::InCorners
+                    }
+
                     (Cue::BackToBack, _) => RelationKind::BackToBack,
                     (Cue::Leaning(w), _) => RelationKind::Leaning { wall: w },
                     (Cue::Stacked, _) => RelationKind::Stacked { n: None, stacks: None },
@@ -557,6 +594,9 @@ impl Parser<'_> {
             (PlaceKind::Middle, None) => (Cue::Center, Vec::new()),
             (PlaceKind::Corner, None) => (Cue::Corner(None), Vec::new()),
             (PlaceKind::Wall, None) => (Cue::Wall(None), Vec::new()),
+            // "a counter along the back", "a till at the front": of the room.
+            (PlaceKind::Back, None) => (Cue::Wall(Some(sw_plan::Wall::North)), Vec::new()),
+            (PlaceKind::Front, None) => (Cue::Wall(Some(sw_plan::Wall::South)), Vec::new()),
             (PlaceKind::Door, None) => (Cue::Door, Vec::new()),
             (PlaceKind::Floor, None) => (Cue::Floor, Vec::new()),
             _ => return None,
@@ -740,7 +780,7 @@ pub(super) fn cue_name(c: &Cue) -> &'static str {
         Cue::Wall(_) => "against the wall",
         Cue::TwoWalls => "on two walls",
         Cue::OppositeWalls { .. } => "on opposite walls",
-        Cue::Corners => "in the corners",
+        Cue::Corners(_) => "in the corners",
         Cue::BackToBack => "back to back",
         Cue::Leaning(_) => "leaning on the wall",
         Cue::Stacked => "stacked",
