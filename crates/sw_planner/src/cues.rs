@@ -19,6 +19,8 @@ pub(crate) enum Cue {
     Row,
     /// "in two rows" (`Some(2)`), "in rows" / "in a grid" (`None`: as many as suit).
     Rows(Option<u32>),
+    /// "in 4 rows of 5": rows and members per row.
+    RowsOf(u32, u32),
     Aisles,
     Facing,
     End(Option<Wall>),

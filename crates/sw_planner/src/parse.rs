@@ -126,6 +126,8 @@ pub(crate) struct Parser<'a> {
     taking_pieces: bool,
     /// The place a relation's target named ("the edge of the table"), for `apply`.
     place_of: Option<(PlaceKind, Option<String>)>,
+    /// Places counted so far ("4 bays"), by their singular head, for "every bay has …".
+    place_counts: std::collections::HashMap<String, f64>,
     /// Tokens before this index are a title: rooms only, no objects.
     title_end: usize,
     /// Robots a title named ("Bin picking with a UR5e:"), kept when the body names none.
@@ -179,6 +181,7 @@ impl<'a> Parser<'a> {
             taking_pieces: false,
             in_place_clause: false,
             place_of: None,
+            place_counts: std::collections::HashMap::new(),
             title_end: 0,
             title_robots: Vec::new(),
         }
@@ -295,7 +298,10 @@ impl<'a> Parser<'a> {
                 i = next;
                 continue;
             }
-            if let Some(next) = self.try_cue(i) {
+            // A known noun of several words ("loading dock", "welding robot") is a noun even
+            // where its first word could start a relation.
+            let long_noun = self.lookup(i, crate::lexicon::is_head).is_some_and(|(_, n)| n >= 2);
+            if !long_noun && let Some(next) = self.try_cue(i) {
                 i = next;
                 continue;
             }
@@ -751,6 +757,11 @@ impl<'a> Parser<'a> {
     /// corridor"): no object; what is said of it is not said of the subject before it.
     /// "An aisle with two racks" at the start of a prompt is a warehouse aisle.
     fn take_place(&mut self, p: &Phrase, kind: PlaceKind, start: usize) {
+        if let Some(n) = p.count.filter(|n| *n > 1.0)
+            && let Some(head) = p.text.split_whitespace().last()
+        {
+            self.place_counts.insert(singular(&head.to_lowercase()), n);
+        }
         let first_words = start <= 1 && self.draft.groups.is_empty() && self.draft.robots.is_empty();
         let aisle = p.text.to_lowercase().split_whitespace().any(|w| singular(w) == "aisle");
         if kind == PlaceKind::Path && aisle && first_words {

@@ -538,6 +538,8 @@ impl Phrases<'_> {
                 let tail_end = nouns.last().map_or(0, Noun::end);
                 let modifier_noun = match &nouns[k] {
                     Noun::Known(Meaning::Room(_) | Meaning::RoomWord | Meaning::RoomAisle(_), ..) => true,
+                    // "a dock leveller", "a wall clock", "a floor lamp".
+                    Noun::Place(_, s, l) if singular(self.word(s + l - 1)) == self.word(s + l - 1) => true,
                     Noun::Known(_, s, l) | Noun::Place(_, s, l) => {
                         let w = singular(self.word(s + l - 1));
                         compound_modifiers().contains(&w.as_str())

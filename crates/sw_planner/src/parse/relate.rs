@@ -16,8 +16,16 @@ impl Parser<'_> {
         if let Some(next) = self.try_surrounded(i) {
             return Some(next);
         }
-        let (cue, len) = cue_at(&self.toks, i)?;
+        let (mut cue, len) = cue_at(&self.toks, i)?;
         let mut end = i + len;
+        // "in 4 rows of 5": five in each row.
+        if let Cue::Rows(Some(n)) = cue
+            && self.word(end) == "of"
+            && let Some((m, l)) = crate::quantity::numeral_at(&self.toks, end + 1)
+        {
+            cue = Cue::RowsOf(n, m.round().max(1.0) as u32);
+            end += 1 + l;
+        }
         // "a clear path to the door": the relation is the place's, not the subject's.
         if self.in_place_clause && self.subject.is_none() {
             if cue.takes_target() {
@@ -508,6 +516,7 @@ impl Parser<'_> {
                     (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
                     (Cue::Row, _) => RelationKind::InRow,
                     (Cue::Rows(n), _) => RelationKind::InRows { n, m: None },
+                    (Cue::RowsOf(n, m), _) => RelationKind::InRows { n: Some(n), m: Some(m) },
                     (Cue::Aisles, _) => RelationKind::InAisles,
                     // "a chair on either side": of the thing named before.
                     (Cue::Facing, []) if !self.group_is_plural(&subject) => {
@@ -769,7 +778,7 @@ pub(super) fn cue_name(c: &Cue) -> &'static str {
         Cue::Between => "between",
         Cue::Around => "around",
         Cue::Row => "in a row",
-        Cue::Rows(_) => "in rows",
+        Cue::Rows(_) | Cue::RowsOf(..) => "in rows",
         Cue::Aisles => "in aisles",
         Cue::Facing => "facing each other",
         Cue::End(_) => "at one end",

@@ -86,8 +86,33 @@ impl Parser<'_> {
         if self.word(j) == "of" && matches!(self.word(j + 1), "them" | "which" | "these" | "those") {
             j += 2;
         }
-        let verbs =
-            ["with", "having", "has", "have", "holding", "carrying", "gets", "get", "equipped", "fitted", "topped"];
+        // "each desk has a chair", "every bay has a leveller": the host is named.
+        let mut named = None;
+        if let Some(p) = self.phrase_at(j, true, super::Bare::Target).ok().flatten() {
+            let host = match &p.head {
+                super::Head::Known(crate::lexicon::Meaning::Category(cat)) => {
+                    self.resolve_group(Some(cat), &singular_head(&p.text))
+                }
+                super::Head::Unknown(label) => self.resolve_group(None, label),
+                _ => None,
+            };
+            if let Some(h) = host {
+                named = Some(h);
+                j = p.end;
+            } else if let super::Head::Place(_) = p.head {
+                // "4 bays, every bay has a leveller": one at each of the places counted.
+                let n =
+                    p.count.filter(|c| *c > 1.0).or_else(|| self.place_counts.get(&singular_head(&p.text)).copied());
+                if let Some(n) = n {
+                    named = Some(format!("@place:{n}"));
+                    j = p.end;
+                }
+            }
+        }
+        let verbs = [
+            "with", "having", "has", "have", "holding", "carrying", "gets", "get", "equipped", "fitted", "topped",
+            "needs", "hosts", "carries", "holds",
+        ];
         if !verbs.contains(&self.word(j)) {
             return None;
         }
@@ -95,14 +120,15 @@ impl Parser<'_> {
         if matches!(self.word(j), "with") {
             j += 1;
         }
-        let host = match &self.subject {
-            Some(Subject::Group(g)) => Some(g.clone()),
-            _ => None,
-        }
-        .or_else(|| match self.resolve_pronoun("they") {
-            Some(Subject::Group(g)) => Some(g),
-            _ => None,
-        })?;
+        let host = named
+            .or_else(|| match &self.subject {
+                Some(Subject::Group(g)) => Some(g.clone()),
+                _ => None,
+            })
+            .or_else(|| match self.resolve_pronoun("they") {
+                Some(Subject::Group(g)) => Some(g),
+                _ => None,
+            })?;
         self.mark(i, j);
         self.each_host = Some(host.clone());
         self.each_taken = 0;
@@ -203,6 +229,13 @@ impl Parser<'_> {
     /// Makes `id` the companions of `host`: one (or the phrase's count) for every host
     /// instance; small things rest on a host that has a surface.
     pub(super) fn add_companion(&mut self, host: &str, id: &str) {
+        if let Some(n) = host.strip_prefix("@place:").and_then(|n| n.parse::<f64>().ok()) {
+            if let Some(g) = self.draft.groups.iter_mut().find(|g| g.id == id) {
+                g.count = Some(g.count.unwrap_or(1.0).max(1.0) * n);
+                g.plural = true;
+            }
+            return;
+        }
         if let Some(g) = self.draft.groups.iter_mut().find(|g| g.id == id) {
             let per = g.count.unwrap_or(1.0).max(1.0);
             g.count_rule = Some(CountRule::EachOf { host: host.to_string(), per });
