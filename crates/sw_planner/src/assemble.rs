@@ -323,7 +323,8 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
     Ok(plan)
 }
 
-/// The same relation pointing at `target`.
+/// The same relation pointing at `target` (every kind listed, so that a new kind with a
+/// target cannot slip through unresolved).
 fn with_target(k: RelationKind, target: String) -> RelationKind {
     match k {
         RelationKind::On { .. } => RelationKind::On { target },
@@ -338,7 +339,28 @@ fn with_target(k: RelationKind, target: String) -> RelationKind {
         RelationKind::FullOf { .. } => RelationKind::FullOf { target },
         RelationKind::EachWith { .. } => RelationKind::EachWith { target },
         RelationKind::Reach { .. } => RelationKind::Reach { target },
-        other => other,
+        RelationKind::Inside { .. } => RelationKind::Inside { target },
+        RelationKind::SetInto { .. } => RelationKind::SetInto { target },
+        RelationKind::AtEndOf { end, .. } => RelationKind::AtEndOf { target, end },
+        RelationKind::OnEdgeOf { .. } => RelationKind::OnEdgeOf { target },
+        RelationKind::OnEachSideOf { .. } => RelationKind::OnEachSideOf { target },
+        RelationKind::Facing { .. } => RelationKind::Facing { target },
+        k @ (RelationKind::Between { .. }
+        | RelationKind::AgainstWall { .. }
+        | RelationKind::OnTwoWalls
+        | RelationKind::InRow
+        | RelationKind::InRows { .. }
+        | RelationKind::InAisles
+        | RelationKind::FacingEachOther
+        | RelationKind::AtEnd { .. }
+        | RelationKind::NearDoor
+        | RelationKind::InCorner { .. }
+        | RelationKind::InCenter
+        | RelationKind::Stacked { .. }
+        | RelationKind::Leaning { .. }
+        | RelationKind::OnOppositeWalls { .. }
+        | RelationKind::InCorners
+        | RelationKind::BackToBack) => k,
     }
 }
 

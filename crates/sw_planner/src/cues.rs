@@ -388,7 +388,11 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             "in the middle of the floor",
         ],
     ) {
-        return Some((Cue::Center, n));
+        // "in the middle of the table" is on the table: the place of a thing, read with it.
+        let of_thing = toks.get(i + n).is_some_and(|w| w.norm == "of");
+        if !of_thing {
+            return Some((Cue::Center, n));
+        }
     }
     // Corners: "in the corner", "in the far left corner", "in the northeast corner".
     if matches!(t.norm.as_str(), "in" | "into" | "at") {
@@ -577,6 +581,10 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             "bolted to",
             "mounted to",
             "fixed to",
+            "clamped to",
+            "clamped on",
+            "screwed to",
+            "clipped to",
             "attached to",
             "on each of",
             "stacked atop",

@@ -126,6 +126,9 @@ pub(crate) struct Parser<'a> {
     taking_pieces: bool,
     /// The place a relation's target named ("the edge of the table"), for `apply`.
     place_of: Option<(PlaceKind, Option<String>)>,
+    /// "on" relations read from "with" ("a table with a mug"): a relation the prompt then
+    /// states for the item ("a cabinet with a plant beside it") takes their place.
+    implicit_on: Vec<(String, String)>,
     /// Places counted so far ("4 bays"), by their singular head, for "every bay has …".
     place_counts: std::collections::HashMap<String, f64>,
     /// Tokens before this index are a title: rooms only, no objects.
@@ -181,6 +184,7 @@ impl<'a> Parser<'a> {
             taking_pieces: false,
             in_place_clause: false,
             place_of: None,
+            implicit_on: Vec::new(),
             place_counts: std::collections::HashMap::new(),
             title_end: 0,
             title_robots: Vec::new(),
@@ -528,8 +532,17 @@ impl<'a> Parser<'a> {
         // Dimensions right after a room phrase belong to the room; before a phrase they
         // wait to see whether an object or a room follows.
         let after_room = self.subject.is_none() && self.draft.room.is_some() && self.previous_was_room(i);
+        // "a table about 1.5 by 0.8 m", "a bench (2 x 1 m)": right after the group's phrase.
+        let after_group = match &self.subject {
+            Some(Subject::Group(g)) if self.previous_ends_group(i, g) => Some(g.clone()),
+            _ => None,
+        };
         if after_room {
             self.set_room_dims(values, text);
+        } else if let Some(g) = after_group {
+            if let Some(group) = self.draft.groups.iter_mut().find(|x| x.id == g) {
+                apply_dims(&mut group.explicit, &values);
+            }
         } else {
             if let Some((d, t, _)) = self.pending_dims.take() {
                 self.set_room_dims(d, t);
@@ -556,6 +569,38 @@ impl<'a> Parser<'a> {
         }
         self.mark(i, i + len);
         Ok(Some(i + len))
+    }
+
+    /// True when the last words before `i` (past fillers such as "about", "measuring" and
+    /// punctuation) end the phrase that introduced group `g`.
+    fn previous_ends_group(&self, i: usize, g: &str) -> bool {
+        let Some(phrase) = self.group(g).map(|x| x.phrase.to_lowercase()) else {
+            return false;
+        };
+        let mut j = i;
+        while j > 0 {
+            j -= 1;
+            let t = &self.toks[j];
+            let skip = matches!(t.kind, TokenKind::Comma | TokenKind::Other)
+                || matches!(
+                    t.norm.as_str(),
+                    "about"
+                        | "approximately"
+                        | "roughly"
+                        | "around"
+                        | "measuring"
+                        | "is"
+                        | "that"
+                        | "which"
+                        | "sized"
+                        | "of"
+                );
+            if skip {
+                continue;
+            }
+            return t.kind == TokenKind::Word && phrase.ends_with(&t.norm);
+        }
+        false
     }
 
     fn unit_factor(&self, i: usize) -> Option<f64> {
@@ -865,6 +910,7 @@ impl<'a> Parser<'a> {
             && self.group_is_small(id)
         {
             self.relate(id, RelationKind::On { target: host.clone() });
+            self.implicit_on.push((id.to_string(), host.clone()));
             self.on_host.push((id.to_string(), host.clone()));
             self.take_support(&host, id);
             self.support_taken += 1;
@@ -886,6 +932,7 @@ impl<'a> Parser<'a> {
         self.group(id).and_then(|g| g.category).and_then(sw_catalog::find).is_some_and(|c| {
             matches!(c.placement, PlacementKind::Floor | PlacementKind::AgainstWall) && c.has_tag("surface")
                 || c.has_tag("storage")
+                || (c.has_tag("container") && c.has_tag("open"))
         })
     }
 

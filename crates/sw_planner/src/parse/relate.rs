@@ -234,7 +234,7 @@ impl Parser<'_> {
             k -= 1;
             match self.word(k) {
                 "each" | "every" | "both" => return true,
-                "of" | "the" | "these" | "those" | "one" | "its" | "their" => {}
+                "of" | "the" | "these" | "those" | "one" | "its" | "their" | "a" | "an" => {}
                 _ => return false,
             }
         }
@@ -573,6 +573,18 @@ impl Parser<'_> {
                 if kind.targets().contains(&subject.as_str()) {
                     return;
                 }
+                // A stated placement replaces the "on" a "with" implied, and ends that list.
+                let placement = !kind.is_group_formation() && !matches!(kind, RelationKind::EachWith { .. });
+                if placement && let Some(k) = self.implicit_on.iter().position(|(s, _)| s == &subject) {
+                    let (s, host) = self.implicit_on.remove(k);
+                    if kind != (RelationKind::On { target: host.clone() }) {
+                        self.draft
+                            .relations
+                            .retain(|(x, r)| !(x == &s && *r == RelationKind::On { target: host.clone() }));
+                        self.on_host.retain(|(x, h)| !(x == &s && h == &host));
+                        self.with_host = None;
+                    }
+                }
                 self.relate(&subject, kind);
             }
         }
@@ -591,6 +603,10 @@ impl Parser<'_> {
         let thing = of.map(|t| vec![t]);
         Some(match (place, thing) {
             (PlaceKind::Edge, Some(t)) => (Cue::OnEdge, t),
+            // "bolted to one of the ends of the table", "on the corner of the desk".
+            (PlaceKind::End | PlaceKind::Start | PlaceKind::Side | PlaceKind::Corner, Some(t)) if *cue == Cue::On => {
+                (Cue::OnEdge, t)
+            }
             (PlaceKind::Start, Some(t)) => (Cue::EndOf(Some(EndOf::Start)), t),
             (PlaceKind::End, Some(t)) => (Cue::EndOf(None), t),
             (PlaceKind::End | PlaceKind::Start, None) if room => (Cue::End(None), Vec::new()),
@@ -598,7 +614,7 @@ impl Parser<'_> {
             (PlaceKind::Front, Some(t)) => (Cue::InFront, t),
             (PlaceKind::Back, Some(t)) => (Cue::Behind, t),
             (PlaceKind::Top | PlaceKind::Bottom, Some(t)) => (Cue::On, t),
-            (PlaceKind::Middle, Some(t)) if *cue == Cue::On => (Cue::On, t),
+            (PlaceKind::Middle, Some(t)) if matches!(cue, Cue::On | Cue::In) => (Cue::On, t),
             (PlaceKind::Middle | PlaceKind::Corner, Some(t)) => (Cue::Near, t),
             (PlaceKind::Middle, None) => (Cue::Center, Vec::new()),
             (PlaceKind::Corner, None) => (Cue::Corner(None), Vec::new()),
