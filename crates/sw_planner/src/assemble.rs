@@ -445,11 +445,14 @@ fn resolve_count(count: Option<f64>, plural: bool, phrase: &str, notes: &mut Vec
         None => 1.0,
     };
     if n < 0.5 {
-        notes.push(Approximation {
-            text: phrase.to_string(),
-            became: "left out".into(),
-            reason: "the count is zero".into(),
-        });
+        // A retraction already said why.
+        if !notes.iter().any(|a| a.text == phrase && a.became == "left out") {
+            notes.push(Approximation {
+                text: phrase.to_string(),
+                became: "left out".into(),
+                reason: "the count is zero".into(),
+            });
+        }
         return None;
     }
     if n.fract() != 0.0 {

@@ -12,6 +12,7 @@ use crate::phrase::PlaceKind;
 pub(crate) use crate::phrase::{Bare, Head, NounPhrase as Phrase, Phrases};
 use crate::text::{Token, TokenKind, number_word, singular};
 
+mod amend;
 mod discourse;
 mod relate;
 mod support;
@@ -65,6 +66,8 @@ pub(crate) struct GroupDraft {
     /// Stacks: how many columns ("three stacks of …") and layers ("… four high").
     pub stacks: Option<f64>,
     pub layers: Option<f64>,
+    /// Named by a definite phrase with nothing to refer to ("the bowls" first).
+    pub accommodated: bool,
 }
 
 #[derive(Debug, Clone)]
@@ -270,6 +273,18 @@ impl<'a> Parser<'a> {
                 i = next;
                 continue;
             }
+            if let Some(next) = self.try_retraction(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_times_count(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_count_of_them(i) {
+                i = next;
+                continue;
+            }
             if let Some(next) = self.try_layers(i) {
                 i = next;
                 continue;
@@ -375,6 +390,7 @@ impl<'a> Parser<'a> {
             let robots = std::mem::take(&mut self.title_robots);
             self.draft.robots.extend(robots);
         }
+        self.merge_restated();
         // A title's words name the scene.
         let title_end = self.title_end.min(self.used.len());
         self.mark(0, title_end);
@@ -747,7 +763,12 @@ impl<'a> Parser<'a> {
                 // "the racks", "the bench": a group already introduced.
                 let raw_head =
                     p.text.split_whitespace().last().map(|h| singular(&h.to_lowercase())).unwrap_or_default();
-                if self.is_definite(start)
+                // "the teacher's desk" is a desk of its own, not one of the desks before.
+                let possessed =
+                    p.text.to_lowercase().split_whitespace().any(|w| w.ends_with("'s") || w.ends_with("s'"));
+                let definite = self.is_definite(start);
+                if definite
+                    && !possessed
                     && let Some(g) = self.resolve_group(Some(cat), &raw_head)
                 {
                     self.bind(Subject::Group(g));
@@ -773,6 +794,12 @@ impl<'a> Parser<'a> {
                     });
                 }
                 let id = self.new_group(Some(cat), cat.replace('_', " "), &p, explicit);
+                if definite
+                    && !possessed
+                    && let Some(g) = self.draft.groups.last_mut()
+                {
+                    g.accommodated = true;
+                }
                 self.after_new_group(&id);
             }
             Head::Unknown(label) => {
@@ -863,6 +890,7 @@ impl<'a> Parser<'a> {
             count_rule: None,
             stacks: None,
             layers: None,
+            accommodated: false,
         });
         id
     }
@@ -888,7 +916,17 @@ impl<'a> Parser<'a> {
                 self.each_taken == 0 || (and_only && self.group(id).is_some_and(|g| g.count.is_none_or(|c| c <= 1.0)));
             if joined {
                 self.each_taken += 1;
-                self.add_companion(&host, id);
+                // "each loaded with boxes" (no count): a load, not one per host.
+                let uncounted_load = self.support.is_some() && self.group(id).is_some_and(|g| g.count.is_none());
+                if !uncounted_load {
+                    self.add_companion(&host, id);
+                }
+                if self.support.is_some() {
+                    self.take_support(&host, id);
+                    if !self.group_is_small(id) {
+                        self.relate(id, RelationKind::On { target: host.clone() });
+                    }
+                }
                 // "each with a monitor on it": what follows is said of the companion.
                 self.subject = Some(Subject::Group(id.to_string()));
                 self.mentions.push(Subject::Group(id.to_string()));

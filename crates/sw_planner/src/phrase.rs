@@ -575,7 +575,13 @@ impl Phrases<'_> {
             let label = self.label(first, end);
             return Some((Head::Unknown(label), first, end - first, nouns[..k].to_vec()));
         }
-        // Only unknown words: a proxy, when something marks them as a noun phrase.
+        // Only unknown words: a proxy, when something marks them as a noun phrase (a count,
+        // a modifier, a list or a relation around it, "x2" after it).
+        let counted_after = nouns.last().is_some_and(|n| {
+            self.toks.get(n.end()).is_some_and(|t| t.kind == TokenKind::Times)
+                && self.toks.get(n.end() + 1).is_some_and(|t| t.number().is_some())
+        });
+        let has_modifier = has_modifier || counted_after;
         if !allow_unknown || !(has_modifier || bare != Bare::No) || unknown_tail.is_empty() {
             return None;
         }

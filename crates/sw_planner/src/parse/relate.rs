@@ -353,8 +353,13 @@ impl Parser<'_> {
                 Some(g) => g,
                 None => {
                     let id = self.new_group(Some(cat), cat.replace('_', " "), &p2, p.explicit);
-                    if definite && !matches!(cue, Cue::On | Cue::Under) {
-                        self.note_accommodated(&p.text, cat);
+                    if definite {
+                        if let Some(g) = self.draft.groups.last_mut() {
+                            g.accommodated = true;
+                        }
+                        if !matches!(cue, Cue::On | Cue::Under) {
+                            self.note_accommodated(&p.text, cat);
+                        }
                     }
                     id
                 }
@@ -604,9 +609,7 @@ impl Parser<'_> {
         Some(match (place, thing) {
             (PlaceKind::Edge, Some(t)) => (Cue::OnEdge, t),
             // "bolted to one of the ends of the table", "on the corner of the desk".
-            (PlaceKind::End | PlaceKind::Start | PlaceKind::Side | PlaceKind::Corner, Some(t)) if *cue == Cue::On => {
-                (Cue::OnEdge, t)
-            }
+            (PlaceKind::End | PlaceKind::Start | PlaceKind::Corner, Some(t)) if *cue == Cue::On => (Cue::OnEdge, t),
             (PlaceKind::Start, Some(t)) => (Cue::EndOf(Some(EndOf::Start)), t),
             (PlaceKind::End, Some(t)) => (Cue::EndOf(None), t),
             (PlaceKind::End | PlaceKind::Start, None) if room => (Cue::End(None), Vec::new()),

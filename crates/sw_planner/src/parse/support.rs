@@ -113,11 +113,17 @@ impl Parser<'_> {
             "with", "having", "has", "have", "holding", "carrying", "gets", "get", "equipped", "fitted", "topped",
             "needs", "hosts", "carries", "holds",
         ];
-        if !verbs.contains(&self.word(j)) {
+        // "each loaded with two drums", "each stocked with bins": a load on every host.
+        let load = match self.word(j) {
+            "loaded" | "stacked" | "piled" | "laden" | "heaped" => Some(Support::Loaded),
+            "filled" | "stocked" | "packed" | "full" => Some(Support::FullOf),
+            _ => None,
+        };
+        if !verbs.contains(&self.word(j)) && !(load.is_some() && matches!(self.word(j + 1), "with" | "of")) {
             return None;
         }
         j += 1;
-        if matches!(self.word(j), "with") {
+        if matches!(self.word(j), "with" | "of") {
             j += 1;
         }
         let host = named
@@ -133,6 +139,7 @@ impl Parser<'_> {
         self.each_host = Some(host.clone());
         self.each_taken = 0;
         self.with_host = None;
+        self.support = load;
         self.subject = Some(Subject::Group(host));
         Some(j)
     }
