@@ -923,9 +923,7 @@ impl<'a> Parser<'a> {
                 }
                 if self.support.is_some() {
                     self.take_support(&host, id);
-                    if !self.group_is_small(id) {
-                        self.relate(id, RelationKind::On { target: host.clone() });
-                    }
+                    self.relate(id, RelationKind::On { target: host.clone() });
                 }
                 // "each with a monitor on it": what follows is said of the companion.
                 self.subject = Some(Subject::Group(id.to_string()));
@@ -985,9 +983,13 @@ impl<'a> Parser<'a> {
     }
 
     fn relate(&mut self, subject: &str, kind: RelationKind) {
+        let also = crate::said::implied(&kind);
         let entry = (subject.to_string(), kind);
         if !self.draft.relations.contains(&entry) {
             self.draft.relations.push(entry);
+        }
+        if let Some(k) = also {
+            self.relate(subject, k);
         }
     }
 }

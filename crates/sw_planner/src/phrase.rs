@@ -558,6 +558,14 @@ impl Phrases<'_> {
                     }
                 }
             }
+            // "a Kinova arm", "the UR5e robot": the model, not the generic word after it.
+            if let (Noun::Known(Meaning::Robot(generic), ..), Some(Noun::Known(m @ Meaning::Robot(_), s, _))) =
+                (&nouns[k], k.checked_sub(1).map(|p| &nouns[p]))
+                && !generic.exact
+            {
+                let end = nouns[k].end();
+                return Some((Head::Known(m.clone()), *s, end - s, nouns[..k - 1].to_vec()));
+            }
             if !compound {
                 let (head, s, l) = match &nouns[k] {
                     Noun::Known(m, s, l) => (Head::Known(m.clone()), *s, *l),

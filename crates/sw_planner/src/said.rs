@@ -38,6 +38,20 @@ impl Said {
     }
 }
 
+/// The relation a stated one implies and the layout already keeps: resting inside a
+/// thing or on its edge is resting on one of its surfaces; beyond the end of one thing is
+/// at the end of its row of one. Both go into the plan, so the scene keeps the stated
+/// relation as far as the layout can while it learns the new kinds.
+pub(crate) fn implied(kind: &RelationKind) -> Option<RelationKind> {
+    match kind {
+        RelationKind::Inside { target } | RelationKind::OnEdgeOf { target } => {
+            Some(RelationKind::On { target: target.clone() })
+        }
+        RelationKind::AtEndOf { target, .. } => Some(RelationKind::AtEndOfRow { target: target.clone() }),
+        _ => None,
+    }
+}
+
 /// Categories a thing is set into rather than put in ("a sink in the counter").
 pub(crate) fn is_set_into(subject: Option<&str>, target: Option<&str>) -> bool {
     let inset = subject.and_then(sw_catalog::find).is_some_and(|c| matches!(c.name, "sink" | "stove"));
