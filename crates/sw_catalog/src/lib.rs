@@ -8,11 +8,13 @@
 //! onto every shelf level.
 
 mod categories;
+mod kinds;
 mod params;
 mod proxy;
 
 use sw_geom::{Asset, AssetBuilder, MassModel, Rng};
 
+pub use kinds::{Kind, KindPrior};
 pub use params::{ParamDef, Params};
 pub use proxy::proxy_asset;
 pub use sw_geom::PlacementKind;
@@ -28,6 +30,14 @@ pub struct Category {
     pub synonyms: &'static [&'static str],
     /// Domains and traits: `warehouse`, `storage`, `tall`, `electrical`, `tabletop` …
     pub tags: &'static [&'static str],
+    /// One line saying what it is, for matching nouns the catalog lacks by meaning.
+    pub description: &'static str,
+    /// What it is a kind of (hypernyms, singular, lowercase: a toaster is a "kitchen
+    /// appliance" and an "appliance"). A noun the catalog lacks maps to this category
+    /// only when the noun's own head is one of these or one of its names' heads.
+    pub is_a: &'static [&'static str],
+    /// Its coarse class, with the size prior of a proxy of that class.
+    pub kind: Kind,
     pub placement: PlacementKind,
     /// Every category has `width`, `depth` and `height` (its overall box) first.
     pub params: &'static [ParamDef],

@@ -103,6 +103,9 @@ impl Params {
         if cat.has_tag("round") || cat.has_tag("uniform") {
             one_size(cat, req, &mut values, &mut notes);
         }
+        if cat.has_tag("handled") {
+            body_beside_handle(cat, req, &mut values, &mut notes);
+        }
         Ok((Params { values }, notes))
     }
 }
@@ -135,6 +138,49 @@ fn one_size(cat: &Category, req: &AssetRequest, values: &mut [(String, f64)], no
     }
     for &i in &idx {
         values[i].1 = v;
+    }
+}
+
+/// Room a side handle takes beside a round body, m (a mug's loop: 2.5 cm of grip and
+/// its bars).
+pub(crate) const HANDLE_REACH: f64 = 0.03;
+
+/// A thing with a handle on its side (a mug) is as wide as its body and its handle:
+/// `width` holds both, so `depth` (the body) is at most `width - HANDLE_REACH`. When the
+/// width is the smaller of the two given, the body shrinks to fit it (noted only when the
+/// body size was asked for).
+fn body_beside_handle(cat: &Category, req: &AssetRequest, values: &mut [(String, f64)], notes: &mut Vec<String>) {
+    let get = |values: &[(String, f64)], n: &str| values.iter().position(|(v, _)| v == n);
+    let (Some(wi), Some(di)) = (get(values, "width"), get(values, "depth")) else {
+        return;
+    };
+    let (w, d) = (values[wi].1, values[di].1);
+    let body = w - HANDLE_REACH;
+    if d <= body {
+        return;
+    }
+    let floor = cat.param("depth").map_or(0.0, |p| p.min);
+    if body >= floor {
+        if req.overrides.iter().any(|(n, _)| n == "depth") {
+            notes.push(format!(
+                "{}: its body {} does not fit beside the handle in {}; used {}",
+                cat.display,
+                trim(d),
+                trim(w),
+                trim(body)
+            ));
+        }
+        values[di].1 = body;
+    } else {
+        // Too narrow for the smallest body: widen to hold it.
+        values[di].1 = floor;
+        values[wi].1 = floor + HANDLE_REACH;
+        notes.push(format!(
+            "{} width {} cannot hold a body and a handle; used {}",
+            cat.display,
+            trim(w),
+            trim(floor + HANDLE_REACH)
+        ));
     }
 }
 

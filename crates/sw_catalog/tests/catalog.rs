@@ -287,6 +287,64 @@ fn registry_names_synonyms_tags_and_params_are_consistent() {
 }
 
 #[test]
+fn every_category_says_what_it_is_and_what_it_is_a_kind_of() {
+    for cat in categories() {
+        assert!(cat.description.split_whitespace().count() >= 3, "{}: description '{}'", cat.name, cat.description);
+        assert_eq!(cat.description, cat.description.trim(), "{}", cat.name);
+        assert!(!cat.is_a.is_empty(), "{} is a kind of nothing", cat.name);
+        for h in cat.is_a {
+            assert_eq!(*h, h.to_lowercase(), "{}: is-a '{h}'", cat.name);
+            assert!(!h.is_empty() && *h != cat.display, "{}: is-a '{h}'", cat.name);
+        }
+        assert_eq!(sw_catalog::Kind::from_name(cat.kind.name()), Some(cat.kind), "{}", cat.name);
+        // A category's kind agrees with what it is: free things have an on-surface prior.
+        let prior = cat.kind.prior();
+        assert!(prior.size.iter().all(|v| *v > 0.0));
+    }
+}
+
+/// A Panda's fingers open 8 cm: a mug is grasped around its body, so the body of every
+/// default mug is at most 8 cm across, and a mug asked for narrower than its body and
+/// handle (an "8 cm mug") is made narrower instead of being widened to 12 cm.
+#[test]
+fn a_mug_body_fits_a_panda_gripper_and_narrow_mugs_stay_narrow() {
+    for seed in 0..40 {
+        let a = generate(&AssetRequest::new("mug", seed)).unwrap();
+        let body = a.param("depth").unwrap();
+        assert!(body <= 0.0805, "seed {seed}: mug body {body}");
+        assert!(a.notes.is_empty(), "{:?}", a.notes);
+    }
+    let mut req = AssetRequest::new("mug", 3);
+    req.overrides = vec![("width".into(), 0.09)];
+    let a = assert_valid(find("mug").unwrap(), &req);
+    let s = a.bounds().size();
+    assert!((s[0] - 0.09).abs() < 0.002 && s[1] <= 0.0605, "{s:?}");
+    assert!(a.notes.is_empty(), "an in-range width needs no note: {:?}", a.notes);
+}
+
+#[test]
+fn everyday_doors_drawers_and_lids_open() {
+    use sw_geom::JointKind;
+    for (name, kind, moving) in [
+        ("dishwasher", JointKind::Hinge, 1),
+        ("toaster_oven", JointKind::Hinge, 1),
+        ("washing_machine", JointKind::Hinge, 1),
+        ("tumble_dryer", JointKind::Hinge, 1),
+        ("chest_freezer", JointKind::Hinge, 1),
+        ("wardrobe", JointKind::Hinge, 2),
+        ("dresser", JointKind::Slide, 3),
+        ("nightstand", JointKind::Slide, 2),
+        ("toy_chest", JointKind::Hinge, 1),
+        ("display_fridge", JointKind::Hinge, 1),
+    ] {
+        let a = generate(&AssetRequest::new(name, 0)).unwrap();
+        let joints: Vec<_> = a.links.iter().filter_map(|l| l.joint).filter(|j| j.kind == kind).collect();
+        assert!(joints.len() >= moving, "{name}: {} {kind:?} joints", joints.len());
+        assert!(joints.iter().all(|j| j.range[1] > 0.5 || kind == JointKind::Slide), "{name}: {joints:?}");
+    }
+}
+
+#[test]
 fn out_of_range_overrides_are_clamped_with_a_note() {
     for cat in categories() {
         let mut req = AssetRequest::new(cat.name, 3);

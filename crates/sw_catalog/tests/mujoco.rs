@@ -168,7 +168,27 @@ fn a_box_on_every_support_surface_stays_there_at_20_seeds() {
 const RESTING_CONTACTS: u32 = 20;
 /// Open vessels and totes stand on their floor alone: a box and a cylinder, ≤ 4 each.
 const OPEN_CONTAINER_CONTACTS: u32 = 8;
-const OPEN_CONTAINERS: &[&str] = &["mug", "cup", "bowl", "plate", "beaker", "bin", "tray", "trash_can"];
+const OPEN_CONTAINERS: &[&str] = &[
+    "mug",
+    "cup",
+    "bowl",
+    "plate",
+    "beaker",
+    "bin",
+    "tray",
+    "trash_can",
+    "frying_pan",
+    "saucepan",
+    "stock_pot",
+    "wok",
+    "colander",
+    "measuring_cup",
+    "drinking_glass",
+    "bucket",
+    "laundry_basket",
+    "shopping_basket",
+    "dish_rack",
+];
 
 #[test]
 fn a_resting_movable_asset_makes_few_contacts_with_its_support() {

@@ -6,7 +6,7 @@ use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng, Shape, sphere_mesh};
 use super::kit::{WOOD, collider_between, decal_between, ordered, pick, shade, slab};
 use super::parts::{round_collider, solid_box};
 use super::shapes::{ROUND, prism, revolve, rounded_rect};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// Leaf greens, dark to light.
 const LEAVES: &[[f32; 4]] =
@@ -53,6 +53,9 @@ pub(crate) const POTTED_PLANT: Category = Category {
         "bush",
     ],
     tags: &["office", "home", "retail", "agriculture", "greenhouse", "decor", "small", "round"],
+    description: "a house plant in a pot",
+    is_a: &["plant", "pot"],
+    kind: Kind::Plant,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.35, 0.1, 1.2, 0.2, "foliage diameter"),
@@ -148,6 +151,9 @@ pub(crate) const PLANTER_BOX: Category = Category {
         "flower box",
     ],
     tags: &["agriculture", "greenhouse", "home", "surface"],
+    description: "a raised planter box with plants",
+    is_a: &["planter", "container", "box"],
+    kind: Kind::Plant,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.2, 0.5, 3.0, 0.15, "along X"),
@@ -205,6 +211,9 @@ pub(crate) const SEEDLING_TRAY: Category = Category {
     display: "seedling tray",
     synonyms: &["seed tray", "plant tray", "propagation tray", "cell tray", "plug tray", "seedlings"],
     tags: &["agriculture", "greenhouse", "tabletop", "small"],
+    description: "a tray of seedlings",
+    is_a: &["tray", "plant"],
+    kind: Kind::Plant,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.54, 0.25, 0.6, 0.05, "along X"),
@@ -260,6 +269,9 @@ pub(crate) const HAY_BALE: Category = Category {
     display: "hay bale",
     synonyms: &["straw bale", "bale of hay", "hay", "bale", "square bale"],
     tags: &["agriculture", "stackable", "small"],
+    description: "a square bale of hay",
+    is_a: &["bale", "fodder"],
+    kind: Kind::Container,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.9, 0.6, 1.2, 0.1, "along X"),
@@ -303,6 +315,9 @@ pub(crate) const FEED_SACK: Category = Category {
         "sack of flour",
     ],
     tags: &["agriculture", "warehouse", "stackable", "small"],
+    description: "a full sack of feed or flour",
+    is_a: &["sack", "bag", "container"],
+    kind: Kind::Container,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.65, 0.3, 1.0, 0.1, "along X, lying flat"),

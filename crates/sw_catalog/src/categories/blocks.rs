@@ -5,7 +5,7 @@ use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng, Shape, sphere_mesh};
 
 use super::kit::{pick, slab};
 use super::parts::round_solid;
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// Toy-block colours.
 const BRIGHT: &[[f32; 4]] = &[
@@ -26,6 +26,9 @@ pub(crate) const CUBE: Category = Category {
     display: "cube",
     synonyms: &["block", "toy block", "wooden block", "building block", "small cube", "dice"],
     tags: &["tabletop", "small", "graspable", "primitive", "uniform"],
+    description: "a small solid cube or toy block for picking and stacking",
+    is_a: &["block", "toy", "shape"],
+    kind: Kind::Toy,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.05, 0.01, 0.3, 0.1, "edge (all three edges follow it)"),
@@ -52,6 +55,9 @@ pub(crate) const CYLINDER: Category = Category {
     display: "cylinder",
     synonyms: &["cylindrical block", "puck", "round block", "peg", "rod", "dowel"],
     tags: &["tabletop", "small", "graspable", "primitive", "round"],
+    description: "a small solid cylinder or peg for picking",
+    is_a: &["block", "toy", "shape"],
+    kind: Kind::Toy,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.05, 0.01, 0.3, 0.12, "diameter"),
@@ -80,6 +86,9 @@ pub(crate) const SPHERE: Category = Category {
     display: "sphere",
     synonyms: &["ball", "small ball", "rubber ball", "tennis ball", "marble", "orb"],
     tags: &["tabletop", "small", "graspable", "primitive", "round", "uniform"],
+    description: "a small ball",
+    is_a: &["ball", "toy", "shape"],
+    kind: Kind::Toy,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.06, 0.01, 0.4, 0.12, "diameter"),

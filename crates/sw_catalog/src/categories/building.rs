@@ -9,7 +9,7 @@ use super::kit::{
     slab, strut,
 };
 use super::parts::{Hinge, MOVING_GAP, decal_on, hinged_door};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const DOOR: Category = Category {
     name: "door",
@@ -24,6 +24,9 @@ pub(crate) const DOOR: Category = Category {
         "doorway frame",
     ],
     tags: &["building", "office", "home", "wall"],
+    description: "a hinged door in a wall",
+    is_a: &["doorway", "opening"],
+    kind: Kind::Fixture,
     placement: PlacementKind::InWall,
     params: &[
         ParamDef::new("width", 1.0, 0.8, 1.4, 0.08, "frame width along X"),
@@ -77,6 +80,9 @@ pub(crate) const ROLL_UP_DOOR: Category = Category {
         "rollup door",
     ],
     tags: &["building", "warehouse", "garage", "logistics", "wall"],
+    description: "a roll-up shutter door in a wall",
+    is_a: &["door", "opening"],
+    kind: Kind::Fixture,
     placement: PlacementKind::InWall,
     params: &[
         ParamDef::new("width", 2.6, 1.5, 4.0, 0.12, "along X, guides included"),
@@ -134,6 +140,9 @@ pub(crate) const WINDOW: Category = Category {
     display: "window",
     synonyms: &["window frame", "glass window", "casement window", "sash window", "wall window"],
     tags: &["building", "office", "home", "wall"],
+    description: "a glazed window in a wall",
+    is_a: &["opening"],
+    kind: Kind::Fixture,
     placement: PlacementKind::InWall,
     params: &[
         ParamDef::new("width", 1.2, 0.5, 2.5, 0.15, "along X"),
@@ -183,6 +192,9 @@ pub(crate) const LADDER: Category = Category {
     display: "ladder",
     synonyms: &["step ladder", "stepladder", "a-frame ladder", "step stool ladder", "rolling ladder", "library ladder"],
     tags: &["warehouse", "workshop", "garage", "storage", "tall"],
+    description: "a folding step ladder",
+    is_a: &["steps"],
+    kind: Kind::Fixture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.5, 0.4, 0.7, 0.08, "along X"),

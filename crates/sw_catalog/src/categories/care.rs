@@ -5,22 +5,16 @@ use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng, Shape};
 
 use super::kit::{Axis, DARK, GLASS, INK, LABEL_WHITE, STEEL, collider_between, decal_between, pick, rod, shade, slab};
 use super::shapes::{prism, rounded_rect};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const HOSPITAL_BED: Category = Category {
     name: "hospital_bed",
     display: "hospital bed",
-    synonyms: &[
-        "bed",
-        "patient bed",
-        "medical bed",
-        "care bed",
-        "exam table",
-        "examination table",
-        "stretcher",
-        "gurney",
-    ],
+    synonyms: &["patient bed", "medical bed", "care bed", "stretcher", "gurney"],
     tags: &["hospital", "medical", "furniture"],
+    description: "an adjustable hospital bed with side rails",
+    is_a: &["bed", "furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 1.0, 0.8, 1.6, 0.06, "along X"),
@@ -95,6 +89,9 @@ pub(crate) const IV_POLE: Category = Category {
     display: "iv pole",
     synonyms: &["iv stand", "drip stand", "infusion stand", "iv drip", "infusion pole", "drip pole"],
     tags: &["hospital", "medical", "tall", "round"],
+    description: "a wheeled iv drip stand",
+    is_a: &["pole", "stand", "medical equipment"],
+    kind: Kind::Fixture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.55, 0.45, 0.7, 0.06, "base diameter"),
@@ -165,6 +162,9 @@ pub(crate) const CHECKOUT_COUNTER: Category = Category {
         "service desk",
     ],
     tags: &["retail", "office", "furniture", "surface"],
+    description: "a shop checkout counter with a till",
+    is_a: &["counter", "desk", "furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 2.2, 1.2, 3.5, 0.1, "along X"),
@@ -209,6 +209,9 @@ pub(crate) const VENDING_MACHINE: Category = Category {
     display: "vending machine",
     synonyms: &["snack machine", "drinks machine", "soda machine", "vending unit", "beverage machine", "drink machine"],
     tags: &["retail", "office", "appliance", "tall"],
+    description: "a snack and drinks vending machine",
+    is_a: &["machine", "dispenser", "appliance"],
+    kind: Kind::LargeAppliance,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.9, 0.6, 1.3, 0.1, "along X"),

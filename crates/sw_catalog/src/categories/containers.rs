@@ -8,13 +8,16 @@ use super::kit::{
 };
 use super::parts::{open_box, round_collider, vessel_collider};
 use super::shapes::{ROUND, revolve};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const CARDBOARD_BOX: Category = Category {
     name: "cardboard_box",
     display: "cardboard box",
     synonyms: &["box", "carton", "parcel", "package", "shipping box", "moving box"],
     tags: &["warehouse", "container", "small", "stackable", "logistics"],
+    description: "a corrugated cardboard shipping box with taped flaps",
+    is_a: &["box", "container", "package"],
+    kind: Kind::Container,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.4, 0.05, 1.2, 0.25, "along X"),
@@ -56,6 +59,9 @@ pub(crate) const CRATE: Category = Category {
         "lidded crate",
     ],
     tags: &["warehouse", "logistics", "retail", "container", "small", "stackable"],
+    description: "a stackable plastic or wooden crate for carrying goods",
+    is_a: &["container", "box"],
+    kind: Kind::Container,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.6, 0.2, 1.2, 0.15, "along X"),
@@ -153,6 +159,9 @@ pub(crate) const BIN: Category = Category {
         "tub",
     ],
     tags: &["warehouse", "logistics", "container", "small", "stackable", "open", "tabletop"],
+    description: "an open plastic tote bin for parts and picking",
+    is_a: &["container", "box", "tub"],
+    kind: Kind::Container,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.6, 0.2, 1.0, 0.1, "along X"),
@@ -209,6 +218,9 @@ pub(crate) const PALLET: Category = Category {
     display: "pallet",
     synonyms: &["euro pallet", "eur pallet", "epal pallet", "wooden pallet", "shipping pallet", "skid", "empty pallet"],
     tags: &["warehouse", "logistics", "surface", "stackable", "low"],
+    description: "a wooden euro pallet that goods are stacked on for forklifts",
+    is_a: &["platform"],
+    kind: Kind::Container,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.2, 0.6, 1.4, 0.0, "length along X (EUR: 1.2)"),
@@ -287,6 +299,9 @@ pub(crate) const DRUM: Category = Category {
         "keg",
     ],
     tags: &["warehouse", "industrial", "garage", "logistics", "container", "round", "heavy"],
+    description: "a steel or plastic 200 litre drum for oil or chemicals",
+    is_a: &["container", "barrel"],
+    kind: Kind::Container,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.585, 0.35, 0.7, 0.04, "diameter"),
@@ -371,6 +386,9 @@ pub(crate) const TRASH_CAN: Category = Category {
         "trash bin",
     ],
     tags: &["office", "kitchen", "retail", "hospital", "container", "round", "open", "small"],
+    description: "a waste bin for rubbish with an open top",
+    is_a: &["container", "bin", "receptacle"],
+    kind: Kind::Container,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.4, 0.25, 0.6, 0.12, "rim diameter"),

@@ -9,7 +9,7 @@ use super::kit::{
 };
 use super::parts::{Hinge, MOVING_GAP, carcass, decal_on, hinged_door};
 use super::shapes::revolve;
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const SERVER_RACK: Category = Category {
     name: "server_rack",
@@ -25,6 +25,9 @@ pub(crate) const SERVER_RACK: Category = Category {
         "rack server",
     ],
     tags: &["data_centre", "electrical", "tall", "storage", "office"],
+    description: "a 19 inch server rack full of servers",
+    is_a: &["rack", "computer", "equipment"],
+    kind: Kind::Machine,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.6, 0.6, 0.8, 0.0, "along X"),
@@ -109,6 +112,9 @@ pub(crate) const SWITCHGEAR: Category = Category {
         "ups cabinet",
     ],
     tags: &["electrical", "industrial", "data_centre", "utility", "hazard", "tall", "heavy"],
+    description: "electrical switchgear cabinets",
+    is_a: &["electrical equipment", "equipment", "cabinet"],
+    kind: Kind::Machine,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 2.4, 0.8, 4.8, 0.2, "the line-up along X, about 0.8 m per section"),
@@ -181,6 +187,9 @@ pub(crate) const TRANSFORMER: Category = Category {
         "dry-type transformer",
     ],
     tags: &["electrical", "industrial", "utility", "hazard", "heavy"],
+    description: "an electrical power transformer",
+    is_a: &["electrical equipment", "equipment"],
+    kind: Kind::Machine,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.8, 1.0, 3.0, 0.12, "along X, the radiators included"),
@@ -249,17 +258,11 @@ fn build_transformer(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const COOLING_UNIT: Category = Category {
     name: "cooling_unit",
     display: "cooling unit",
-    synonyms: &[
-        "crac unit",
-        "computer room air conditioner",
-        "air conditioner",
-        "air conditioning unit",
-        "hvac unit",
-        "air handler",
-        "in-row cooler",
-        "chiller",
-    ],
+    synonyms: &["crac unit", "computer room air conditioner", "hvac unit", "air handler", "in-row cooler", "chiller"],
     tags: &["data_centre", "utility", "tall", "ventilation"],
+    description: "a computer room cooling unit",
+    is_a: &["hvac", "equipment"],
+    kind: Kind::Machine,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 1.7, 0.3, 2.6, 0.15, "along X"),
@@ -310,6 +313,9 @@ pub(crate) const CABLE_TRAY: Category = Category {
     display: "cable tray",
     synonyms: &["cable ladder", "cable rack", "wire tray", "cable trunking", "cable runway", "cable management tray"],
     tags: &["electrical", "data_centre", "industrial", "wall"],
+    description: "a cable tray carrying cables overhead",
+    is_a: &["tray"],
+    kind: Kind::Fixture,
     placement: PlacementKind::WallMounted,
     params: &[
         ParamDef::new("width", 3.0, 1.0, 6.0, 0.2, "run length along X"),

@@ -4,7 +4,7 @@ use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng, Shape};
 
 use super::kit::{INK, collider_between, decal_between, pick, shade, slab};
 use super::shapes::{ROUND, prism, revolve, rounded_rect};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// Plastic and aluminium housings.
 const HOUSING: &[[f32; 4]] = &[
@@ -20,17 +20,11 @@ const SCREEN: [f32; 4] = [0.05, 0.07, 0.1, 1.0];
 pub(crate) const MONITOR: Category = Category {
     name: "monitor",
     display: "monitor",
-    synonyms: &[
-        "computer monitor",
-        "computer screen",
-        "display",
-        "screen",
-        "lcd monitor",
-        "flat screen",
-        "tv",
-        "television",
-    ],
+    synonyms: &["computer monitor", "computer screen", "display", "screen", "lcd monitor", "flat screen"],
     tags: &["office", "tabletop", "electronics", "small"],
+    description: "a flat computer monitor on a stand",
+    is_a: &["display", "screen", "electronics", "device"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.56, 0.3, 0.9, 0.12, "screen width along X"),
@@ -72,6 +66,9 @@ pub(crate) const LAPTOP: Category = Category {
     display: "laptop",
     synonyms: &["notebook computer", "laptop computer", "macbook", "notebook pc", "chromebook"],
     tags: &["office", "tabletop", "electronics", "small", "graspable"],
+    description: "an open laptop computer",
+    is_a: &["computer", "electronics", "device"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.33, 0.24, 0.42, 0.1, "along X"),
@@ -117,6 +114,9 @@ pub(crate) const KEYBOARD: Category = Category {
     display: "keyboard",
     synonyms: &["computer keyboard", "pc keyboard", "keypad"],
     tags: &["office", "tabletop", "electronics", "small", "graspable"],
+    description: "a computer keyboard",
+    is_a: &["electronics", "input device", "device"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.44, 0.28, 0.48, 0.05, "along X"),
@@ -167,6 +167,9 @@ pub(crate) const PRINTER: Category = Category {
         "scanner",
     ],
     tags: &["office", "electronics", "surface", "small"],
+    description: "an office laser printer or copier",
+    is_a: &["office machine", "electronics", "device"],
+    kind: Kind::SmallAppliance,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.45, 0.35, 0.65, 0.1, "along X"),
@@ -204,6 +207,9 @@ pub(crate) const DESK_LAMP: Category = Category {
     display: "desk lamp",
     synonyms: &["lamp", "table lamp", "reading lamp", "task lamp", "work lamp", "anglepoise lamp", "light"],
     tags: &["office", "tabletop", "small", "lighting"],
+    description: "an adjustable desk lamp on a base",
+    is_a: &["lamp", "light", "light fixture"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.18, 0.12, 0.3, 0.1, "base width along X"),
@@ -254,6 +260,9 @@ pub(crate) const PHONE: Category = Category {
     display: "phone",
     synonyms: &["smartphone", "cell phone", "cellphone", "mobile phone", "telephone", "iphone"],
     tags: &["office", "tabletop", "electronics", "small", "graspable"],
+    description: "a smartphone with a touch screen",
+    is_a: &["device", "electronics"],
+    kind: Kind::HandHeld,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.075, 0.06, 0.09, 0.06, "along X"),

@@ -8,13 +8,16 @@ use super::kit::{
 };
 use super::parts::round_collider;
 use super::shapes::{ROUND, prism, prism_xz, revolve, rounded_rect, rounded_ring_profile};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const TABLE: Category = Category {
     name: "table",
     display: "table",
-    synonyms: &["desk table", "work table", "worktable", "side table", "folding table", "coffee table"],
+    synonyms: &["desk table", "work table", "worktable", "folding table"],
     tags: &["furniture", "surface", "office", "kitchen", "lab", "tabletop"],
+    description: "a flat top on four legs for working, eating or putting things on",
+    is_a: &["furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.2, 0.4, 3.0, 0.15, "top length along X"),
@@ -28,7 +31,7 @@ pub(crate) const TABLE: Category = Category {
     build: build_table,
 };
 
-fn build_table(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+pub(crate) fn build_table(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
     let t = p.get("top_thickness").min(h * 0.3);
     let leg = p.get("leg").min(w.min(d) * 0.2);
@@ -57,6 +60,9 @@ pub(crate) const WORKBENCH: Category = Category {
         "laboratory bench",
     ],
     tags: &["furniture", "surface", "industrial", "workshop", "lab", "warehouse", "heavy", "tabletop"],
+    description: "a sturdy workshop table with a lower shelf for assembly and repairs",
+    is_a: &["bench", "table", "furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.5, 0.8, 3.0, 0.15, "top length along X"),
@@ -118,6 +124,9 @@ pub(crate) const CHAIR: Category = Category {
         "visitor chair",
     ],
     tags: &["furniture", "seating", "office", "kitchen", "lab", "small"],
+    description: "a chair with a seat, a backrest and legs for one person",
+    is_a: &["seat", "furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.46, 0.35, 0.7, 0.08, "seat width along X"),
@@ -172,6 +181,9 @@ pub(crate) const DINING_TABLE: Category = Category {
     display: "dining table",
     synonyms: &["kitchen table", "wooden dining table", "dinner table", "farmhouse table", "breakfast table"],
     tags: &["furniture", "surface", "kitchen", "home"],
+    description: "a wooden dining table for eating meals at home",
+    is_a: &["table", "furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.6, 0.8, 2.6, 0.15, "top length along X"),
@@ -237,6 +249,9 @@ pub(crate) const STOOL: Category = Category {
     display: "stool",
     synonyms: &["bar stool", "lab stool", "shop stool", "work stool", "counter stool", "step stool", "tabouret"],
     tags: &["furniture", "seating", "kitchen", "lab", "workshop", "small", "round"],
+    description: "a backless seat on legs",
+    is_a: &["seat", "furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.36, 0.28, 0.5, 0.08, "seat diameter"),
@@ -283,6 +298,9 @@ pub(crate) const SOFA: Category = Category {
     display: "sofa",
     synonyms: &["couch", "settee", "loveseat", "love seat", "lounge sofa", "two-seater", "three-seater"],
     tags: &["furniture", "seating", "home", "office"],
+    description: "an upholstered sofa that seats two or three people in a living room",
+    is_a: &["seat", "furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 2.0, 1.3, 2.6, 0.12, "along X, arms included"),
@@ -298,7 +316,7 @@ pub(crate) const SOFA: Category = Category {
 
 /// A base on short feet, seat cushions, back cushions, a back frame and rounded arms;
 /// it faces +Y with its back at -Y.
-fn build_sofa(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+pub(crate) fn build_sofa(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
     let sh = fit(b, "sofa seat_height", p.get("seat_height"), 0.2, h - 0.2);
     let aw = fit(b, "sofa arm_width", p.get("arm_width"), 0.05, w * 0.2);
@@ -330,7 +348,14 @@ fn build_sofa(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
         collider_between(b, [x0, -hd, foot], [x1, hd, arm_h]);
     }
     // Seat cushions, one collision box across them; back cushions against the frame.
-    let n = if w - 2.0 * aw > 1.4 { 3 } else { 2 };
+    let inner = w - 2.0 * aw;
+    let n = if inner > 1.4 {
+        3
+    } else if inner > 0.85 {
+        2
+    } else {
+        1
+    };
     let (cx0, cx1) = (-hw + aw, hw - aw);
     let cw = (cx1 - cx0) / n as f64;
     let (cy0, cy1) = (-hd + back_t, hd - 0.01);

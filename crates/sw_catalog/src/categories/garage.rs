@@ -10,7 +10,7 @@ use super::kit::{
 use super::office::drawer_stack;
 use super::parts::{MOVING_GAP, RingBase, carcass, ring_collider};
 use super::shapes::{ROUND, revolve, rounded_ring_profile};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const TOOL_CHEST: Category = Category {
     name: "tool_chest",
@@ -19,12 +19,13 @@ pub(crate) const TOOL_CHEST: Category = Category {
         "tool cabinet on wheels",
         "roller cabinet",
         "rolling tool chest",
-        "toolbox",
-        "tool box",
         "mechanic's tool chest",
         "tool trolley",
     ],
     tags: &["garage", "workshop", "industrial", "storage", "surface"],
+    description: "a rolling mechanic's tool chest with drawers",
+    is_a: &["chest", "cabinet", "storage"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.7, 0.5, 1.2, 0.12, "along X"),
@@ -92,6 +93,9 @@ pub(crate) const AIR_COMPRESSOR: Category = Category {
     display: "air compressor",
     synonyms: &["compressor", "shop compressor", "portable compressor", "compressed air unit"],
     tags: &["garage", "workshop", "industrial", "machine"],
+    description: "a workshop air compressor with a tank",
+    is_a: &["machine", "compressor"],
+    kind: Kind::Machine,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.0, 0.6, 1.3, 0.1, "along X, the tank's axis"),
@@ -153,6 +157,9 @@ pub(crate) const CAR_LIFT: Category = Category {
     display: "car lift",
     synonyms: &["vehicle lift", "two-post lift", "auto lift", "hydraulic lift", "car hoist", "vehicle hoist"],
     tags: &["garage", "machine", "heavy", "industrial"],
+    description: "a two-post car lift in a garage",
+    is_a: &["lift", "hoist", "equipment"],
+    kind: Kind::Machine,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 3.4, 3.0, 3.9, 0.04, "post to post along X"),
@@ -204,6 +211,9 @@ pub(crate) const TIRE: Category = Category {
     display: "tire",
     synonyms: &["tyre", "car tire", "car tyre", "wheel", "spare tire", "truck tire", "spare wheel", "car wheel"],
     tags: &["garage", "automotive", "round", "stackable"],
+    description: "a car tyre",
+    is_a: &["wheel"],
+    kind: Kind::Container,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.65, 0.45, 1.1, 0.08, "outer diameter"),

@@ -5,7 +5,7 @@ use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng, Shape};
 use super::kit::{Axis, SAFETY_YELLOW, STEEL, pick, rod, slab};
 use super::parts::round_collider;
 use super::shapes::{ROUND, revolve};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// Cylinder body and shoulder colours by gas (EN 1089-3 shoulders, US bodies mixed):
 /// oxygen, nitrogen, argon, CO2, acetylene, helium.
@@ -60,6 +60,9 @@ pub(crate) const GAS_CYLINDER: Category = Category {
         "propane tank",
     ],
     tags: &["lab", "workshop", "industrial", "hazard", "round", "tall"],
+    description: "a tall compressed gas cylinder",
+    is_a: &["cylinder", "container", "tank"],
+    kind: Kind::Container,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.23, 0.12, 0.3, 0.08, "diameter"),
@@ -96,6 +99,9 @@ pub(crate) const GAS_CYLINDER_RACK: Category = Category {
     display: "gas cylinder rack",
     synonyms: &["cylinder rack", "gas bottle rack", "cylinder cage", "gas cylinder cage", "cylinder stand", "gas rack"],
     tags: &["lab", "workshop", "industrial", "hazard", "storage"],
+    description: "a rack holding gas cylinders",
+    is_a: &["rack", "stand"],
+    kind: Kind::Fixture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 1.0, 0.4, 2.0, 0.15, "along X"),

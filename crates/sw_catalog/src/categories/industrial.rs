@@ -7,7 +7,7 @@ use super::kit::{
     SAFETY_YELLOW, SIGNAL_GREEN, SIGNAL_RED, STEEL, decal_between, fit, ordered, pick, rod, shade, slab,
     upright_cylinder, warning_sign,
 };
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const CONVEYOR: Category = Category {
     name: "conveyor",
@@ -22,6 +22,9 @@ pub(crate) const CONVEYOR: Category = Category {
         "transfer conveyor",
     ],
     tags: &["industrial", "warehouse", "logistics", "machine", "surface"],
+    description: "a belt conveyor on legs that carries items along a line",
+    is_a: &["machine", "equipment"],
+    kind: Kind::Machine,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 3.0, 1.0, 8.0, 0.15, "length along X, the direction of travel"),
@@ -100,6 +103,9 @@ pub(crate) const MACHINE: Category = Category {
         "production machine",
     ],
     tags: &["machine", "industrial", "factory", "workshop", "tall", "heavy"],
+    description: "a large enclosed industrial cnc machine tool with a window door",
+    is_a: &["machine tool", "equipment"],
+    kind: Kind::Machine,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 2.0, 1.0, 4.0, 0.15, "along X"),
@@ -191,6 +197,9 @@ pub(crate) const ELECTRICAL_PANEL: Category = Category {
         "power cabinet",
     ],
     tags: &["electrical", "industrial", "data_centre", "warehouse", "utility", "hazard", "tall"],
+    description: "a grey electrical control cabinet with a door and warning sign",
+    is_a: &["enclosure", "cabinet", "equipment"],
+    kind: Kind::Fixture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.8, 0.4, 1.6, 0.15, "along X"),

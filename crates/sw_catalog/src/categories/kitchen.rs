@@ -8,7 +8,7 @@ use super::kit::{
 };
 use super::parts::{Hinge, MOVING_GAP, carcass, hinged_door};
 use super::shapes::{ROUND, revolve, rounded_ring_profile};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// Worktops: laminate, stone, wood and steel.
 const WORKTOP: &[[f32; 4]] = &[
@@ -19,7 +19,7 @@ const WORKTOP: &[[f32; 4]] = &[
     [0.55, 0.53, 0.5, 1.0],
 ];
 /// Appliance finishes.
-const APPLIANCE: &[[f32; 4]] =
+pub(crate) const APPLIANCE: &[[f32; 4]] =
     &[[0.95, 0.95, 0.94, 1.0], [0.72, 0.73, 0.75, 1.0], [0.15, 0.15, 0.16, 1.0], [0.85, 0.86, 0.86, 1.0]];
 
 /// Cabinet fronts drawn on the +Y face of a base unit between `x0..x1` and `z0..z1`:
@@ -52,6 +52,9 @@ pub(crate) const COUNTER: Category = Category {
         "lab counter",
     ],
     tags: &["furniture", "surface", "kitchen", "lab", "storage"],
+    description: "a run of kitchen base cabinets under a worktop",
+    is_a: &["furniture", "cabinet", "worktop"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 2.0, 0.6, 4.0, 0.2, "along X"),
@@ -98,6 +101,9 @@ pub(crate) const SINK: Category = Category {
         "sink unit",
     ],
     tags: &["kitchen", "lab", "hospital", "surface", "plumbing"],
+    description: "a kitchen sink unit with a steel bowl, a drainboard and a tap",
+    is_a: &["fixture", "basin", "plumbing fixture"],
+    kind: Kind::Fixture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 1.0, 0.7, 2.0, 0.15, "along X"),
@@ -176,6 +182,9 @@ pub(crate) const FRIDGE: Category = Category {
         "icebox",
     ],
     tags: &["kitchen", "lab", "appliance", "tall", "storage"],
+    description: "a tall refrigerator with a fridge door and a freezer door",
+    is_a: &["appliance", "kitchen appliance", "cooler"],
+    kind: Kind::LargeAppliance,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.6, 0.5, 0.95, 0.1, "along X"),
@@ -251,8 +260,11 @@ fn build_fridge(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const STOVE: Category = Category {
     name: "stove",
     display: "stove",
-    synonyms: &["cooker", "range", "oven", "cooking range", "gas stove", "electric stove", "kitchen range", "hob"],
+    synonyms: &["cooker", "range", "oven", "cooking range", "gas stove", "electric stove", "kitchen range"],
     tags: &["kitchen", "appliance", "surface"],
+    description: "a freestanding kitchen range with four burners on top and an oven below",
+    is_a: &["appliance", "kitchen appliance", "cooker"],
+    kind: Kind::LargeAppliance,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.6, 0.5, 1.0, 0.1, "along X"),
@@ -312,8 +324,11 @@ fn build_stove(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const MICROWAVE: Category = Category {
     name: "microwave",
     display: "microwave",
-    synonyms: &["microwave oven", "countertop oven", "toaster oven", "lab oven"],
+    synonyms: &["microwave oven", "lab oven"],
     tags: &["kitchen", "office", "appliance", "tabletop"],
+    description: "a countertop microwave oven with a glass door",
+    is_a: &["appliance", "kitchen appliance", "oven"],
+    kind: Kind::SmallAppliance,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.48, 0.38, 0.6, 0.08, "along X"),

@@ -8,7 +8,7 @@ use super::kit::{
 };
 use super::parts::{round_collider, vessel_collider};
 use super::shapes::{ROUND, prism, revolve, rounded_rect};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// Lab equipment enclosures: white and light grey enamel.
 const LAB_WHITE: &[[f32; 4]] = &[[0.93, 0.93, 0.91, 1.0], [0.86, 0.87, 0.88, 1.0], [0.9, 0.91, 0.93, 1.0]];
@@ -28,6 +28,9 @@ pub(crate) const FUME_HOOD: Category = Category {
         "biosafety cabinet",
     ],
     tags: &["lab", "tall", "surface", "hazard", "ventilation"],
+    description: "a laboratory fume hood with a sliding glass sash",
+    is_a: &["enclosure", "lab equipment"],
+    kind: Kind::Fixture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 1.5, 1.0, 2.4, 0.12, "along X"),
@@ -100,6 +103,9 @@ pub(crate) const MICROSCOPE: Category = Category {
     display: "microscope",
     synonyms: &["light microscope", "compound microscope", "stereo microscope", "lab microscope", "optical microscope"],
     tags: &["lab", "tabletop", "hospital", "small", "instrument"],
+    description: "a laboratory light microscope",
+    is_a: &["instrument", "lab equipment", "equipment"],
+    kind: Kind::SmallAppliance,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.22, 0.16, 0.3, 0.08, "along X"),
@@ -148,6 +154,9 @@ pub(crate) const CENTRIFUGE: Category = Category {
     display: "centrifuge",
     synonyms: &["benchtop centrifuge", "lab centrifuge", "microcentrifuge", "sample centrifuge"],
     tags: &["lab", "tabletop", "hospital", "small", "instrument", "machine"],
+    description: "a benchtop laboratory centrifuge",
+    is_a: &["lab equipment", "equipment"],
+    kind: Kind::SmallAppliance,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.4, 0.22, 0.7, 0.12, "along X"),
@@ -189,6 +198,9 @@ pub(crate) const TEST_TUBE_RACK: Category = Category {
     display: "test tube rack",
     synonyms: &["test-tube rack", "tube rack", "test tubes", "sample rack", "vial rack", "test tube holder"],
     tags: &["lab", "tabletop", "hospital", "small", "graspable"],
+    description: "a rack holding test tubes",
+    is_a: &["rack", "holder", "lab equipment"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.24, 0.12, 0.4, 0.1, "along X"),
@@ -249,16 +261,11 @@ fn build_test_tube_rack(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 
 pub(crate) const BEAKER: Category = Category {
     name: "beaker",
     display: "beaker",
-    synonyms: &[
-        "glass beaker",
-        "lab beaker",
-        "measuring beaker",
-        "flask",
-        "erlenmeyer flask",
-        "graduated cylinder",
-        "jar",
-    ],
+    synonyms: &["glass beaker", "lab beaker", "measuring beaker"],
     tags: &["lab", "tabletop", "small", "graspable", "container", "round", "open"],
+    description: "a glass laboratory beaker with a spout",
+    is_a: &["vessel", "glassware", "container"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.07, 0.04, 0.15, 0.12, "diameter"),

@@ -8,13 +8,16 @@ use super::kit::{
 };
 use super::parts::round_collider;
 use super::shapes::{ROUND, revolve};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const LATHE: Category = Category {
     name: "lathe",
     display: "lathe",
     synonyms: &["metal lathe", "engine lathe", "turning machine", "cnc lathe", "wood lathe", "turning center"],
     tags: &["machine", "industrial", "workshop", "heavy"],
+    description: "a metal lathe",
+    is_a: &["machine", "machine tool"],
+    kind: Kind::Machine,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 2.0, 1.2, 3.5, 0.12, "along X, the bed's length"),
@@ -73,6 +76,9 @@ pub(crate) const DRILL_PRESS: Category = Category {
     display: "drill press",
     synonyms: &["pillar drill", "column drill", "bench drill", "drilling machine", "floor drill press"],
     tags: &["machine", "workshop", "industrial", "tall"],
+    description: "a floor-standing drill press",
+    is_a: &["machine", "machine tool", "drill"],
+    kind: Kind::Machine,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.45, 0.3, 0.6, 0.08, "along X"),
@@ -151,6 +157,9 @@ pub(crate) const FDM_PRINTER: Category = Category {
         "prototyping printer",
     ],
     tags: &["lab", "workshop", "office", "tabletop", "machine", "electronics"],
+    description: "a desktop 3d printer",
+    is_a: &["printer", "machine"],
+    kind: Kind::Machine,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.45, 0.3, 0.7, 0.1, "along X"),

@@ -6,7 +6,7 @@ use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng};
 use super::kit::{DARK, LABEL_WHITE, OFFICE_PAINT, STEEL, WOOD, decal_between, fit, pick, shade, slab};
 use super::parts::{MOVING_GAP, carcass, decal_on, drawer, round_collider};
 use super::shapes::{ROUND, revolve};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// A column of `n` drawers with overlay fronts between `x0..x1`, fronts from `z_lo` to
 /// `z_hi` with 3 mm gaps, in a carcass whose inside runs `inner_z` and `inner_x`, with
@@ -69,6 +69,9 @@ pub(crate) const DESK: Category = Category {
         "student desk",
     ],
     tags: &["furniture", "surface", "office", "tabletop"],
+    description: "an office desk with a drawer pedestal for working at a computer",
+    is_a: &["table", "furniture"],
+    kind: Kind::Furniture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.4, 0.9, 2.2, 0.12, "top length along X"),
@@ -129,16 +132,11 @@ fn build_desk(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const FILING_CABINET: Category = Category {
     name: "filing_cabinet",
     display: "filing cabinet",
-    synonyms: &[
-        "file cabinet",
-        "drawer cabinet",
-        "filing drawers",
-        "file drawers",
-        "chest of drawers",
-        "dresser",
-        "drawer unit",
-    ],
+    synonyms: &["file cabinet", "drawer cabinet", "filing drawers", "file drawers", "drawer unit"],
     tags: &["furniture", "storage", "office", "tall"],
+    description: "a steel office filing cabinet with pull-out drawers for documents",
+    is_a: &["cabinet", "furniture", "storage"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.47, 0.38, 0.9, 0.06, "along X"),
@@ -200,6 +198,9 @@ pub(crate) const WHITEBOARD: Category = Category {
         "pinboard",
     ],
     tags: &["office", "classroom", "lab", "wall"],
+    description: "a white dry-erase board on the wall of an office or classroom",
+    is_a: &["board"],
+    kind: Kind::Fixture,
     placement: PlacementKind::WallMounted,
     params: &[
         ParamDef::new("width", 1.8, 0.6, 3.6, 0.15, "along X"),
@@ -249,6 +250,9 @@ pub(crate) const WATER_COOLER: Category = Category {
     display: "water cooler",
     synonyms: &["water dispenser", "drinking fountain", "water fountain", "bottled water cooler", "water station"],
     tags: &["office", "kitchen", "hospital", "appliance"],
+    description: "a floor-standing water dispenser with a large bottle on top",
+    is_a: &["dispenser", "appliance"],
+    kind: Kind::LargeAppliance,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.31, 0.26, 0.4, 0.05, "along X"),

@@ -6,13 +6,16 @@ use super::kit::{
     Axis, DARK, INDUSTRIAL_PAINT, ROBOT_PAINT, RUBBER, SAFETY_YELLOW, SIGNAL_RED, STEEL, collider_between,
     decal_between, fit, ordered, pick, rod, shade, slab, upright_cylinder,
 };
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const PEDESTAL: Category = Category {
     name: "pedestal",
     display: "robot pedestal",
     synonyms: &["robot base", "robot stand", "robot riser", "arm pedestal", "mounting pedestal", "riser", "plinth"],
     tags: &["robotics", "industrial", "lab", "mount", "surface", "small"],
+    description: "a steel pedestal column that a robot arm is bolted on",
+    is_a: &["stand", "base"],
+    kind: Kind::Fixture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.5, 0.3, 1.0, 0.05, "base plate along X"),
@@ -77,6 +80,9 @@ pub(crate) const MOBILE_CART: Category = Category {
     display: "mobile cart",
     synonyms: &["mobile platform", "robot cart", "wheeled base", "mobile manipulator base"],
     tags: &["robotics", "mobile", "warehouse", "lab", "mount", "surface"],
+    description: "a wheeled mobile robot base that carries an arm",
+    is_a: &["robot", "platform"],
+    kind: Kind::Vehicle,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.8, 0.5, 1.5, 0.12, "along X, the driving direction"),

@@ -8,7 +8,7 @@ use super::kit::{
 };
 use super::parts::{round_collider, solid_box};
 use super::shapes::{ROUND, revolve};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const FIRE_EXTINGUISHER: Category = Category {
     name: "fire_extinguisher",
@@ -21,6 +21,9 @@ pub(crate) const FIRE_EXTINGUISHER: Category = Category {
         "foam extinguisher",
     ],
     tags: &["safety", "office", "warehouse", "lab", "kitchen", "workshop", "garage", "small"],
+    description: "a red fire extinguisher",
+    is_a: &["safety equipment", "cylinder"],
+    kind: Kind::Fixture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.24, 0.21, 0.32, 0.06, "body and lever handle along X"),
@@ -71,6 +74,9 @@ pub(crate) const EYEWASH_STATION: Category = Category {
     display: "eyewash station",
     synonyms: &["eye wash station", "eyewash", "eye wash", "emergency eyewash", "safety shower", "emergency shower"],
     tags: &["safety", "lab", "industrial", "plumbing", "round"],
+    description: "an emergency eyewash station on a stand",
+    is_a: &["safety equipment", "fixture"],
+    kind: Kind::Fixture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.4, 0.3, 0.5, 0.08, "bowl diameter"),
@@ -140,6 +146,9 @@ pub(crate) const SAFETY_FENCE: Category = Category {
         "fence",
     ],
     tags: &["safety", "industrial", "warehouse", "robotics"],
+    description: "a wire mesh safety fence panel around machines",
+    is_a: &["fence", "barrier", "guard"],
+    kind: Kind::Fixture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 2.0, 0.8, 3.0, 0.1, "one panel with its two posts, along X"),
@@ -199,6 +208,9 @@ pub(crate) const WELDING_SCREEN: Category = Category {
         "partition screen",
     ],
     tags: &["safety", "industrial", "workshop", "garage"],
+    description: "a welding screen or room divider on feet",
+    is_a: &["screen", "partition", "barrier"],
+    kind: Kind::Fixture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.8, 1.0, 2.4, 0.1, "along X"),
@@ -243,6 +255,9 @@ pub(crate) const TRAFFIC_CONE: Category = Category {
     display: "traffic cone",
     synonyms: &["safety cone", "cone", "pylon", "road cone", "warning cone"],
     tags: &["safety", "warehouse", "garage", "small", "round"],
+    description: "an orange traffic cone",
+    is_a: &["marker", "safety equipment"],
+    kind: Kind::Fixture,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.35, 0.2, 0.45, 0.08, "base plate side"),

@@ -4,7 +4,7 @@ use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng};
 
 use super::kit::{Axis, collider_between, decal_between, pick, rod, shade, slab};
 use super::shapes::{ROUND, prism_xz, revolve, rounded_rect};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// Book cloth and printed covers.
 const COVERS: &[[f32; 4]] = &[
@@ -20,8 +20,11 @@ const COVERS: &[[f32; 4]] = &[
 pub(crate) const BOOK: Category = Category {
     name: "book",
     display: "book",
-    synonyms: &["hardcover book", "paperback", "textbook", "manual", "binder", "notebook", "ring binder", "folder"],
+    synonyms: &["hardcover book", "paperback", "textbook", "manual", "binder", "ring binder", "folder"],
     tags: &["office", "tabletop", "classroom", "small", "graspable", "stackable"],
+    description: "a hardcover book or binder",
+    is_a: &["publication"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.16, 0.1, 0.3, 0.15, "along X, lying flat"),
@@ -52,8 +55,11 @@ fn build_book(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const PEN: Category = Category {
     name: "pen",
     display: "pen",
-    synonyms: &["ballpoint pen", "pencil", "marker", "marker pen", "felt pen", "highlighter", "ballpoint"],
+    synonyms: &["ballpoint pen", "ballpoint"],
     tags: &["office", "tabletop", "classroom", "small", "graspable"],
+    description: "a ballpoint pen",
+    is_a: &["writing implement", "stationery"],
+    kind: Kind::HandHeld,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.14, 0.08, 0.2, 0.08, "length along X"),
@@ -85,8 +91,11 @@ fn build_pen(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const STAPLER: Category = Category {
     name: "stapler",
     display: "stapler",
-    synonyms: &["desk stapler", "office stapler", "hole punch", "tape dispenser"],
+    synonyms: &["desk stapler", "office stapler"],
     tags: &["office", "tabletop", "small", "graspable"],
+    description: "a desk stapler",
+    is_a: &["office supply", "stationery"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.045, 0.035, 0.07, 0.08, "along X"),

@@ -7,7 +7,7 @@ use super::kit::{
     decal_between, fit, ordered, pick, shade, slab, strut,
 };
 use super::parts::{Hinge, MOVING_GAP, carcass, decal_on, hinged_door};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 pub(crate) const SHELF: Category = Category {
     name: "shelf",
@@ -24,6 +24,9 @@ pub(crate) const SHELF: Category = Category {
         "shelving rack",
     ],
     tags: &["storage", "tall", "warehouse", "office", "lab", "kitchen", "retail", "furniture"],
+    description: "a free-standing metal shelving unit with several flat levels",
+    is_a: &["shelving", "furniture", "storage"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 1.0, 0.5, 2.0, 0.12, "along X"),
@@ -107,6 +110,9 @@ pub(crate) const PALLET_RACK: Category = Category {
         "heavy duty rack",
     ],
     tags: &["warehouse", "industrial", "logistics", "storage", "tall", "heavy"],
+    description: "tall warehouse racking with orange beams that holds pallets on levels",
+    is_a: &["rack", "shelving", "storage"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 2.7, 1.8, 3.9, 0.05, "one bay, uprights included, along X"),
@@ -206,6 +212,9 @@ pub(crate) const CABINET: Category = Category {
         "tool cabinet",
     ],
     tags: &["storage", "furniture", "tall", "office", "lab", "warehouse", "workshop", "kitchen"],
+    description: "a tall storage cupboard with two doors and shelves inside",
+    is_a: &["furniture", "storage", "cupboard"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.9, 0.4, 1.6, 0.15, "along X"),
@@ -288,6 +297,9 @@ pub(crate) const BOOKSHELF: Category = Category {
     display: "bookshelf",
     synonyms: &["bookcase", "book shelf", "book case", "wooden shelf", "display shelf", "wall shelf unit"],
     tags: &["furniture", "storage", "tall", "office", "home", "classroom"],
+    description: "a wooden bookcase with shelves for books",
+    is_a: &["shelf", "furniture", "bookcase"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.8, 0.4, 1.6, 0.15, "along X"),
@@ -347,6 +359,9 @@ pub(crate) const GONDOLA_SHELF: Category = Category {
         "shop shelf",
     ],
     tags: &["retail", "storage", "tall", "shop"],
+    description: "a supermarket gondola shelf with several levels for goods",
+    is_a: &["shelf", "shelving", "display"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 1.25, 0.66, 1.33, 0.05, "one bay along X"),
@@ -416,6 +431,9 @@ pub(crate) const LOCKER: Category = Category {
         "locker cabinet",
     ],
     tags: &["storage", "tall", "office", "workshop", "hospital", "classroom"],
+    description: "a tall steel locker with a door for staff belongings",
+    is_a: &["cabinet", "furniture", "storage"],
+    kind: Kind::Furniture,
     placement: PlacementKind::AgainstWall,
     params: &[
         ParamDef::new("width", 0.9, 0.3, 1.6, 0.2, "along X, all columns"),

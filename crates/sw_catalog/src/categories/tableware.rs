@@ -7,7 +7,7 @@ use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng};
 use super::kit::{LABEL_WHITE, PLASTIC, fit, ordered, pick, shade};
 use super::parts::{RingBase, open_box, ring_collider, round_collider, vessel_collider};
 use super::shapes::{ROUND, revolve};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// Glazed ceramics.
 const CERAMIC: &[[f32; 4]] = &[
@@ -32,11 +32,15 @@ pub(crate) const MUG: Category = Category {
     name: "mug",
     display: "mug",
     synonyms: &["coffee mug", "tea mug", "ceramic mug", "coffee cup", "tea cup", "teacup"],
-    tags: &["tabletop", "kitchen", "office", "small", "graspable"],
+    tags: &["tabletop", "kitchen", "office", "small", "graspable", "handled"],
+    description: "a ceramic mug with a handle for coffee or tea",
+    is_a: &["cup", "vessel", "drinkware", "crockery"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
-        ParamDef::new("width", 0.125, 0.12, 0.18, 0.04, "body diameter plus the handle, along X"),
-        ParamDef::new("depth", 0.085, 0.06, 0.1, 0.06, "body diameter (at most width - 2 cm)"),
+        // A classic 11 oz mug: an 8 cm body (a Panda's fingers open 8 cm) and a 3.5 cm loop.
+        ParamDef::new("width", 0.115, 0.085, 0.18, 0.03, "body diameter plus the handle, along X"),
+        ParamDef::new("depth", 0.079, 0.055, 0.1, 0.015, "body diameter (at most width - 3 cm)"),
         ParamDef::new("height", 0.095, 0.07, 0.14, 0.08, "floor to rim"),
         ParamDef::new("wall", 0.005, 0.003, 0.01, 0.15, "wall thickness"),
     ],
@@ -93,6 +97,9 @@ pub(crate) const CUP: Category = Category {
     display: "cup",
     synonyms: &["paper cup", "plastic cup", "drinking cup", "tumbler", "disposable cup", "beverage cup"],
     tags: &["tabletop", "kitchen", "office", "small", "graspable", "round"],
+    description: "a paper or plastic drinking cup without a handle",
+    is_a: &["vessel", "drinkware", "container"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.08, 0.05, 0.12, 0.08, "rim diameter"),
@@ -134,6 +141,9 @@ pub(crate) const PLATE: Category = Category {
     display: "plate",
     synonyms: &["dinner plate", "dish", "side plate", "ceramic plate", "serving plate"],
     tags: &["tabletop", "kitchen", "small", "graspable", "round"],
+    description: "a flat round ceramic dinner plate",
+    is_a: &["dish", "tableware", "crockery"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.26, 0.15, 0.32, 0.08, "diameter"),
@@ -178,6 +188,9 @@ pub(crate) const BOWL: Category = Category {
     display: "bowl",
     synonyms: &["soup bowl", "cereal bowl", "mixing bowl", "salad bowl", "ceramic bowl", "fruit bowl"],
     tags: &["tabletop", "kitchen", "small", "container", "open", "graspable", "round"],
+    description: "a round open ceramic bowl for soup, cereal or fruit",
+    is_a: &["dish", "vessel", "tableware", "crockery", "container"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.16, 0.1, 0.3, 0.1, "rim diameter"),
@@ -230,6 +243,9 @@ pub(crate) const BOTTLE: Category = Category {
     display: "bottle",
     synonyms: &["water bottle", "plastic bottle", "glass bottle", "drink bottle", "soda bottle", "wine bottle"],
     tags: &["tabletop", "kitchen", "office", "lab", "small", "graspable", "round"],
+    description: "a bottle with a narrow neck and a cap for water or drinks",
+    is_a: &["container", "vessel"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.07, 0.04, 0.12, 0.1, "body diameter"),
@@ -300,6 +316,9 @@ pub(crate) const DRINK_CAN: Category = Category {
     display: "drink can",
     synonyms: &["soda can", "beer can", "tin can", "food can", "cola can", "beverage can", "soup can", "tin"],
     tags: &["tabletop", "kitchen", "retail", "small", "graspable", "round"],
+    description: "a printed aluminium drink can or food tin",
+    is_a: &["can", "container"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.066, 0.05, 0.1, 0.05, "diameter"),
@@ -342,6 +361,9 @@ pub(crate) const TRAY: Category = Category {
         "cafeteria tray",
     ],
     tags: &["tabletop", "kitchen", "lab", "office", "container", "small", "open"],
+    description: "a flat tray with a low rim for carrying parts or food",
+    is_a: &["container", "tableware"],
+    kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
     params: &[
         ParamDef::new("width", 0.45, 0.2, 0.8, 0.12, "along X"),

@@ -9,7 +9,7 @@ use super::kit::{
     slab, strut,
 };
 use super::shapes::{ROUND, revolve, rounded_ring_profile};
-use crate::{Category, ParamDef, Params};
+use crate::{Category, Kind, ParamDef, Params};
 
 /// A wheel of radius `r` and width `wd` on an axle along X at `center` (it rolls along
 /// Y): a tyre ring and a hub to look at, a box from the floor to the axle to stand on.
@@ -33,6 +33,9 @@ pub(crate) const FORKLIFT: Category = Category {
     display: "forklift",
     synonyms: &["fork lift", "forklift truck", "lift truck", "fork truck", "reach truck", "counterbalance forklift"],
     tags: &["warehouse", "logistics", "vehicle", "heavy", "industrial"],
+    description: "a forklift truck for lifting pallets",
+    is_a: &["vehicle", "truck"],
+    kind: Kind::Vehicle,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 1.15, 0.9, 1.5, 0.06, "along X"),
@@ -106,6 +109,9 @@ pub(crate) const PALLET_JACK: Category = Category {
     display: "pallet jack",
     synonyms: &["pallet truck", "hand pallet truck", "pump truck", "hand jack", "pallet mover", "jigger"],
     tags: &["warehouse", "logistics", "vehicle", "industrial"],
+    description: "a manual pallet jack for moving pallets",
+    is_a: &["truck", "trolley"],
+    kind: Kind::Vehicle,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.54, 0.45, 0.7, 0.05, "over the forks, along X"),
@@ -150,6 +156,9 @@ pub(crate) const HAND_TRUCK: Category = Category {
     display: "hand truck",
     synonyms: &["sack truck", "dolly", "two-wheeler", "hand trolley", "box dolly", "appliance dolly", "sack trolley"],
     tags: &["warehouse", "logistics", "vehicle", "retail"],
+    description: "a two-wheeled hand truck for moving boxes",
+    is_a: &["trolley", "dolly"],
+    kind: Kind::Vehicle,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.5, 0.4, 0.65, 0.05, "along X"),
@@ -206,6 +215,9 @@ pub(crate) const CART: Category = Category {
         "medical cart",
     ],
     tags: &["warehouse", "lab", "hospital", "workshop", "storage", "mobile", "surface"],
+    description: "a wheeled utility cart with shelves",
+    is_a: &["trolley", "vehicle"],
+    kind: Kind::Vehicle,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.9, 0.6, 1.2, 0.1, "shelf length along X, the handle included"),
@@ -272,6 +284,9 @@ pub(crate) const SHOPPING_CART: Category = Category {
     display: "shopping cart",
     synonyms: &["shopping trolley", "grocery cart", "supermarket trolley", "supermarket cart", "shopping basket cart"],
     tags: &["retail", "vehicle", "container", "open"],
+    description: "a supermarket shopping cart",
+    is_a: &["cart", "trolley"],
+    kind: Kind::Vehicle,
     placement: PlacementKind::Floor,
     params: &[
         ParamDef::new("width", 0.56, 0.45, 0.65, 0.04, "along X"),
