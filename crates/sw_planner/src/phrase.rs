@@ -18,7 +18,7 @@ use crate::cues::cue_at;
 use crate::lexicon::{Lexicon, Meaning, is_head};
 use crate::quantity::{Quantity, quantity_at};
 use crate::tables::{COMPOUND_MODIFIERS, PEOPLE, PLACES, rows};
-use crate::text::{Token, TokenKind, number_word, singular, typo_distance};
+use crate::text::{Token, TokenKind, edit_distance, number_word, singular, typo_distance};
 
 /// What kind of place a place noun names.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -279,10 +279,13 @@ impl Phrases<'_> {
     }
 
     /// A typo-tolerant match of one unknown word against head nouns: the first letter
-    /// kept (a typo rarely changes it, and "broom" is no "room"), one edit in a word of
-    /// five to seven letters, two from eight.
+    /// kept (a typo rarely changes it, and "broom" is no "room"); two letters swapped in
+    /// any word of five letters or more ("chiar"), one other edit from six letters
+    /// ("toster"), two from eight ("pallette"). A short real word one letter from a known
+    /// one ("truck", "trunk"; "booth", "boot") is left alone.
     pub fn fuzzy(&self, word: &str) -> Option<Meaning> {
-        let limit = match word.chars().count() {
+        let n = word.chars().count();
+        let limit = match n {
             0..=4 => return None,
             5..=7 => 1,
             _ => 2,
@@ -294,7 +297,9 @@ impl Phrases<'_> {
                 continue;
             }
             let d = typo_distance(word, w);
-            if d <= limit && best.is_none_or(|(bd, bw, _)| d < bd || (d == bd && w < bw)) {
+            let swap = d == 1 && w.len() == word.len() && edit_distance(word, w) == 2;
+            let allowed = d <= limit && (swap || n >= 6);
+            if allowed && best.is_none_or(|(bd, bw, _)| d < bd || (d == bd && w < bw)) {
                 best = Some((d, w, m));
             }
         }

@@ -63,7 +63,7 @@ struct Noun {
 }
 
 const NOUNS: &[Noun] = &[
-    Noun { cat: "table", forms: &["table", "work table", "side table"], role: Role::Surface },
+    Noun { cat: "table", forms: &["table", "work table", "worktable"], role: Role::Surface },
     Noun { cat: "desk", forms: &["desk", "office desk"], role: Role::Surface },
     Noun { cat: "workbench", forms: &["workbench", "work bench"], role: Role::Surface },
     Noun { cat: "counter", forms: &["counter", "kitchen counter"], role: Role::Surface },
