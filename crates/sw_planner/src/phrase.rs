@@ -17,7 +17,7 @@ use crate::PlannerError;
 use crate::cues::cue_at;
 use crate::lexicon::{Lexicon, Meaning, is_head};
 use crate::quantity::{Quantity, quantity_at};
-use crate::tables::{COMPOUND_MODIFIERS, PEOPLE, PLACES, rows};
+use crate::tables::{COMPOUND_MODIFIERS, FUNCTION_NOUNS, PEOPLE, PLACES, rows};
 use crate::text::{Token, TokenKind, edit_distance, number_word, singular, typo_distance};
 
 /// What kind of place a place noun names.
@@ -80,6 +80,11 @@ fn places() -> &'static HashMap<&'static str, PlaceKind> {
             .chain(rows(PEOPLE).map(|r| (r[0], PlaceKind::Person)))
             .collect()
     })
+}
+
+fn function_nouns() -> &'static [&'static str] {
+    static F: OnceLock<Vec<&'static str>> = OnceLock::new();
+    F.get_or_init(|| rows(FUNCTION_NOUNS).map(|r| r[0]).collect())
 }
 
 fn compound_modifiers() -> &'static [&'static str] {
@@ -263,6 +268,15 @@ impl Phrases<'_> {
         (participle && cue_at(self.toks, i).is_none()) || compound_modifiers().contains(&w)
     }
 
+    /// A word the vocabulary reads as a verb or filler that ends a phrase and could be its
+    /// noun ("can", "stand", "drive").
+    fn function_noun_at(&self, k: usize) -> bool {
+        self.toks.get(k).is_some_and(|t| t.kind == TokenKind::Word)
+            && function_nouns().contains(&self.word(k))
+            && cue_at(self.toks, k).is_none()
+            && self.boundary(k + 1)
+    }
+
     /// True where a phrase ends: punctuation, a conjunction, "with", a relation cue, a
     /// number, a verb or other vocabulary word that is no noun.
     fn boundary(&self, i: usize) -> bool {
@@ -352,18 +366,16 @@ impl Phrases<'_> {
             }
             // "three cans", "two stands": a counted word the vocabulary reads as a verb is a
             // noun here.
-            let counted_function_word = after_quantity
-                && out.is_empty()
-                && self.toks.get(k).is_some_and(|t| t.kind == TokenKind::Word)
-                && singular(self.word(k)) != self.word(k)
-                && matches!(self.lookup(k, |_| true), Some((Meaning::Filler, 1)))
-                && self.boundary(k + 1);
+            // So is one after a modifier: "a watering can", "a music stand".
+            let counted_function_word = self.function_noun_at(k)
+                && ((after_quantity && out.is_empty() && singular(self.word(k)) != self.word(k))
+                    || (after_quantity && matches!(out.last(), Some(Noun::Modifier(_) | Noun::Unknown(_)))));
             if (self.is_plain_unknown_word(k) && self.can_be_noun(k)) || counted_function_word {
                 out.push(Noun::Unknown(k));
                 k += 1;
                 continue;
             }
-            if self.is_modifier_word(k) && !self.boundary(k + 1) {
+            if self.is_modifier_word(k) && (!self.boundary(k + 1) || (after_quantity && self.function_noun_at(k + 1))) {
                 out.push(Noun::Modifier(k));
                 k += 1;
                 continue;

@@ -274,6 +274,10 @@ pub(crate) fn singular(word: &str) -> String {
     if let Some((_, s)) = IRREGULAR.iter().find(|(p, _)| *p == word) {
         return (*s).to_string();
     }
+    // "bookshelves", "wall shelves".
+    if let Some(stem) = word.strip_suffix("shelves") {
+        return format!("{stem}shelf");
+    }
     let keep = ["glass", "gas", "bus", "lens", "chassis", "series", "ss", "us", "is", "news"];
     if keep.contains(&word) || word.ends_with("ss") || word.len() <= 3 {
         return word.to_string();
