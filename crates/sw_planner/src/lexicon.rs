@@ -667,6 +667,16 @@ impl Lexicon {
         None
     }
 
+    /// The words of the vocabulary's phrases of two words or more ("living" of "living
+    /// room"), five letters or longer, for reading typos back.
+    pub fn phrase_words(&self) -> impl Iterator<Item = String> + '_ {
+        self.by_first
+            .values()
+            .flatten()
+            .filter(|e| e.words.len() >= 2 && is_head(&e.meaning))
+            .flat_map(|e| e.words.iter().filter(|w| w.len() >= 5).cloned())
+    }
+
     /// Single-word heads (categories, robots, rooms), for typo matching.
     pub fn head_words(&self) -> impl Iterator<Item = (&str, &Meaning)> {
         self.by_first

@@ -60,9 +60,11 @@ pub fn plan(prompt: &str) -> Result<ScenePlan, PlannerError> {
     if cleaned.is_empty() {
         return Err(PlannerError::Empty);
     }
-    let tokens = text::tokenize(&cleaned);
+    let mut tokens = text::tokenize(&cleaned);
+    let typos = phrase::correct_function_words(lexicon(), &mut tokens);
     let mut parser = parse::Parser::new(lexicon(), &cleaned, tokens);
     parser.run()?;
+    parser.draft.approximated.extend(typos);
     let leftovers = parser.leftovers();
     assemble::assemble(&cleaned, parser.draft, leftovers)
 }

@@ -17,7 +17,7 @@ use crate::PlannerError;
 use crate::cues::cue_at;
 use crate::lexicon::{Lexicon, Meaning, is_head};
 use crate::quantity::{Quantity, quantity_at};
-use crate::tables::{COMPOUND_MODIFIERS, FUNCTION_NOUNS, PEOPLE, PLACES, rows};
+use crate::tables::{COMPOUND_MODIFIERS, FUNCTION_NOUNS, FUNCTION_WORDS, PEOPLE, PLACES, rows};
 use crate::text::{Token, TokenKind, edit_distance, number_word, singular, typo_distance};
 
 /// What kind of place a place noun names.
@@ -100,6 +100,63 @@ pub(crate) fn place_at(toks: &[Token], i: usize) -> Option<(PlaceKind, usize)> {
         return Some((*k, 2));
     }
     places().get(w(i)).map(|k| (*k, 1))
+}
+
+/// Reads typos of relation and place words back to the word ("betwen" is "between"): a
+/// word the vocabulary does not know, of five letters or more, one edit from a word of
+/// `tables/function_words.tsv` with the same first letter. Returns a note for each.
+pub(crate) fn correct_function_words(lex: &Lexicon, toks: &mut [Token]) -> Vec<sw_plan::Approximation> {
+    static WORDS: OnceLock<Vec<&'static str>> = OnceLock::new();
+    static PHRASE_WORDS: OnceLock<Vec<String>> = OnceLock::new();
+    let words = WORDS.get_or_init(|| rows(FUNCTION_WORDS).map(|r| r[0]).collect());
+    // The words of the vocabulary's phrases ("living" of "living room"), which no
+    // single-word match reaches: read back only where the phrase then reads whole.
+    let phrase_words = PHRASE_WORDS.get_or_init(|| {
+        let mut w: Vec<String> = lex.phrase_words().collect();
+        w.sort();
+        w.dedup();
+        w
+    });
+    let mut notes = Vec::new();
+    for i in 0..toks.len() {
+        let t = &toks[i];
+        if t.kind != TokenKind::Word || t.norm.chars().count() < 5 || cue_at(toks, i).is_some() {
+            continue;
+        }
+        if words.contains(&t.norm.as_str()) || lex.longest(&[t.norm.as_str()], |_| true).is_some() {
+            continue;
+        }
+        let first = t.norm.chars().next();
+        let near = |w: &str| {
+            w.chars().next() == first && w.len().abs_diff(t.norm.len()) <= 1 && typo_distance(&t.norm, w) == 1
+        };
+        let mut found = words.iter().find(|w| near(w)).map(|w| w.to_string());
+        if found.is_none() {
+            for w in phrase_words.iter().filter(|w| near(w)) {
+                let whole = |from: usize| {
+                    let ws: Vec<&str> = toks[from..toks.len().min(from + 4)]
+                        .iter()
+                        .enumerate()
+                        .map(|(k, x)| if from + k == i { w.as_str() } else { x.norm.as_str() })
+                        .collect();
+                    lex.longest(&ws, is_head).is_some_and(|(_, n)| n >= 2 && from + n > i)
+                };
+                if whole(i) || (i > 0 && whole(i - 1)) {
+                    found = Some(w.clone());
+                    break;
+                }
+            }
+        }
+        if let Some(w) = found {
+            notes.push(sw_plan::Approximation {
+                text: toks[i].norm.clone(),
+                became: w.clone(),
+                reason: format!("read '{}' as '{w}'", toks[i].norm),
+            });
+            toks[i].norm = w;
+        }
+    }
+    notes
 }
 
 /// The head of a noun phrase.

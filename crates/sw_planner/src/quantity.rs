@@ -102,6 +102,10 @@ pub(crate) fn numeral_at(toks: &[Token], i: usize) -> Option<(f64, usize)> {
 
 /// The quantity before a noun at `i`, if any.
 pub(crate) fn quantity_at(toks: &[Token], i: usize) -> Option<Quantity> {
+    // "too armchairs": a typo of "two" before a plural.
+    if word(toks, i) == "too" && word(toks, i + 1).ends_with('s') && word(toks, i + 1).len() > 3 {
+        return Some(Quantity { value: 2.0, len: 1, exact: true, more: false });
+    }
     // "another", "one more", "3 more".
     if word(toks, i) == "another" {
         return Some(Quantity { value: 1.0, len: 1, exact: true, more: true });

@@ -15,6 +15,7 @@ pub(crate) const MULTIPLIERS: &str = include_str!("../tables/multipliers.tsv");
 pub(crate) const PLACES: &str = include_str!("../tables/places.tsv");
 pub(crate) const PEOPLE: &str = include_str!("../tables/people.tsv");
 pub(crate) const FUNCTION_NOUNS: &str = include_str!("../tables/function_nouns.tsv");
+pub(crate) const FUNCTION_WORDS: &str = include_str!("../tables/function_words.tsv");
 pub(crate) const SIZE_WORDS: &str = include_str!("../tables/size_words.tsv");
 pub(crate) const COMPOUND_MODIFIERS: &str = include_str!("../tables/compound_modifiers.tsv");
 
@@ -30,6 +31,7 @@ mod tests {
             ("places", PLACES, 2),
             ("people", PEOPLE, 1),
             ("function_nouns", FUNCTION_NOUNS, 1),
+            ("function_words", FUNCTION_WORDS, 1),
             ("size_words", SIZE_WORDS, 3),
             ("compound_modifiers", COMPOUND_MODIFIERS, 1),
         ] {
