@@ -193,7 +193,6 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             "both sides of",
             "to either side of",
             "flanking",
-            "flanked by",
         ],
     ) {
         return Some((Cue::EachSide, n));
@@ -397,6 +396,12 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
     // Corners: "in the corner", "in the far left corner", "in the northeast corner".
     if matches!(t.norm.as_str(), "in" | "into" | "at") {
         let mut j = skip_determiners(toks, i + 1);
+        // "in all four corners", "in two corners".
+        while toks.get(j).is_some_and(|w| {
+            matches!(w.norm.as_str(), "all" | "two" | "three" | "four" | "different" | "separate" | "opposite")
+        }) {
+            j += 1;
+        }
         let mut dirs = Vec::new();
         let mut compass = None;
         while let Some(w) = toks.get(j).filter(|t| t.kind == TokenKind::Word) {

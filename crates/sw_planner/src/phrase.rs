@@ -282,6 +282,13 @@ impl Phrases<'_> {
                 _ => {}
             }
         }
+        // "36 in wide", "84 in x 40 in": "in" is inches before a dimension word.
+        if self.word(i + 1) == "in"
+            && (Axis::of(self.word(i + 2)).is_some()
+                || self.toks.get(i + 2).is_some_and(|t| t.kind == TokenKind::Times || t.is_word("by")))
+        {
+            return Some((n * 0.0254, 2, true));
+        }
         match self.lookup(i + 1, |m| matches!(m, Meaning::Unit(_))) {
             Some((Meaning::Unit(f), len)) => Some((n * f, 1 + len, true)),
             _ => Some((n, 1, false)),
@@ -416,10 +423,15 @@ impl Phrases<'_> {
                 k += len;
                 continue;
             }
-            if let Some((p, len)) = place_at(self.toks, k) {
+            // "on the left" is a place; "a whiteboard right next to" is not.
+            let side_word = matches!(self.word(k), "left" | "right");
+            if let Some((p, len)) = place_at(self.toks, k).filter(|_| !side_word || out.is_empty()) {
                 out.push(Noun::Place(p, k, len));
                 k += len;
                 continue;
+            }
+            if side_word {
+                break;
             }
             // "three cans", "two stands": a counted word the vocabulary reads as a verb is a
             // noun here.

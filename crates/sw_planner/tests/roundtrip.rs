@@ -614,6 +614,169 @@ fn no_objects_from_places(rng: &mut Rng) -> Case {
     Case { prompt, want, with_room: false }
 }
 
+/// One on each side: "a chair on either side of the desk", "two chairs, one on each side
+/// of the desk", "a desk flanked by two chairs", "chairs on both sides of the desk".
+fn each_side(rng: &mut Rng) -> Case {
+    let h = *rng.pick(&[nouns(Role::Surface), nouns(Role::Floor)].concat());
+    let mut c = *rng.pick(&nouns(Role::Floor));
+    while c.cat == h.cat {
+        c = *rng.pick(&nouns(Role::Floor));
+    }
+    let (hf, cf) = (h.forms[0], c.forms[0]);
+    let host = format!("{} {hf}", article(hf));
+    let two = counted(rng, 2, cf);
+    let prompt = match rng.below(5) {
+        0 => format!("{} {cf} on either side of the {hf}", article(cf)),
+        1 => format!("{} {cf} on each side of {host}", article(cf)),
+        2 => format!("{host} flanked by {two}"),
+        3 => format!("{} on both sides of {host}", two),
+        _ => format!("{}. Put {} {cf} on either side of it.", capitalise(&host), article(cf)),
+    };
+    let mut want = Meaning::default();
+    want.counts.insert(h.cat.into(), 1);
+    want.counts.insert(c.cat.into(), 2);
+    want.relations.insert(rel(c.cat, "on_each_side_of", Some(h.cat)));
+    Case { prompt, want, with_room: false }
+}
+
+/// Corners: "a plant in each corner" (four), "four plants in the corners", "plants in
+/// all four corners", "two plants in two corners".
+fn corners(rng: &mut Rng) -> Case {
+    let f = *rng.pick(&nouns(Role::Floor));
+    let ff = f.forms[0];
+    let (prompt, n) = match rng.below(5) {
+        0 => (format!("{} {ff} in each corner", article(ff)), 4),
+        1 => (format!("Put {} {ff} in every corner of the room.", article(ff)), 4),
+        2 => (format!("four {} in the corners", plural(ff)), 4),
+        3 => (format!("{} in all four corners", plural(ff)), 4),
+        _ => (format!("two {} in two corners", plural(ff)), 2),
+    };
+    let mut want = Meaning::default();
+    want.counts.insert(f.cat.into(), n);
+    want.relations.insert(rel(f.cat, "in_corners", None));
+    Case { prompt, want, with_room: false }
+}
+
+/// Stacks: "three stacks of four crates", "crates in three stacks, four high", "a stack
+/// of five crates", "crates stacked five high".
+fn stacks(rng: &mut Rng) -> Case {
+    let (cat, noun) =
+        *rng.pick(&[("crate", "crate"), ("cardboard_box", "box"), ("pallet", "pallet"), ("book", "book")]);
+    let stacks = 2 + rng.below(3) as u32;
+    let high = 2 + rng.below(4) as u32;
+    let w = |n: u32| NUMBER_WORDS[n as usize];
+    let (prompt, count, n, k) = match rng.below(4) {
+        0 => (format!("{} stacks of {} {}", w(stacks), w(high), plural(noun)), stacks * high, Some(high), Some(stacks)),
+        1 => (
+            format!("{} stacks of {}, {} high", w(stacks), plural(noun), w(high)),
+            stacks * high,
+            Some(high),
+            Some(stacks),
+        ),
+        2 => (format!("a stack of {} {}", w(high), plural(noun)), high, None, None),
+        _ => (format!("{} stacked {} high", plural(noun), w(high)), high, Some(high), None),
+    };
+    let mut want = Meaning::default();
+    want.counts.insert(cat.into(), count);
+    want.relations.insert(format!("{cat} stacked n={n:?} stacks={k:?}"));
+    Case { prompt, want, with_room: false }
+}
+
+/// Taking back: "a desk, a chair (skip that) and a lamp", "a desk and a stool… no, a
+/// chair", "two lamps (ignore) and a desk".
+fn retractions(rng: &mut Rng) -> Case {
+    let a = *rng.pick(&nouns(Role::Surface));
+    let b = *rng.pick(&nouns(Role::Floor));
+    let mut c = *rng.pick(&nouns(Role::Floor));
+    while c.cat == b.cat {
+        c = *rng.pick(&nouns(Role::Floor));
+    }
+    let (af, bf, cf) = (a.forms[0], b.forms[0], c.forms[0]);
+    let prompt = match rng.below(3) {
+        0 => format!("{} {af}, {} {bf} (skip that) and {} {cf}", article(af), article(bf), article(cf)),
+        1 => format!("{} {af} and {} {bf}... no, {} {cf}", article(af), article(bf), article(cf)),
+        _ => format!("two {} (ignore), {} {af} and {} {cf}", plural(bf), article(af), article(cf)),
+    };
+    let mut want = Meaning::default();
+    want.counts.insert(a.cat.into(), 1);
+    want.counts.insert(c.cat.into(), 1);
+    Case { prompt, want, with_room: false }
+}
+
+/// Typos in nouns and relation words: two letters swapped in a noun, a letter dropped
+/// from "between" or "against".
+fn typos(rng: &mut Rng) -> Case {
+    let swap = |w: &str, at: usize| -> String {
+        let mut c: Vec<char> = w.chars().collect();
+        if at + 1 < c.len() {
+            c.swap(at, at + 1);
+        }
+        c.into_iter().collect()
+    };
+    let pick =
+        [("chair", "chair"), ("table", "table"), ("cabinet", "cabinet"), ("laptop", "laptop"), ("fridge", "fridge")];
+    let (cat, w) = *rng.pick(&pick);
+    let typo = swap(w, 1 + rng.below(w.len() - 3));
+    let (prompt, relation) = match rng.below(3) {
+        0 => (format!("a {typo} agianst the wall"), "against_wall"),
+        1 => (format!("a {typo} in the corner"), "in_corner"),
+        _ => (format!("a {typo} by the door"), "near_door"),
+    };
+    let mut want = Meaning::default();
+    want.counts.insert(cat.into(), 1);
+    want.relations.insert(rel(cat, relation, None));
+    Case { prompt, want, with_room: false }
+}
+
+/// Imperial sizes: "a 6 ft long table", "a table 36 in wide", "a 6' table".
+fn imperial(rng: &mut Rng) -> Case {
+    let s = *rng.pick(&nouns(Role::Surface));
+    let sf = s.forms[0];
+    let feet = 3 + rng.below(6) as i64;
+    let (prompt, name, mm) = match rng.below(4) {
+        0 => (format!("a {feet} ft long {sf}"), "length", (feet as f64 * 304.8).round() as i64),
+        1 => {
+            (format!("{} {sf} {} in wide", article(sf), feet * 12), "width", (feet as f64 * 12.0 * 25.4).round() as i64)
+        }
+        2 => (format!("a {feet}' {sf}"), "length", (feet as f64 * 304.8).round() as i64),
+        _ => (format!("{} {sf}, {feet} feet long", article(sf)), "length", (feet as f64 * 304.8).round() as i64),
+    };
+    let mut want = Meaning::default();
+    want.counts.insert(s.cat.into(), 1);
+    want.sizes.insert(s.cat.into(), vec![(name, mm)]);
+    Case { prompt, want, with_room: false }
+}
+
+/// Ends: "a bin at the end of the workbench", "a bin at both ends of the workbench" (two).
+fn ends(rng: &mut Rng) -> Case {
+    let s = *rng.pick(&nouns(Role::Surface));
+    let f = *rng.pick(&nouns(Role::Floor));
+    let (sf, ff) = (s.forms[0], f.forms[0]);
+    let mut want = Meaning::default();
+    want.counts.insert(s.cat.into(), 1);
+    let prompt = match rng.below(3) {
+        0 => {
+            want.counts.insert(f.cat.into(), 1);
+            want.relations.insert(rel(f.cat, "at_end_of", Some(s.cat)));
+            want.relations.insert(rel(f.cat, "at_end_of_row", Some(s.cat)));
+            format!("{} {sf} with {} {ff} at one end of it", article(sf), article(ff))
+        }
+        1 => {
+            want.counts.insert(f.cat.into(), 1);
+            want.relations.insert(rel(f.cat, "at_end_of", Some(s.cat)));
+            want.relations.insert(rel(f.cat, "at_end_of_row", Some(s.cat)));
+            format!("{} {ff} at the end of {} {sf}", article(ff), article(sf))
+        }
+        _ => {
+            want.counts.insert(f.cat.into(), 2);
+            want.relations.insert(rel(f.cat, "at_end_of", Some(s.cat)) + " end=both");
+            want.relations.insert(rel(f.cat, "at_end_of_row", Some(s.cat)));
+            format!("{} {ff} at both ends of {} {sf}", article(ff), article(sf))
+        }
+    };
+    Case { prompt, want, with_room: false }
+}
+
 // ------------------------------------------------------------------ the test
 
 /// Cases per family; each plans in well under a millisecond.
@@ -633,6 +796,13 @@ fn every_wording_of_a_scene_gives_the_same_plan() {
         ("quantities", quantities),
         ("references", references),
         ("no_objects_from_places", no_objects_from_places),
+        ("each_side", each_side),
+        ("corners", corners),
+        ("stacks", stacks),
+        ("retractions", retractions),
+        ("typos", typos),
+        ("imperial", imperial),
+        ("ends", ends),
     ];
     let mut report = String::new();
     let mut total = 0;

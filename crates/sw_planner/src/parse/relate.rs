@@ -9,7 +9,7 @@ use crate::cues::{Cue, cue_at, target_start};
 use crate::lexicon::Meaning;
 use crate::phrase::PlaceKind;
 use crate::said::{Said, is_set_into};
-use crate::text::singular;
+use crate::text::{number_word, singular};
 
 impl Parser<'_> {
     pub(super) fn try_cue(&mut self, i: usize) -> Option<usize> {
@@ -189,9 +189,13 @@ impl Parser<'_> {
     /// "by" stands around what came before — "around" turned round. The pieces are a group
     /// of their own (a plural without a count gets the usual default, not two).
     fn try_surrounded(&mut self, i: usize) -> Option<usize> {
-        if !matches!(self.word(i), "surrounded" | "enclosed" | "encircled" | "ringed" | "fenced")
-            || !matches!(self.word(i + 1), "by" | "with")
-        {
+        // "a desk flanked by two chairs": the chairs on either side of the desk.
+        let cue = match self.word(i) {
+            "surrounded" | "enclosed" | "encircled" | "ringed" | "fenced" => Cue::Around,
+            "flanked" => Cue::EachSide,
+            _ => return None,
+        };
+        if !matches!(self.word(i + 1), "by" | "with") {
             return None;
         }
         let target = match self.subject.clone()? {
@@ -200,14 +204,14 @@ impl Parser<'_> {
         };
         let j = target_start(&self.toks, i + 2);
         self.taking_pieces = true;
-        let taken = self.target_at(j, &Cue::Around);
+        let taken = self.target_at(j, &cue);
         self.taking_pieces = false;
         let (pieces, next) = taken?;
         if pieces.starts_with('@') || pieces == target {
             return None;
         }
         self.mark(i, next);
-        self.apply(&Subject::Group(pieces), Cue::Around, vec![target]);
+        self.apply(&Subject::Group(pieces), cue, vec![target]);
         Some(next)
     }
 
@@ -345,8 +349,23 @@ impl Parser<'_> {
             }
             // An indefinite phrase ("a filing cabinet") names a new thing unless a group of
             // its very category exists; only a definite one ("the cabinet") refers by head.
+            // By its head word only when the phrase is that word alone ("the bench" for a
+            // workbench; "the filing cabinet" is no cabinet named before).
             Head::Known(Meaning::Category(cat)) => match if definite || !indefinite {
-                self.resolve_group(Some(cat), &raw_head)
+                let generic = p.text.split_whitespace().filter(|w| number_word(w).is_none()).count() <= 1;
+                if generic {
+                    // Never the subject itself under another name ("a locker on either side of
+                    // the cabinet").
+                    let subject = match &self.subject {
+                        Some(Subject::Group(g)) => Some(g.clone()),
+                        _ => None,
+                    };
+                    self.resolve_group(Some(cat), &raw_head).filter(|g| {
+                        Some(g) != subject.as_ref() || self.group(g).is_some_and(|x| x.category == Some(*cat))
+                    })
+                } else {
+                    self.draft.groups.iter().rev().find(|g| g.category == Some(*cat)).map(|g| g.id.clone())
+                }
             } else {
                 self.draft.groups.iter().rev().find(|g| g.category == Some(*cat)).map(|g| g.id.clone())
             } {
