@@ -28,6 +28,10 @@ use sw_plan::ScenePlan;
 /// Longest prompt accepted, in bytes (the same limit as the HTTP API).
 pub const MAX_PROMPT_BYTES: usize = 64 * 1024;
 
+/// Longest prompt the reader reads, in characters once runs of spaces are collapsed: a
+/// scene description, not a document. Longer ones are refused up front (exit 2).
+pub const MAX_PROMPT_CHARS: usize = 4000;
+
 /// Why a prompt cannot be planned. Each is a problem with the input (exit code 2).
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum PlannerError {
@@ -37,6 +41,8 @@ pub enum PlannerError {
     Empty,
     #[error("the prompt is {bytes} bytes; the limit is {limit} bytes")]
     TooLong { bytes: usize, limit: usize },
+    #[error("the prompt is {chars} characters; the reader reads at most {limit}: describe one scene in fewer words")]
+    TooManyChars { chars: usize, limit: usize },
     #[error("{0}")]
     InvalidSize(String),
     #[error(
@@ -59,6 +65,10 @@ pub fn plan(prompt: &str) -> Result<ScenePlan, PlannerError> {
     let cleaned = clean(prompt);
     if cleaned.is_empty() {
         return Err(PlannerError::Empty);
+    }
+    let chars = cleaned.chars().count();
+    if chars > MAX_PROMPT_CHARS {
+        return Err(PlannerError::TooManyChars { chars, limit: MAX_PROMPT_CHARS });
     }
     let mut tokens = text::tokenize(&cleaned);
     let typos = phrase::correct_function_words(lexicon(), &mut tokens);

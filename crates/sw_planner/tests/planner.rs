@@ -6,7 +6,7 @@
 
 use proptest::prelude::*;
 use sw_plan::{Corner, Mount, ObjectPlan, RelationKind, RobotPlan, RoomKind, ScenePlan, SizeWord, Wall};
-use sw_planner::{MAX_PROMPT_BYTES, PlannerError, plan};
+use sw_planner::{MAX_PROMPT_BYTES, MAX_PROMPT_CHARS, PlannerError, plan};
 
 // ------------------------------------------------------------------------ helpers
 
@@ -1074,9 +1074,12 @@ fn too_long_prompts_are_rejected() {
 #[test]
 
 fn a_prompt_at_the_size_limit_of_repeated_nouns_is_planned() {
-    let prompt = "box ".repeat(MAX_PROMPT_BYTES / 4 - 1);
-    let p = ok(&prompt);
+    // At the reader's limit in characters it is planned; one more and it is refused.
+    let prompt = "box ".repeat(MAX_PROMPT_CHARS / 4);
+    let p = ok(prompt.trim_end());
     assert!(p.object_count() >= 1);
+    let over = format!("{} box", prompt.trim_end());
+    assert!(matches!(err(&over), PlannerError::TooManyChars { limit: MAX_PROMPT_CHARS, .. }));
 }
 
 #[test]
@@ -1333,6 +1336,7 @@ fn check_any(prompt: &str) -> Result<(), TestCaseError> {
             prop_assert!(back.is_ok(), "{:?}: {:?}", prompt, back.err());
         }
         Err(PlannerError::TooLong { .. }) => prop_assert!(prompt.len() > MAX_PROMPT_BYTES),
+        Err(PlannerError::TooManyChars { chars, .. }) => prop_assert!(chars > MAX_PROMPT_CHARS),
         Err(PlannerError::Empty) => prop_assert!(prompt.chars().all(|c| c.is_whitespace() || c.is_control())),
         Err(PlannerError::InvalidSize(msg)) => prop_assert!(!msg.is_empty()),
         Err(PlannerError::NothingUnderstood) => {}
