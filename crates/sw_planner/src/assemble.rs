@@ -147,6 +147,7 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
             continue;
         };
         let hint = SizeHint { words: g.sizes.clone(), explicit: g.explicit };
+        size_note(g, &mut approximated);
         let (category, proxy) = match g.category {
             Some(c) => (c.to_string(), None),
             None => {
@@ -427,6 +428,41 @@ fn screens_are_partitions(plan: &mut ScenePlan, notes: &mut Vec<Approximation>) 
                 reason: "screens that stand on the floor are partition screens".into(),
             });
         }
+    }
+}
+
+/// Says what size words do to a group: the factors on its usual size (width, depth,
+/// height), which the catalog keeps within the category's range.
+fn size_note(g: &GroupDraft, notes: &mut Vec<Approximation>) {
+    if g.sizes.is_empty() {
+        return;
+    }
+    let mut f = [1.0f64; 3];
+    for w in &g.sizes {
+        for (a, b) in f.iter_mut().zip(w.factors()) {
+            *a *= b;
+        }
+    }
+    let words: Vec<&str> = g.sizes.iter().map(|w| size_word_name(*w)).collect();
+    let what = g.category.map_or_else(|| g.label.clone(), |c| c.replace('_', " "));
+    notes.push(Approximation {
+        text: g.phrase.clone(),
+        became: format!("× {} wide, × {} deep, × {} tall", trim(f[0]), trim(f[1]), trim(f[2])),
+        reason: format!("'{}': the usual {what} scaled, kept within the sizes a {what} comes in", words.join(" ")),
+    });
+}
+
+fn size_word_name(w: SizeWord) -> &'static str {
+    match w {
+        SizeWord::Tiny => "tiny",
+        SizeWord::Small => "small",
+        SizeWord::Large => "large",
+        SizeWord::Huge => "huge",
+        SizeWord::Tall => "tall",
+        SizeWord::Short => "short",
+        SizeWord::Long => "long",
+        SizeWord::Wide => "wide",
+        SizeWord::Narrow => "narrow",
     }
 }
 

@@ -297,32 +297,6 @@ const COLORS: &[(&str, [f64; 4])] = &[
     ("cream", [0.96, 0.93, 0.82, 1.0]),
 ];
 
-const SIZES: &[(&str, SizeWord)] = &[
-    ("tiny", SizeWord::Tiny),
-    ("miniature", SizeWord::Tiny),
-    ("mini", SizeWord::Tiny),
-    ("small", SizeWord::Small),
-    ("little", SizeWord::Small),
-    ("compact", SizeWord::Small),
-    ("large", SizeWord::Large),
-    ("big", SizeWord::Large),
-    ("huge", SizeWord::Huge),
-    ("giant", SizeWord::Huge),
-    ("massive", SizeWord::Huge),
-    ("enormous", SizeWord::Huge),
-    ("oversized", SizeWord::Huge),
-    ("tall", SizeWord::Tall),
-    ("high", SizeWord::Tall),
-    ("short", SizeWord::Short),
-    ("low", SizeWord::Short),
-    ("long", SizeWord::Long),
-    ("wide", SizeWord::Wide),
-    ("broad", SizeWord::Wide),
-    ("narrow", SizeWord::Narrow),
-    ("slim", SizeWord::Narrow),
-    ("thin", SizeWord::Narrow),
-];
-
 const MATERIALS: &[(&str, Option<[f64; 4]>)] = &[
     ("wooden", Some([0.62, 0.45, 0.28, 1.0])),
     ("wood", Some([0.62, 0.45, 0.28, 1.0])),
@@ -614,8 +588,10 @@ impl Lexicon {
         for (w, c) in COLORS {
             lex.add(w, Meaning::Color(w, *c));
         }
-        for (w, s) in SIZES {
-            lex.add(w, Meaning::Size(*s));
+        for r in crate::tables::rows(crate::tables::SIZE_WORDS) {
+            if let Some(s) = size_word(r[1]) {
+                lex.add(r[0], Meaning::Size(s));
+            }
         }
         for (w, c) in MATERIALS {
             lex.add(w, Meaning::Material(w, *c));
@@ -685,6 +661,22 @@ impl Lexicon {
             .filter(|e| e.words.len() == 1 && is_head(&e.meaning))
             .map(|e| (e.words[0].as_str(), &e.meaning))
     }
+}
+
+/// A size word's name in `tables/size_words.tsv`.
+fn size_word(name: &str) -> Option<SizeWord> {
+    Some(match name {
+        "tiny" => SizeWord::Tiny,
+        "small" => SizeWord::Small,
+        "large" => SizeWord::Large,
+        "huge" => SizeWord::Huge,
+        "tall" => SizeWord::Tall,
+        "short" => SizeWord::Short,
+        "long" => SizeWord::Long,
+        "wide" => SizeWord::Wide,
+        "narrow" => SizeWord::Narrow,
+        _ => return None,
+    })
 }
 
 /// Meanings that can be the head noun of a phrase.

@@ -794,6 +794,7 @@ impl<'a> Parser<'a> {
                     });
                 }
                 let id = self.new_group(Some(cat), cat.replace('_', " "), &p, explicit);
+                self.standard_size(&id, cat, &p.text);
                 if definite
                     && !possessed
                     && let Some(g) = self.draft.groups.last_mut()
@@ -861,6 +862,29 @@ impl<'a> Parser<'a> {
         });
         self.subject = None;
         self.in_place_clause = true;
+    }
+
+    /// "a king-size bed", "two single beds": a size word that names a standard size of the
+    /// thing (tables/kind_sizes.tsv) sets that size, unless the prompt stated one, and says
+    /// so.
+    fn standard_size(&mut self, id: &str, cat: &str, text: &str) {
+        let lower = text.to_lowercase();
+        let words: Vec<&str> = lower.split(|c: char| c.is_whitespace() || c == '-').collect();
+        let Some(row) = crate::tables::rows(crate::tables::KIND_SIZES).find(|r| r[0] == cat && words.contains(&r[1]))
+        else {
+            return;
+        };
+        let Ok(v) = row[3].parse::<f64>() else { return };
+        let Some(g) = self.draft.groups.iter_mut().find(|g| g.id == id) else { return };
+        if g.explicit.width.is_some() || g.explicit.length.is_some() || row[2] != "width" {
+            return;
+        }
+        g.explicit.width = Some(v);
+        self.draft.approximated.push(Approximation {
+            text: text.to_string(),
+            became: format!("{v} m wide"),
+            reason: row[4].to_string(),
+        });
     }
 
     fn new_group(
