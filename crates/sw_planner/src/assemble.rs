@@ -320,8 +320,32 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
             reason: "not a room, object, robot, size or relation the offline planner knows".into(),
         })
         .collect();
+    drop_invalid_relations(&mut plan);
     plan.validate().map_err(|e| PlannerError::InvalidSize(e.to_string()))?;
     Ok(plan)
+}
+
+/// A relation the contract cannot state (a stack of robots, the end of a robot's row) is
+/// left out and said so, rather than refusing the whole prompt.
+fn drop_invalid_relations(plan: &mut ScenePlan) {
+    let Err(errors) = plan.validate() else { return };
+    let mut bad: Vec<(usize, String)> = errors
+        .0
+        .iter()
+        .filter_map(|e| {
+            let i = e.path.strip_prefix("relations[")?.split(']').next()?.parse::<usize>().ok()?;
+            Some((i, e.message.clone()))
+        })
+        .collect();
+    bad.sort_by(|a, b| b.0.cmp(&a.0));
+    bad.dedup_by_key(|(i, _)| *i);
+    for (i, why) in bad {
+        if i < plan.relations.len() {
+            let r = plan.relations.remove(i);
+            let text = plan.describe(&r);
+            plan.understanding.approximated.push(Approximation { text, became: "left out".into(), reason: why });
+        }
+    }
 }
 
 /// The same relation pointing at `target` (every kind listed, so that a new kind with a

@@ -936,8 +936,9 @@ impl<'a> Parser<'a> {
             let and_only = s >= 2
                 && matches!(self.word(s - 1), "and" | "plus")
                 && self.toks.get(s - 2).is_some_and(|t| t.kind != TokenKind::Comma);
-            let joined =
-                self.each_taken == 0 || (and_only && self.group(id).is_some_and(|g| g.count.is_none_or(|c| c <= 1.0)));
+            // "each bench with a sink and 2 stools": the list joined by "and" (no comma
+            // before it, which would start something new).
+            let joined = self.each_taken == 0 || and_only;
             if joined {
                 self.each_taken += 1;
                 // "each loaded with boxes" (no count): a load, not one per host.

@@ -127,8 +127,12 @@ pub(crate) fn correct_function_words(lex: &Lexicon, toks: &mut [Token]) -> Vec<s
             continue;
         }
         let first = t.norm.chars().next();
+        // Not another form of the same word ("stack" is no typo of "stacks").
         let near = |w: &str| {
-            w.chars().next() == first && w.len().abs_diff(t.norm.len()) <= 1 && typo_distance(&t.norm, w) == 1
+            w.chars().next() == first
+                && w.len().abs_diff(t.norm.len()) <= 1
+                && singular(w) != singular(&t.norm)
+                && typo_distance(&t.norm, w) == 1
         };
         let mut found = words.iter().find(|w| near(w)).map(|w| w.to_string());
         if found.is_none() {

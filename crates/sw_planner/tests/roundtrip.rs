@@ -398,7 +398,10 @@ fn distribution(rng: &mut Rng) -> Case {
     let mut want = Meaning::default();
     want.counts.insert(h.cat.into(), n);
     want.counts.insert(c.cat.into(), n * m);
-    want.relations.insert(rel(h.cat, "each_with", Some(c.cat)));
+    // each_with pairs one to one: two per host is a count, not a pairing.
+    if m == 1 {
+        want.relations.insert(rel(h.cat, "each_with", Some(c.cat)));
+    }
     if item {
         want.relations.insert(rel(c.cat, "on", Some(h.cat)));
     }

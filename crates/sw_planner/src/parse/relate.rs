@@ -71,12 +71,21 @@ impl Parser<'_> {
                 }
             }
             // "at the end of the row", "between the rows": the most recent group in rows.
-            if matches!(self.word(j), "row" | "line" | "rows" | "lines" | "aisle" | "aisles")
-                && matches!(cue, Cue::EndOf(_) | Cue::Between | Cue::InFront | Cue::Behind | Cue::NextTo | Cue::Near)
+            // "next to the stack", "behind the pile": the group stacked last.
+            let stack = matches!(self.word(j), "stack" | "stacks" | "pile" | "piles");
+            if (stack || matches!(self.word(j), "row" | "line" | "rows" | "lines" | "aisle" | "aisles"))
+                && matches!(
+                    cue,
+                    Cue::EndOf(_) | Cue::Between | Cue::InFront | Cue::Behind | Cue::NextTo | Cue::Near | Cue::On
+                )
             {
                 let row = self.draft.relations.iter().rev().find_map(|(s, k)| {
-                    matches!(k, RelationKind::InRow | RelationKind::InRows { .. } | RelationKind::FacingEachOther)
-                        .then(|| s.clone())
+                    let fits = if stack {
+                        matches!(k, RelationKind::Stacked { .. })
+                    } else {
+                        matches!(k, RelationKind::InRow | RelationKind::InRows { .. } | RelationKind::FacingEachOther)
+                    };
+                    fits.then(|| s.clone())
                 });
                 let current = match &self.subject {
                     Some(Subject::Group(g)) => Some(g.clone()),
@@ -516,6 +525,13 @@ impl Parser<'_> {
                     (Cue::EndOf(end), [t]) if !self.group_is_plural_row(t) || end.is_some() => match end {
                         Some(EndOf::Both) => {
                             self.one_each_side(&subject);
+                            // "parts bins at both ends": one at each end.
+                            if let Some(g) = self.draft.groups.iter_mut().find(|x| x.id == subject)
+                                && g.count.is_none()
+                                && g.count_rule.is_none()
+                            {
+                                g.count = Some(2.0);
+                            }
                             Said::AtEnd(t.clone(), EndOf::Both).kind()
                         }
                         Some(e) => Said::AtEnd(t.clone(), e).kind(),
@@ -568,6 +584,12 @@ impl Parser<'_> {
                         }
                     }
                     (Cue::Facing, _) => RelationKind::FacingEachOther,
+                    // "each bench with a sink at one end": the bench's end, not the room's.
+                    (Cue::End(None), _)
+                        if self.each_host.as_ref().is_some_and(|h| !h.starts_with('@') && *h != subject) =>
+                    {
+                        Said::AtEndOf(self.each_host.clone().unwrap_or_default()).kind()
+                    }
                     (Cue::End(w), _) => RelationKind::AtEnd { wall: w },
                     (Cue::Corner(c), _) => RelationKind::InCorner { corner: c },
                     (Cue::Center, _) => RelationKind::InCenter,
@@ -763,7 +785,17 @@ impl Parser<'_> {
             (Cue::Around, [t]) | (Cue::FacingTarget, [t]) => RelationKind::Near { target: t.clone() },
             (Cue::EachSide, [t]) => RelationKind::NextTo { target: t.clone() },
             (Cue::In | Cue::Above, _) => return,
-            (Cue::EndOf(_), [t]) => RelationKind::AtEndOfRow { target: t.clone() },
+            (Cue::EndOf(end), [t]) => {
+                // The stated end, and the end of the row of one the layout keeps.
+                let stated = match end {
+                    Some(e) => Said::AtEnd(t.clone(), *e).kind(),
+                    None => Said::AtEndOf(t.clone()).kind(),
+                };
+                if !self.draft.robot_relations.contains(&(idx, stated.clone())) {
+                    self.draft.robot_relations.push((idx, stated));
+                }
+                RelationKind::AtEndOfRow { target: t.clone() }
+            }
             (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
             (Cue::Door, _) => RelationKind::NearDoor,
             (Cue::Corner(c), _) => RelationKind::InCorner { corner: *c },

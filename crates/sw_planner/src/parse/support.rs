@@ -243,11 +243,15 @@ impl Parser<'_> {
             }
             return;
         }
+        let mut per = 1.0;
         if let Some(g) = self.draft.groups.iter_mut().find(|g| g.id == id) {
-            let per = g.count.unwrap_or(1.0).max(1.0);
+            per = g.count.unwrap_or(1.0).max(1.0);
             g.count_rule = Some(CountRule::EachOf { host: host.to_string(), per });
         }
-        self.relate(host, RelationKind::EachWith { target: id.to_string() });
+        // each_with pairs one to one; "two stools each" is a count, not a pairing.
+        if per <= 1.0 {
+            self.relate(host, RelationKind::EachWith { target: id.to_string() });
+        }
         if self.group_is_small(id) && self.group_has_surface(host) {
             self.relate(id, RelationKind::On { target: host.to_string() });
             self.on_host.push((id.to_string(), host.to_string()));
