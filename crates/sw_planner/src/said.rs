@@ -53,8 +53,8 @@ pub(crate) fn implied(kind: &RelationKind) -> Option<RelationKind> {
 }
 
 /// Categories a thing is set into rather than put in ("a sink in the counter").
+/// (`tables/set_into.tsv`).
 pub(crate) fn is_set_into(subject: Option<&str>, target: Option<&str>) -> bool {
-    let inset = subject.and_then(sw_catalog::find).is_some_and(|c| matches!(c.name, "sink" | "stove"));
-    let run = target.and_then(sw_catalog::find).is_some_and(|c| c.name == "counter" || c.has_tag("counter"));
-    inset && run
+    let (Some(s), Some(t)) = (subject, target) else { return false };
+    crate::tables::rows(crate::tables::SET_INTO).any(|r| r[0] == s && r[1] == t)
 }

@@ -18,6 +18,7 @@ pub(crate) const FUNCTION_NOUNS: &str = include_str!("../tables/function_nouns.t
 pub(crate) const FUNCTION_WORDS: &str = include_str!("../tables/function_words.tsv");
 pub(crate) const SIZE_WORDS: &str = include_str!("../tables/size_words.tsv");
 pub(crate) const KIND_SIZES: &str = include_str!("../tables/kind_sizes.tsv");
+pub(crate) const SET_INTO: &str = include_str!("../tables/set_into.tsv");
 pub(crate) const COMPOUND_MODIFIERS: &str = include_str!("../tables/compound_modifiers.tsv");
 
 #[cfg(test)]
@@ -35,6 +36,7 @@ mod tests {
             ("function_words", FUNCTION_WORDS, 1),
             ("size_words", SIZE_WORDS, 3),
             ("kind_sizes", KIND_SIZES, 5),
+            ("set_into", SET_INTO, 2),
             ("compound_modifiers", COMPOUND_MODIFIERS, 1),
         ] {
             let mut n = 0;

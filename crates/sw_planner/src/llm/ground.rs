@@ -14,6 +14,7 @@
 //! | an unknown noun (a proxy) | the model's group for those words (it may know them), else the reader's proxy |
 //! | a named robot | that model with its count; robots the prompt does not name are dropped |
 //! | a stated relation | kept, between the matching groups |
+//! | a stated dimension | that size on the matching group |
 //! | an anomaly request | exactly that request; none when the prompt asks for none |
 //!
 //! What the reader could not see stays the model's: open-vocabulary objects, implicit
@@ -260,6 +261,15 @@ pub fn ground(mut plan: ScenePlan, reading: &ScenePlan) -> (ScenePlan, Grounding
             );
             o.category = fact.category.clone();
             o.proxy = None;
+        }
+        // A stated dimension ("a 4.5 m conveyor") is the prompt's, not the model's guess.
+        if !fact.size.explicit.is_empty()
+            && let Some(o) = plan.objects.iter_mut().find(|o| o.id == keep)
+            && o.size.explicit != fact.size.explicit
+        {
+            let stated: Vec<String> = fact.size.explicit.stated().iter().map(|(n, v)| format!("{n} {v} m")).collect();
+            note(&mut g, &fact.phrase, &stated.join(", "), "the prompt states the size".into());
+            o.size.explicit = fact.size.explicit;
         }
         if count_stated(reading, &fact.phrase) {
             let planned: u32 = plan.objects.iter().filter(|o| hits.contains(&o.id)).map(|o| o.count).sum();
@@ -572,5 +582,33 @@ mod tests {
         assert_eq!(plan.robots.iter().map(|r| (r.model.as_str(), r.count)).collect::<Vec<_>>(), vec![("ur5e", 1)]);
         assert!(g.notes.iter().any(|n| n.reason.contains("left")), "{:#?}", g.notes);
         plan.validate().unwrap();
+    }
+
+    #[test]
+    fn the_relations_and_sizes_the_reader_states_reach_a_model_plan_that_left_them_out() {
+        // A model that names the things but none of the issue-20 placements: the grounded
+        // plan has the reader's inside, set into, each side, facing and stated length.
+        let prompt = "a kitchen with a counter, a hob in the counter, three cups in the sink, a table with a chair \
+                      on either side of it, a sofa facing the table and a 4.5 m conveyor";
+        let (plan, _) = grounded(
+            prompt,
+            json!({"objects": [
+                {"id": "counter", "category": "counter", "count": 1},
+                {"id": "hob", "category": "stove", "count": 1},
+                {"id": "cups", "category": "cup", "count": 3},
+                {"id": "sink", "category": "sink", "count": 1},
+                {"id": "table", "category": "table", "count": 1},
+                {"id": "chairs", "category": "chair", "count": 2},
+                {"id": "sofa", "category": "sofa", "count": 1},
+                {"id": "belt", "category": "conveyor", "count": 1}
+            ], "room": {"kind": "kitchen"}}),
+        );
+        plan.validate().unwrap();
+        let names: BTreeSet<&str> = plan.relations.iter().map(|r| r.kind.name()).collect();
+        for want in ["set_into", "inside", "on_each_side_of", "facing"] {
+            assert!(names.contains(want), "{want} missing: {names:?}");
+        }
+        let belt = plan.objects.iter().find(|o| o.category == "conveyor").unwrap();
+        assert_eq!(belt.size.explicit.length, Some(4.5), "{:?}", belt.size);
     }
 }
