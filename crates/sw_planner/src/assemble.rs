@@ -337,7 +337,7 @@ fn drop_invalid_relations(plan: &mut ScenePlan) {
             Some((i, e.message.clone()))
         })
         .collect();
-    bad.sort_by(|a, b| b.0.cmp(&a.0));
+    bad.sort_by_key(|(i, _)| std::cmp::Reverse(*i));
     bad.dedup_by_key(|(i, _)| *i);
     for (i, why) in bad {
         if i < plan.relations.len() {

@@ -662,10 +662,6 @@ impl<'a> Parser<'a> {
         self.phrases().noun_phrase(i, allow_unknown, bare)
     }
 
-    fn is_plain_unknown_word(&self, i: usize) -> bool {
-        self.phrases().is_plain_unknown_word(i)
-    }
-
     /// Records a phrase as a room, an object group or a robot.
     fn take_phrase(&mut self, p: Phrase, start: usize) {
         self.phrase_start = start;

@@ -189,8 +189,6 @@ pub(crate) struct NounPhrase {
     pub descriptors: Vec<String>,
     /// A room a modifier names ("the kitchen sink").
     pub room_modifier: Option<RoomKind>,
-    /// The thing a place belongs to, written as a modifier ("the table edge").
-    pub place_owner: Option<Meaning>,
     pub head: Head,
     pub plural: bool,
     pub text: String,
@@ -527,16 +525,9 @@ impl Phrases<'_> {
         };
         let mut descriptors = Vec::new();
         let mut room_modifier = None;
-        let mut place_owner = None;
         for m in &mods {
             match m {
                 Noun::Known(Meaning::Room(k) | Meaning::RoomAisle(k), ..) => room_modifier = Some(*k),
-                Noun::Known(m @ (Meaning::Category(_) | Meaning::Robot(_)), s, l) => {
-                    if matches!(head, Head::Place(_)) {
-                        place_owner = Some(m.clone());
-                    }
-                    descriptors.push(self.span(*s, s + l).to_lowercase());
-                }
                 Noun::Known(_, s, l) | Noun::Place(_, s, l) => descriptors.push(self.span(*s, s + l).to_lowercase()),
                 Noun::Unknown(s) | Noun::Modifier(s) => descriptors.push(self.word(*s).to_string()),
             }
@@ -586,7 +577,6 @@ impl Phrases<'_> {
             explicit,
             descriptors,
             room_modifier,
-            place_owner,
             head,
             plural,
             text,
@@ -642,10 +632,10 @@ impl Phrases<'_> {
             // "the table edge" is a place of the table; "desks back to back" is desks.
             if let (Noun::Place(..), Some(Noun::Known(_, ps, pl))) = (&nouns[k], k.checked_sub(1).map(|p| &nouns[p])) {
                 let w = self.word(ps + pl - 1);
-                if singular(w) != w {
-                    if let Noun::Known(m, s, l) = &nouns[k - 1] {
-                        return Some((Head::Known(m.clone()), *s, *l, nouns[..k - 1].to_vec()));
-                    }
+                if singular(w) != w
+                    && let Noun::Known(m, s, l) = &nouns[k - 1]
+                {
+                    return Some((Head::Known(m.clone()), *s, *l, nouns[..k - 1].to_vec()));
                 }
             }
             // "a Kinova arm", "the UR5e robot": the model, not the generic word after it.

@@ -42,12 +42,10 @@ impl Parser<'_> {
             Some(Subject::Group(g)) if self.group(g).is_some_and(|x| x.plural) => Some(g.clone()),
             _ => None,
         };
-        let Some(g) = current.or_else(|| match self.resolve_pronoun("them") {
+        let g = current.or_else(|| match self.resolve_pronoun("them") {
             Some(Subject::Group(g)) => Some(g),
             _ => None,
-        }) else {
-            return None;
-        };
+        })?;
         if let Some(group) = self.draft.groups.iter_mut().find(|x| x.id == g)
             && group.count_rule.is_none()
         {

@@ -119,7 +119,8 @@ impl Parser<'_> {
             "filled" | "stocked" | "packed" | "full" => Some(Support::FullOf),
             _ => None,
         };
-        if !verbs.contains(&self.word(j)) && !(load.is_some() && matches!(self.word(j + 1), "with" | "of")) {
+        let loaded = load.is_some() && matches!(self.word(j + 1), "with" | "of");
+        if !(verbs.contains(&self.word(j)) || loaded) {
             return None;
         }
         j += 1;
