@@ -256,6 +256,15 @@ const ROBOTS: &[(&str, Meaning)] = &[
     ("delivery robot", robot("turtlebot3", RobotKind::MobileBase, false)),
     ("amr", robot("turtlebot3", RobotKind::MobileBase, false)),
     ("agv", robot("turtlebot3", RobotKind::MobileBase, false)),
+    ("robot vacuum", robot("turtlebot3", RobotKind::MobileBase, false)),
+    ("robot vacuum cleaner", robot("turtlebot3", RobotKind::MobileBase, false)),
+    ("robotic vacuum", robot("turtlebot3", RobotKind::MobileBase, false)),
+    ("robot hoover", robot("turtlebot3", RobotKind::MobileBase, false)),
+    ("robot cleaner", robot("turtlebot3", RobotKind::MobileBase, false)),
+    ("roomba", robot("turtlebot3", RobotKind::MobileBase, false)),
+    ("fetch robot", robot("mobile_manipulator", RobotKind::MobileManipulator, false)),
+    ("tiago", robot("mobile_manipulator", RobotKind::MobileManipulator, false)),
+    ("stretch robot", robot("mobile_manipulator", RobotKind::MobileManipulator, false)),
     (
         "mobile manipulator",
         Meaning::Robot(RobotWord {

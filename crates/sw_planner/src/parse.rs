@@ -714,6 +714,17 @@ impl<'a> Parser<'a> {
                 if let Some((d, t, _)) = dims_here {
                     self.set_room_dims(d, t);
                 }
+                // "a robot cleaner (TurtleBot)", "robot arm (UR10e)": the same robot, named
+                // more exactly in brackets.
+                if start >= 1
+                    && self.toks[start - 1].norm == "("
+                    && let Some(Subject::Robot(prev)) = self.mentions.last().cloned()
+                    && word.exact
+                    && let Some(r) = self.draft.robots.get_mut(prev)
+                {
+                    r.word = word;
+                    return;
+                }
                 // "the robot", "the arm": the robot already introduced.
                 if self.is_definite(start)
                     && let Some(idx) = self.resolve_robot(word.wants, word.kind, !word.exact)
@@ -745,10 +756,16 @@ impl<'a> Parser<'a> {
                 // "a table with a UR5e": on it — unless a comma ended the list first.
                 let s = start;
                 let broken = s >= 2 && self.toks.get(s - 2).is_some_and(|t| t.kind == TokenKind::Comma);
+                // Only a work surface carries an arm ("a conveyor with three UR5es" has them
+                // beside it).
                 if let Some(host) = self.with_host.clone()
                     && !broken
                 {
-                    self.draft.robots[idx].mount = Mount::OnSurface { target: host };
+                    if self.group_is_work_surface(&host) {
+                        self.draft.robots[idx].mount = Mount::OnSurface { target: host };
+                    } else if self.draft.robots[idx].word.kind == sw_robots::RobotKind::Arm {
+                        self.draft.robots[idx].near = Some(host);
+                    }
                 }
                 self.subject = Some(Subject::Robot(idx));
                 self.mentions.push(Subject::Robot(idx));
@@ -991,6 +1008,14 @@ impl<'a> Parser<'a> {
                 || c.has_tag("storage")
                 || (c.has_tag("container") && c.has_tag("open"))
         })
+    }
+
+    /// A table, bench or counter: what an arm can stand on.
+    fn group_is_work_surface(&self, id: &str) -> bool {
+        self.group(id)
+            .and_then(|g| g.category)
+            .and_then(sw_catalog::find)
+            .is_some_and(|c| c.has_tag("surface") && c.has_tag("furniture"))
     }
 
     fn group_is_small(&self, id: &str) -> bool {

@@ -421,8 +421,14 @@ impl Phrases<'_> {
                 continue;
             }
             if let Some((m, len)) = self.lookup(k, is_head) {
+                // A robot's model name modifies nothing: "a panda sorts coloured blocks" ends
+                // at "panda" (a generic word after it, "UR5e arm", is read with it).
+                let model = matches!(&m, Meaning::Robot(w) if w.exact);
                 out.push(Noun::Known(m, k, len));
                 k += len;
+                if model && !matches!(self.lookup(k, is_head), Some((Meaning::Robot(_), _))) {
+                    break;
+                }
                 continue;
             }
             // "on the left" is a place; "a whiteboard right next to" is not.
@@ -430,6 +436,13 @@ impl Phrases<'_> {
             if let Some((p, len)) = place_at(self.toks, k).filter(|_| !side_word || out.is_empty()) {
                 out.push(Noun::Place(p, k, len));
                 k += len;
+                // A place modifies only a noun right after it ("a corner desk", "a wall
+                // clock"); "one side picking boxes" ends at "side".
+                let noun_next =
+                    self.lookup(k, is_head).is_some() || (self.is_plain_unknown_word(k) && self.can_be_noun(k));
+                if !noun_next {
+                    break;
+                }
                 continue;
             }
             if side_word {

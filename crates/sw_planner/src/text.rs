@@ -274,6 +274,10 @@ pub(crate) fn singular(word: &str) -> String {
     if let Some((_, s)) = IRREGULAR.iter().find(|(p, _)| *p == word) {
         return (*s).to_string();
     }
+    // "UR5e's", "PC's": a plural written with an apostrophe.
+    if let Some(stem) = word.strip_suffix("'s").filter(|s| s.len() >= 2) {
+        return stem.to_string();
+    }
     // "bookshelves", "wall shelves".
     if let Some(stem) = word.strip_suffix("shelves") {
         return format!("{stem}shelf");

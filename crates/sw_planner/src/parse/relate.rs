@@ -376,7 +376,17 @@ impl Parser<'_> {
                     self.draft.groups.iter().rev().find(|g| g.category == Some(*cat)).map(|g| g.id.clone())
                 }
             } else {
-                self.draft.groups.iter().rev().find(|g| g.category == Some(*cat)).map(|g| g.id.clone())
+                // "a red cube on a green cube": another one, not the subject itself.
+                let subject = match &self.subject {
+                    Some(Subject::Group(g)) => Some(g.clone()),
+                    _ => None,
+                };
+                self.draft
+                    .groups
+                    .iter()
+                    .rev()
+                    .find(|g| g.category == Some(*cat) && Some(&g.id) != subject.as_ref())
+                    .map(|g| g.id.clone())
             } {
                 Some(g) => g,
                 None => {
@@ -430,11 +440,14 @@ impl Parser<'_> {
             ("riser", "pedestal"),
             ("plinth", "pedestal"),
             ("mobile cart", "mobile"),
-            ("mobile base", "mobile"),
-            ("mobile platform", "mobile"),
             ("cart", "mobile"),
-            ("agv", "mobile"),
-            ("amr", "mobile"),
+            // An arm on a base that drives is a mobile manipulator.
+            ("mobile base", "manipulator"),
+            ("mobile platform", "manipulator"),
+            ("mobile robot", "manipulator"),
+            ("wheeled base", "manipulator"),
+            ("agv", "manipulator"),
+            ("amr", "manipulator"),
             ("floor", "floor"),
             ("ground", "floor"),
         ];
@@ -748,6 +761,43 @@ impl Parser<'_> {
             }
             (Cue::On, [t]) if t == "@mount:mobile" => {
                 self.set_mount(idx, Mount::MobileBase);
+                return;
+            }
+            // "a robot arm on an AGV" is a mobile manipulator; a named model ("a UR5 on a
+            // mobile base") keeps its model and rides a mobile cart.
+            (Cue::On, [t]) if t == "@mount:manipulator" => {
+                let generic = self.draft.robots.get(idx).is_some_and(|r| {
+                    r.phrase.to_lowercase().split_whitespace().all(|w| {
+                        matches!(
+                            w,
+                            "a" | "an"
+                                | "the"
+                                | "one"
+                                | "robot"
+                                | "robotic"
+                                | "arm"
+                                | "industrial"
+                                | "collaborative"
+                                | "cobot"
+                                | "manipulator"
+                        )
+                    })
+                });
+                if !generic {
+                    self.set_mount(idx, Mount::MobileBase);
+                    return;
+                }
+                if let Some(r) = self.draft.robots.get_mut(idx)
+                    && r.word.kind == sw_robots::RobotKind::Arm
+                {
+                    r.word = crate::lexicon::RobotWord {
+                        wants: "mobile_manipulator",
+                        kind: sw_robots::RobotKind::MobileManipulator,
+                        exact: false,
+                        on_mobile_base: false,
+                    };
+                    r.mount = Mount::Auto;
+                }
                 return;
             }
             (Cue::On, [t]) if t == "@mount:floor" => {

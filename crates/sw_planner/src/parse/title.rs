@@ -34,6 +34,10 @@ impl Parser<'_> {
                 // A list or a sentence before the colon is no title.
                 TokenKind::Comma | TokenKind::Stop => return None,
             }
+            // "Stack a red cube on a green cube - …" is a sentence, not a title.
+            if crate::cues::cue_at(&self.toks, j).is_some() {
+                return None;
+            }
             // "a kitchen with: a fridge, …" — a list announced, not a title.
             if matches!(t.norm.as_str(), "containing" | "has" | "have" | "includes" | "including") {
                 return None;
