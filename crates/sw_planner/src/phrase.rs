@@ -386,6 +386,15 @@ impl Phrases<'_> {
         best.map(|(_, _, m)| m.clone())
     }
 
+    /// The category a noun's category is in the room named so far.
+    fn room_sense(&self, cat: &'static str) -> &'static str {
+        let Some(room) = self.room else { return cat };
+        rows(crate::tables::ROOM_SENSES)
+            .find(|r| r[0] == room.name() && r[1] == cat)
+            .and_then(|r| sw_catalog::find(r[2]))
+            .map_or(cat, |c| c.name)
+    }
+
     /// A catalog category a one-word noun names by the last word of its name: "bench" for
     /// a workbench. "rack" and "workstation" depend on the room: pallet racks and
     /// workbenches in industrial rooms, shelves and desks elsewhere.
@@ -566,6 +575,8 @@ impl Phrases<'_> {
                     },
                 }
             }
+            // "a bed" in a hospital room is a hospital bed (tables/room_senses.tsv).
+            Head::Known(Meaning::Category(cat)) => Head::Known(Meaning::Category(self.room_sense(cat))),
             h => h,
         };
         // "UR5e arm", "TurtleBot robots": absorb the generic word after a robot name.

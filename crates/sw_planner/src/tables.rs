@@ -19,6 +19,7 @@ pub(crate) const FUNCTION_WORDS: &str = include_str!("../tables/function_words.t
 pub(crate) const SIZE_WORDS: &str = include_str!("../tables/size_words.tsv");
 pub(crate) const KIND_SIZES: &str = include_str!("../tables/kind_sizes.tsv");
 pub(crate) const SET_INTO: &str = include_str!("../tables/set_into.tsv");
+pub(crate) const ROOM_SENSES: &str = include_str!("../tables/room_senses.tsv");
 pub(crate) const COMPOUND_MODIFIERS: &str = include_str!("../tables/compound_modifiers.tsv");
 
 #[cfg(test)]
@@ -37,6 +38,7 @@ mod tests {
             ("size_words", SIZE_WORDS, 3),
             ("kind_sizes", KIND_SIZES, 5),
             ("set_into", SET_INTO, 2),
+            ("room_senses", ROOM_SENSES, 3),
             ("compound_modifiers", COMPOUND_MODIFIERS, 1),
         ] {
             let mut n = 0;

@@ -836,13 +836,13 @@ impl Parser<'_> {
             (Cue::EachSide, [t]) => RelationKind::NextTo { target: t.clone() },
             (Cue::In | Cue::Above, _) => return,
             (Cue::EndOf(end), [t]) => {
-                // The stated end, and the end of the row of one the layout keeps.
-                let stated = match end {
-                    Some(e) => Said::AtEnd(t.clone(), *e).kind(),
-                    None => Said::AtEndOf(t.clone()).kind(),
-                };
-                if !self.draft.robot_relations.contains(&(idx, stated.clone())) {
-                    self.draft.robot_relations.push((idx, stated));
+                // A named end ("at the start of the belt") is stated as such; the end of the
+                // row of one is what the layout keeps for a robot.
+                if let Some(e) = end {
+                    let stated = Said::AtEnd(t.clone(), *e).kind();
+                    if !self.draft.robot_relations.contains(&(idx, stated.clone())) {
+                        self.draft.robot_relations.push((idx, stated));
+                    }
                 }
                 RelationKind::AtEndOfRow { target: t.clone() }
             }
