@@ -118,6 +118,8 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
                                 | RelationKind::AtEnd { .. }
                                 | RelationKind::NearDoor
                                 | RelationKind::OnTwoWalls
+                                | RelationKind::OnOppositeWalls { .. }
+                                | RelationKind::InCorners
                                 | RelationKind::Leaning { .. }
                         )
                     });
@@ -125,9 +127,14 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
                 let formation = ctx.relations(g).iter().any(|r| r.is_group_formation());
                 // What goes under something claims the space before what goes around it.
                 let under = ctx.relations(g).iter().any(|r| matches!(r, RelationKind::Under { .. }));
+                // Corners are few: what is said to stand in them claims them first.
+                let cornered = ctx
+                    .relations(g)
+                    .iter()
+                    .any(|r| matches!(r, RelationKind::InCorner { .. } | RelationKind::InCorners));
                 let s = ctx.bounds[first].size();
                 let area = (s[0] * s[1] * 1e4) as i64;
-                (0, u8::from(!under), u8::from(!walled && !formation), -area)
+                (0, u8::from(!under && !cornered), u8::from(!walled && !formation), -area)
             }
         }
     };
