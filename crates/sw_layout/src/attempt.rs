@@ -153,6 +153,16 @@ pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
             RelationKind::SetInto { target } if is_small(ctx, idx) || ctx.bounds[idx].size()[2] <= 0.15 => {
                 Some(target.clone())
             }
+            // Small things on each side of a table: on its top, at opposite edges.
+            RelationKind::OnEachSideOf { target }
+                if is_small(ctx, idx)
+                    && ctx
+                        .instances(target)
+                        .first()
+                        .is_some_and(|&i| !ctx.input.objects[i].asset.surfaces.is_empty()) =>
+            {
+                Some(target.clone())
+            }
             // Items between two arms rest on the surface the arms share.
             RelationKind::Between { first, second } if is_small(ctx, idx) => shared_work(ctx, first, second),
             _ => None,

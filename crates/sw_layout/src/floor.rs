@@ -80,6 +80,7 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     // the desk"), for an object standing alone (a formation keeps its own).
     let reserve = crate::formation::reserves(ctx, &group);
     let ends = crate::formation::end_room(ctx, &group);
+    let wants_room = reserve != (0.0, 0.0) || ends.0 > 0.0;
     let mut egress_budget = if in_front { 0 } else { EGRESS_CHECKS };
     let b = ctx.bounds[idx];
 
@@ -153,8 +154,11 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     let mut best_partial: Option<(Spot, usize)> = None;
     for spot in &specific {
         let body = Body::object(&ctx.local[idx], spot);
-        let unmet =
-            checks.iter().filter(|c| !c.holds(ctx, &body, group_size)).count() + usize::from(!host_ok(ctx, &body));
+        // Room kept for what is said to stand around it counts as one more thing to keep.
+        let kept = !wants_room || room_kept(ctx, idx, spot, reserve, ends);
+        let unmet = checks.iter().filter(|c| !c.holds(ctx, &body, group_size)).count()
+            + usize::from(!host_ok(ctx, &body))
+            + usize::from(!kept);
         if best_partial.as_ref().is_some_and(|(_, u)| *u <= unmet) && unmet > 0 {
             continue;
         }
@@ -199,7 +203,7 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
         let at = |k: usize| if k < defaults.len() { defaults[k] } else { grid[k - defaults.len()] };
         // With room kept in front and behind for what is said to stand there, then
         // (when nothing has it) without.
-        let strict: &[bool] = if reserve == (0.0, 0.0) && ends.0 == 0.0 { &[false] } else { &[true, false] };
+        let strict: &[bool] = if wants_room { &[true, false] } else { &[false] };
         'passes: for &keep in strict {
             for j in start..all {
                 let spot = at(j);

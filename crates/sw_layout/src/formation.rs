@@ -303,14 +303,17 @@ pub(crate) fn end_room(ctx: &Ctx<'_>, group: &str) -> (f64, bool) {
         .relations
         .iter()
         .filter(|r| {
-            matches!(&r.kind, RelationKind::SetInto { target } | RelationKind::AtEndOf { target, .. } if target == group)
+            matches!(&r.kind, RelationKind::SetInto { target } | RelationKind::AtEndOf { target, .. } | RelationKind::OnEachSideOf { target } if target == group)
         })
         .filter_map(|r| ctx.instances(&r.subject).first().map(|&i| (i, r)))
         // Things resting on it need no floor.
         .filter(|(i, _)| !crate::attempt::is_small(ctx, *i) && ctx.bounds[*i].size()[2] > 0.15)
         .map(|(i, r)| {
             let s = ctx.bounds[i].size();
-            let n = if matches!(r.kind, RelationKind::AtEndOf { end: Some(sw_plan::EndOf::Both), .. }) { 2 } else { 1 };
+            let n = match r.kind {
+                RelationKind::AtEndOf { end: Some(sw_plan::EndOf::Both), .. } | RelationKind::OnEachSideOf { .. } => 2,
+                _ => 1,
+            };
             (s[0].max(s[1]) + 0.1, n.min(ctx.instances(&r.subject).len()))
         })
         .flat_map(|(w, n)| std::iter::repeat_n(w, n))
@@ -681,17 +684,27 @@ fn opposite_walls(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize], long: bool) ->
         pairs.push(short_pair);
     }
     for pair in pairs {
-        // Each half on its own wall of the pair, nothing committed unless both fit.
-        let saved = ctx.placed.clone();
-        let space = ctx.space.clone();
-        let (access, egress) = (ctx.access.clone(), ctx.egress.clone());
-        if place_on_walls(ctx, group, &halves, reserve, &pair) {
-            return true;
+        for walls in [[pair[0], pair[1]], [pair[1], pair[0]]] {
+            // Each half on its own wall of the pair — as one row, else each member on its
+            // own along that wall (a doorway in the middle) — nothing committed unless
+            // both halves fit.
+            let saved = ctx.placed.clone();
+            let space = ctx.space.clone();
+            let (access, egress) = (ctx.access.clone(), ctx.egress.clone());
+            let all = halves.iter().zip(walls).all(|(half, w)| {
+                place_on_walls(ctx, group, std::slice::from_ref(half), reserve, &[w])
+                    || half
+                        .iter()
+                        .all(|&m| ctx.placed[m].is_some() || place_on_walls(ctx, group, &[vec![m]], reserve, &[w]))
+            });
+            if all {
+                return true;
+            }
+            ctx.placed = saved;
+            ctx.space = space;
+            ctx.access = access;
+            ctx.egress = egress;
         }
-        ctx.placed = saved;
-        ctx.space = space;
-        ctx.access = access;
-        ctx.egress = egress;
     }
     if !ctx.input.plan.room.size_fixed {
         ctx.floor_failures += 1;

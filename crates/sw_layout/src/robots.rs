@@ -115,8 +115,11 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
         let edge = ctx.relations(&robot.group).iter().any(|r| matches!(r, sw_plan::RelationKind::OnEdgeOf { .. }));
         // Things said to be between arms on one surface need the length of it: the arms
         // stand at its ends.
+        // So do arms said to stand on either side of it: its ends leave their home poses
+        // apart.
         let ends = ctx.input.plan.relations.iter().any(|r| {
             matches!(&r.kind, sw_plan::RelationKind::Between { first, second } if *first == robot.group || *second == robot.group)
+                || (r.subject == robot.group && matches!(&r.kind, sw_plan::RelationKind::OnEachSideOf { target } if target == group))
         });
         let mut chosen: Option<(usize, Spot, Spot, SupportSurface, Vec<Aabb>)> = None;
         'hosts: for (hi, hspot) in &hosts {

@@ -31,6 +31,8 @@ enum Want {
     Edge,
     /// The top surface only ("a hob set into the worktop").
     Top,
+    /// Towards one of its long edges, alternately ("a plate on each side of the table").
+    Side,
 }
 
 /// What an item's relation to `host` asks of the surface it rests on.
@@ -42,6 +44,7 @@ fn want(ctx: &Ctx<'_>, idx: usize, host: &str) -> Want {
             RelationKind::Inside { target } if target == host => Some(Want::Interior),
             RelationKind::OnEdgeOf { target } if target == host => Some(Want::Edge),
             RelationKind::SetInto { target } if target == host => Some(Want::Top),
+            RelationKind::OnEachSideOf { target } if target == host => Some(Want::Side),
             // Between the arms that share a work surface: on its top, where they work.
             RelationKind::Between { first, .. } if ctx.input.robots.iter().any(|r| &r.group == first) => {
                 Some(Want::Top)
@@ -112,6 +115,9 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
             );
             continue;
         }
+        if stack_on_own(ctx, idx, &group) {
+            continue;
+        }
         let had_target = !ctx.placed_instances(&target).is_empty();
         if floor::place(ctx, idx) {
             let why = if had_target { "no room left on it" } else { "it could not be placed" };
@@ -163,6 +169,37 @@ fn in_stack_order(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
 /// over it.
 fn on_the_one_below(ctx: &mut Ctx<'_>, idx: usize, group: &str, k: usize) -> bool {
     let Some(&below) = stack_order(ctx, group).get(k - 1) else { return false };
+    on_top_of(ctx, idx, below)
+}
+
+/// A stackable item with no room left on its target: on top of one of its own kind that
+/// rests there ("three crates on a pallet" that holds two side by side: the third on one
+/// of them). The lowest free one first.
+fn stack_on_own(ctx: &mut Ctx<'_>, idx: usize, group: &str) -> bool {
+    if !ctx.input.objects[idx].has_tag("stackable") {
+        return false;
+    }
+    let members = ctx.instances(group);
+    let mut below: Vec<(f64, usize)> = members
+        .iter()
+        .filter(|&&i| i != idx)
+        .filter_map(|&i| {
+            let p = ctx.placed[i].as_ref()?;
+            let resting = matches!(&p.support, Support::Object { .. });
+            // Nothing of its own kind on it yet.
+            let free =
+                !ctx.placed.iter().flatten().any(
+                    |q| matches!(&q.support, Support::Object { object, .. } if *object == ctx.input.objects[i].name),
+                );
+            (resting && free).then_some((p.spot.z, i))
+        })
+        .collect();
+    below.sort_by(|a, b| a.0.total_cmp(&b.0));
+    below.into_iter().any(|(_, b)| on_top_of(ctx, idx, b))
+}
+
+/// Item `idx` on top of object `below`, centred over it.
+fn on_top_of(ctx: &mut Ctx<'_>, idx: usize, below: usize) -> bool {
     let Some(bs) = ctx.placed[below].as_ref().map(|p| p.spot) else { return false };
     // On the highest point of the one below (a plate's rim, a box's lid).
     let top = ctx.bounds[below].max[2];
@@ -283,13 +320,14 @@ fn place_on_group_as(
             .into_iter()
             .filter(|&i| match want {
                 Want::Interior => surfaces[i].clearance.is_some() || top - surfaces[i].z >= INTERIOR,
-                Want::Top => Some(i) == highest,
+                Want::Top | Want::Side => Some(i) == highest,
                 Want::Any | Want::Edge => true,
             })
             .collect();
         let pairs = if between { robot_pairs(ctx, &item_group) } else { Vec::new() };
         for si in usable {
-            if try_surface(ctx, idx, hi, si, &arms, all, want == Want::Edge, &pairs) {
+            let side = (want == Want::Side).then_some(k % 2 == 0);
+            if try_surface(ctx, idx, hi, si, &arms, all, (want == Want::Edge, side), &pairs) {
                 return true;
             }
         }
@@ -337,7 +375,7 @@ fn try_surface(
     si: usize,
     arms: &[([f64; 3], f64)],
     all: bool,
-    edge: bool,
+    (edge, side): (bool, Option<bool>),
     between: &[(Aabb, Aabb)],
 ) -> bool {
     let Some(host_spot) = ctx.placed[host].as_ref().map(|p| p.spot) else {
@@ -413,6 +451,18 @@ fn try_surface(
             for (x, y) in grid {
                 if edge && (x - surf.min[0]).min(surf.max[0] - x).min(y - surf.min[1]).min(surf.max[1] - y) > EDGE {
                     continue;
+                }
+                if let Some(up) = side {
+                    // In the outer part of the half towards one long edge.
+                    let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
+                    let (hx, hy) = (0.5 * (surf.max[0] - surf.min[0]), 0.5 * (surf.max[1] - surf.min[1]));
+                    let (across, half, along, half_along) =
+                        if hx >= hy { (y - cy, hy, x - cx, hx) } else { (x - cx, hx, y - cy, hy) };
+                    let off = if up { across } else { -across };
+                    // On that side as seen from the middle (not nearer an end than the edge).
+                    if off < 0.3 * half || along.abs() / half_along >= off / half {
+                        continue;
+                    }
                 }
                 let rect = [x - ex, y - ey, x + ex, y + ey];
                 let used = ctx.surface_use.get(&host).and_then(|u| u.get(si));

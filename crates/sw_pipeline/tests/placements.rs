@@ -289,3 +289,42 @@ fn a_stated_length_is_kept() {
         {"subject": "conveyor", "relation": "size", "dims": {"length": [4.05, 4.95]}}]});
     check("stated-length", &p, line);
 }
+
+#[test]
+fn nightstands_flank_a_bed_and_plates_sit_on_each_side_of_a_table() {
+    let p = plan(
+        "room",
+        [5.0, 4.0, 2.7],
+        &[("bed", "hospital_bed", 1), ("stands", "cabinet", 2), ("table", "dining_table", 1), ("plates", "plate", 2)],
+        json!([
+            {"subject": "bed", "relation": "against_wall", "wall": "west"},
+            {"subject": "stands", "relation": "on_each_side_of", "target": "bed"},
+            {"subject": "plates", "relation": "on_each_side_of", "target": "table"}
+        ]),
+        json!([]),
+    );
+    let line = json!({"counts": {"hospital_bed": 1, "cabinet": 2, "dining_table": 1, "plate": 2}, "robots": {}, "relations": [
+        {"subject": "cabinet", "relation": "on_each_side_of", "target": "hospital_bed"},
+        {"subject": "plate", "relation": "on_each_side_of", "target": "dining_table"},
+        {"subject": "plate", "relation": "on", "target": "dining_table"}]});
+    check("bed-table-sides", &p, line);
+}
+
+#[test]
+fn two_pandas_on_either_side_of_a_table_share_its_items() {
+    let p = plan(
+        "tabletop",
+        [4.0, 4.0, 3.0],
+        &[("table", "table", 1), ("cubes", "cube", 4)],
+        json!([
+            {"subject": "pandas", "relation": "on_each_side_of", "target": "table"},
+            {"subject": "cubes", "relation": "on", "target": "table"}
+        ]),
+        json!([{"id": "pandas", "model": "panda", "phrase": "two Pandas", "count": 2, "mount": {"mount": "auto"}}]),
+    );
+    let line = json!({"counts": {"table": 1, "cube": 4}, "robots": {"panda": 2}, "relations": [
+        {"subject": "panda", "relation": "on_each_side_of", "target": "table"},
+        {"subject": "panda", "relation": "reach", "target": "cube"},
+        {"subject": "panda", "relation": "reach", "target": "table"}]});
+    check("two-pandas", &p, line);
+}
