@@ -337,7 +337,22 @@ fn rotated(mut v: Vec<Body>, k: usize) -> Vec<Body> {
 /// Beside a target: left and right of it (same facing), then in front and behind,
 /// a little further out each round.
 pub(crate) fn beside(ctx: &Ctx<'_>, b: &Aabb, target: &str, k: usize) -> Vec<Spot> {
-    let bodies: Vec<Body> = relate::bodies(ctx, target).into_iter().map(|(_, b)| b).collect();
+    // Beside an arm on a stand: beside its stand (the arm's own base is inside it).
+    let stands: Vec<Body> = ctx
+        .input
+        .robots
+        .iter()
+        .filter(|r| r.group == target)
+        .filter_map(|r| match &r.mount {
+            crate::RobotMount::Carrier { object } => {
+                let i = ctx.input.objects.iter().position(|o| &o.name == object)?;
+                ctx.placed[i].as_ref().map(|p| Body::object(&ctx.local[i], &p.spot))
+            }
+            _ => None,
+        })
+        .collect();
+    let bodies: Vec<Body> =
+        if stands.is_empty() { relate::bodies(ctx, target).into_iter().map(|(_, b)| b).collect() } else { stands };
     beside_bodies(b, &rotated(bodies, k))
 }
 

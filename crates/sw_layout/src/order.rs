@@ -56,8 +56,21 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
             .map(|(ri, _)| format!("@robot{ri}"))
             .collect()
     };
+    // A target resting on something (placed with the items, later): its host.
+    let host_of = |t: &str| -> Option<String> {
+        ctx.relations(t).into_iter().find_map(|r| match r {
+            RelationKind::On { target } | RelationKind::Inside { target } if target != t => Some(target.clone()),
+            _ => None,
+        })
+    };
     let resolve = |t: &str| -> Vec<String> {
-        if group_keys.iter().any(|g| g == t) { vec![t.to_string()] } else { robot_keys(t) }
+        if group_keys.iter().any(|g| g == t) {
+            vec![t.to_string()]
+        } else if ctx.input.robots.iter().any(|r| r.group == t) {
+            robot_keys(t)
+        } else {
+            host_of(t).filter(|h| group_keys.contains(h)).into_iter().collect()
+        }
     };
     let deps: BTreeMap<String, Vec<String>> = units
         .iter()

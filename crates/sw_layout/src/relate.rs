@@ -96,6 +96,20 @@ pub(crate) fn bodies(ctx: &Ctx<'_>, target: &str) -> Vec<(Option<usize>, Body)> 
     if !objects.is_empty() {
         return objects;
     }
+    // Something that will rest on a host not yet holding it ("a sofa facing the TV" on
+    // its stand, placed later): its host stands in for it.
+    if !ctx.instances(target).is_empty() {
+        let host = ctx.relations(target).into_iter().find_map(|r| match r {
+            RelationKind::On { target: h } | RelationKind::Inside { target: h } if h != target => Some(h.clone()),
+            _ => None,
+        });
+        return host
+            .map(|h| ctx.placed_instances(&h))
+            .unwrap_or_default()
+            .into_iter()
+            .map(|(i, s)| (Some(i), Body::object(&ctx.local[i], &s)))
+            .collect();
+    }
     ctx.input
         .robots
         .iter()
@@ -426,9 +440,10 @@ impl<'r> Check<'r> {
             RelationKind::Near { .. } | RelationKind::Around { .. } => near_target(NEAR),
             RelationKind::InFrontOf { .. } => self.targets.iter().any(|t| in_front(body, t, 1.0)),
             RelationKind::Behind { .. } => self.targets.iter().any(|t| in_front(body, t, -1.0)),
+            // A single target: beyond an end of its long axis, on its line.
             RelationKind::AtEndOfRow { .. } => match &self.row {
                 Some(row) => at_row_end(body, row),
-                None => near_target(NEXT_TO),
+                None => self.targets.iter().any(|t| end_of(t, body, None).is_some()),
             },
             RelationKind::Between { .. } => {
                 let c = body.center();
