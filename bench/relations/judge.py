@@ -110,7 +110,9 @@ def parse_line(line: dict[str, Any]) -> list[Relation]:
             raise LineError(f"suite line {line.get('id', '?')!r}: size needs dims")
     for f in ("room_size_m",):
         v = line.get(f)
-        if v is not None and (not isinstance(v, list) or len(v) != 2 or not all(isinstance(x, (int, float)) for x in v)):
+        if v is not None and (
+            not isinstance(v, list) or len(v) != 2 or not all(isinstance(x, (int, float)) for x in v)
+        ):
             raise LineError(f"suite line {line.get('id', '?')!r}: {f} must be [a, b] in metres")
     h = line.get("room_height_m")
     if h is not None and not isinstance(h, (int, float)):

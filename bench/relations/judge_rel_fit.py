@@ -221,9 +221,8 @@ def room_size(room: Room, want: list[float], height: float | None) -> dict[str, 
         exp = sorted(float(x) for x in want)
         if any(abs(g - e) > ROOM_SIZE_TOL * e for g, e in zip(got, exp, strict=True)):
             probs.append(f"room {got[0]:.2f} × {got[1]:.2f} m, asked {exp[0]:g} × {exp[1]:g}")
-    if height is not None:
-        if room.height is None or abs(room.height - height) > ROOM_SIZE_TOL * height:
-            probs.append(f"ceiling {room.height} m, asked {height:g}")
+    if height is not None and (room.height is None or abs(room.height - height) > ROOM_SIZE_TOL * height):
+        probs.append(f"ceiling {room.height} m, asked {height:g}")
     return {
         "held": not probs,
         "measured": {"size_m": [round(g, 3) for g in got], "height_m": room.height},

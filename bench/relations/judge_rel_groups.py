@@ -162,7 +162,7 @@ def _rows_check(subs: list[Thing], d: Arr, n: int | None, m: int | None = None) 
     if (n is not None and len(rows) != n) or (n is None and len(rows) < 2):
         probs.append(f"{len(rows)} rows")
     sizes = [len(r) for r in rows]
-    if n is not None and max(sizes) - min(sizes) > 1:
+    if n is not None and m is None and max(sizes) - min(sizes) > 1:
         probs.append(f"uneven rows {sizes}")
     # "rows of four": every row holds m, one may be shorter when the count is not a multiple.
     if m is not None and (sum(1 for k in sizes if k != m) > int(len(subs) % m != 0) or max(sizes) > m):

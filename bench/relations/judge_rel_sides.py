@@ -1,5 +1,7 @@
-"""Relations of sides and ends: at the end of, on each side of, facing, on opposite walls,
-in the corners, back to back. Thresholds are in README.md.
+"""Relations of sides and ends.
+
+At the end of, on each side of, facing, on opposite walls, in the corners, back to back.
+Thresholds are in README.md.
 """
 
 from __future__ import annotations
@@ -77,7 +79,8 @@ def at_end_of(rel: Relation, scene: Scene) -> Verdict:
             bad.append(s.name)
         else:
             ends_of[best[3]].add(best[0])
-    why = f"not at {'the ' + rel.end if local else 'an'} end of {rel.target}: {', '.join(bad)}"
+    which = f"the {rel.end}" if local else "an"
+    why = f"not at {which} end of {rel.target}: {', '.join(bad)}"
     ok = not bad
     if ok and rel.end == "both" and not any(len(e) == 2 for e in ends_of.values()):
         ok, why = False, "not at both ends of one " + str(rel.target)
@@ -238,7 +241,7 @@ def back_to_back(rel: Relation, scene: Scene) -> Verdict:
         return Verdict.fail("all face one way")
 
     def mean(group: list[Thing]) -> Arr:
-        v = unit(np.sum([front_of(s) for s in group], axis=0))
+        v = unit(np.sum([f for s in group if (f := front_of(s)) is not None], axis=0))
         return v if v is not None else np.array([1.0, 0.0])
 
     fa, fb = mean(a), mean(b)

@@ -153,8 +153,9 @@ def under(rel: Relation, scene: Scene) -> Verdict:
 def stacked(rel: Relation, scene: Scene) -> Verdict:
     """Judge `stacked`.
 
-    The instances form `stacks` (default one) columns of `n` each (default: all), each
-    resting on the one below, centres within 25 cm of the one below.
+    The instances form `stacks` columns (default: as many as `n` each needs, else one)
+    of `n` each (default: all), each resting on the one below, centres within 25 cm of
+    the one below.
     """
     subs = resolve(scene, rel.subject)
     if not subs:
@@ -179,7 +180,8 @@ def stacked(rel: Relation, scene: Scene) -> Verdict:
             size, cur = size + 1, nxt
         stacks.append(size)
     real = [h for h in stacks if h >= 2]
-    want = rel.stacks or 1
+    # "stacked two high" without a count of stacks: as many columns as that takes.
+    want = rel.stacks or (math.ceil(len(subs) / rel.n) if rel.n else 1)
     probs = []
     if len(real) != want:
         probs.append(f"{len(real)} stack(s)")
@@ -349,7 +351,8 @@ def reach(rel: Relation, scene: Scene) -> Verdict:
     Every target instance (a conveyor: its centreline at belt height; a surface: every
     item resting on it; an item: its centre; a machine: its nearest point) within the
     published reach of some arm of the model, measured from the shoulder, and every such
-    arm reaching at least one target instance.
+    arm reaching at least one target instance. Where several arms share a surface, each
+    item on it counts on its own: within the reach of one of them.
     """
     robots, tgts = resolve(scene, rel.subject), resolve(scene, rel.target)
     if not robots:
@@ -357,7 +360,13 @@ def reach(rel: Relation, scene: Scene) -> Verdict:
     if not tgts:
         return _missing(rel.target)
     table: list[dict[str, Any]] = []
-    reached_t = {t.name: False for t in tgts}
+    # A work surface shared by several arms: each item on it within the reach of one of
+    # them (an arm at each end of a bench, bins between them).
+    work: list[Thing] = []
+    for t in tgts:
+        items = [o for o in scene.objects if o is not t and rests_on(o, t)] if t.surfaces and not t.free else []
+        work += items if items and t.category != "conveyor" and len(robots) > 1 else [t]
+    reached_t = {t.name: False for t in work}
     probs = []
     for r in robots:
         limit = REACH_M.get(r.category)
@@ -365,7 +374,7 @@ def reach(rel: Relation, scene: Scene) -> Verdict:
             probs.append(f"{r.name}: no arm with a published reach")
             continue
         any_ok = False
-        for t in tgts:
+        for t in work:
             what, dist = _reach_points(t, scene, r.shoulder)
             ok = dist <= limit
             any_ok = any_ok or ok

@@ -146,7 +146,25 @@ pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
     ctx.relations(&o.group)
         .iter()
         .find_map(|r| match r {
-            RelationKind::On { target } => Some(target.clone()),
+            RelationKind::On { target } | RelationKind::Inside { target } | RelationKind::OnEdgeOf { target } => {
+                Some(target.clone())
+            }
+            // A hob in the worktop rests on it; a sink unit stands in the run.
+            RelationKind::SetInto { target } if is_small(ctx, idx) || ctx.bounds[idx].size()[2] <= 0.15 => {
+                Some(target.clone())
+            }
+            // Small things on each side of a table: on its top, at opposite edges.
+            RelationKind::OnEachSideOf { target }
+                if is_small(ctx, idx)
+                    && ctx
+                        .instances(target)
+                        .first()
+                        .is_some_and(|&i| !ctx.input.objects[i].asset.surfaces.is_empty()) =>
+            {
+                Some(target.clone())
+            }
+            // Items between two arms rest on the surface the arms share.
+            RelationKind::Between { first, second } if is_small(ctx, idx) => shared_work(ctx, first, second),
             _ => None,
         })
         .or_else(|| {
@@ -154,13 +172,31 @@ pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
         })
 }
 
+/// The object group two robot groups (or one, twice) both work at, when it has a surface
+/// ("three bins between the two arms": on the bench the arms share).
+pub(crate) fn shared_work(ctx: &Ctx<'_>, first: &str, second: &str) -> Option<String> {
+    let work = |g: &str| -> Vec<String> {
+        ctx.input.robots.iter().filter(|r| r.group == g).filter_map(|r| crate::reach::work_group(ctx, r)).collect()
+    };
+    let (a, b) = (work(first), work(second));
+    a.into_iter().find(|g| {
+        b.contains(g) && ctx.instances(g).first().is_some_and(|&i| !ctx.input.objects[i].asset.surfaces.is_empty())
+    })
+}
+
 /// The keep-clear space of an object the prompt put at a wall: none behind it (nor
 /// beside it, in a corner) — the rules check reports that shortfall as asked for.
 fn said_clearance(plan: &sw_plan::ScenePlan, group: &str, mut c: Clearance) -> Clearance {
     for r in plan.relations.iter().filter(|r| r.subject == group) {
         match r.kind {
-            RelationKind::AgainstWall { .. } | RelationKind::OnTwoWalls | RelationKind::Leaning { .. } => c.back = 0.0,
-            RelationKind::InCorner { .. } => {
+            RelationKind::AgainstWall { .. }
+            | RelationKind::OnTwoWalls
+            | RelationKind::OnOppositeWalls { .. }
+            | RelationKind::Leaning { .. }
+            | RelationKind::BackToBack => c.back = 0.0,
+            // A unit in a run stands against its neighbour.
+            RelationKind::SetInto { .. } => c.sides = 0.0,
+            RelationKind::InCorner { .. } | RelationKind::InCorners => {
                 c.back = 0.0;
                 c.sides = 0.0;
             }
@@ -188,14 +224,20 @@ pub(crate) fn companion_rests_on_host(ctx: &Ctx<'_>, idx: usize) -> bool {
 fn place_group(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) {
     // Facing rows and aisles are rows too; they decide how the rows face.
     let rank = |r: &RelationKind| match r {
-        RelationKind::FacingEachOther => 0,
-        RelationKind::InAisles => 1,
-        RelationKind::InRows { .. } => 2,
-        RelationKind::InRow => 3,
-        _ => 4,
+        RelationKind::BackToBack => 0,
+        RelationKind::FacingEachOther => 1,
+        RelationKind::InAisles => 2,
+        RelationKind::InRows { .. } => 3,
+        RelationKind::InRow => 4,
+        _ => 5,
     };
     let formation =
         ctx.relations(group).into_iter().filter(|r| r.is_group_formation()).min_by_key(|r| rank(r)).cloned();
+    // A counter with a sink unit or a range set into it: laid out as one run.
+    let units = crate::formation::run_units(ctx, group);
+    if formation.is_none() && !units.is_empty() && crate::formation::place_run(ctx, group, idxs, &units) {
+        return;
+    }
     if let Some(rel) = formation
         && idxs.len() > 1
     {

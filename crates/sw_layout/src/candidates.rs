@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 use std::rc::Rc;
 
 use sw_geom::{Aabb, Rng};
-use sw_plan::{Corner, RelationKind, Wall};
+use sw_plan::{Corner, EndOf, RelationKind, Wall};
 
 use crate::attempt::Ctx;
 use crate::frames::{QUARTER_TURNS, Spot, yaw_facing};
@@ -79,8 +79,95 @@ pub(crate) fn for_relation(ctx: &mut Ctx<'_>, b: &Aabb, group: &str, k: usize, r
         RelationKind::Between { first, second } => between(ctx, first, second, k),
         RelationKind::Under { target } => under(ctx, target, k, ctx.instances(group).len()),
         RelationKind::Around { target } => around_one(ctx, b, target, k),
+        RelationKind::InCorners => corner_slots(ctx, b, None),
+        RelationKind::Facing { target } => facing_toward(ctx, b, target, k),
+        RelationKind::OnEachSideOf { target } => {
+            let bodies: Vec<Body> = relate::bodies(ctx, target).into_iter().map(|(_, b)| b).collect();
+            let n = ctx.instances(group).len().max(1);
+            // Two to a target: instance k flanks target k / 2 (round robin beyond).
+            let per = n.div_ceil(bodies.len().max(1)).max(1);
+            apart(b, &rotated(bodies, k / per), &[0.06, 0.15, 0.3, 0.5, 0.8])
+        }
+        RelationKind::AtEndOf { target, end } => end_slots(ctx, b, target, *end),
+        RelationKind::SetInto { target } => run_slots(ctx, b, target),
         _ => Vec::new(),
     }
+}
+
+/// Facing a target from its front first, then its other sides, at increasing distances,
+/// turned to it.
+fn facing_toward(ctx: &Ctx<'_>, b: &Aabb, target: &str, k: usize) -> Vec<Spot> {
+    let bodies = rotated(relate::bodies(ctx, target).into_iter().map(|(_, b)| b).collect(), k);
+    let mut out = Vec::new();
+    for t in &bodies {
+        let f = axis(t.front);
+        let dirs = [f, [f[1], -f[0]], [-f[1], f[0]], [-f[0], -f[1]]];
+        let tc = t.center();
+        for d in [0.8, 1.2, 1.7, 2.3, 3.0, 0.45, 3.8] {
+            for dir in dirs {
+                let side = [-dir[1], dir[0]];
+                let face = tc[0] * dir[0] + tc[1] * dir[1] + t.half_along(dir) + d;
+                let mid = tc[0] * side[0] + tc[1] * side[1];
+                let yaw = yaw_facing(-dir[0], -dir[1]);
+                for shift in [0.0, 0.25, -0.25, 0.5, -0.5] {
+                    out.push(aligned(b, yaw, dir, face, side, mid + shift));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Beyond the ends of a target (its long axis; its local −X / +X for a start / end),
+/// on its axis line, turned like it and across it.
+fn end_slots(ctx: &Ctx<'_>, b: &Aabb, target: &str, end: Option<EndOf>) -> Vec<Spot> {
+    let all = relate::bodies(ctx, target);
+    let mut targets: Vec<Body> = relate::row_body(&all).into_iter().collect();
+    targets.extend(all.iter().map(|(_, b)| *b));
+    let mut out = Vec::new();
+    for t in &targets {
+        let x = axis(relate::x_axis(t));
+        let long = if t.half_along(x) >= t.half_along(t.front) { x } else { axis(t.front) };
+        let dirs: Vec<[f64; 2]> = match end {
+            Some(EndOf::Start) => vec![[-x[0], -x[1]]],
+            Some(EndOf::End) => vec![x],
+            _ => vec![long, [-long[0], -long[1]]],
+        };
+        let c = t.center();
+        let yaw = yaw_facing(t.front[0], t.front[1]);
+        for extra in [0.0, 0.1, 0.25, 0.45, 0.7] {
+            for dir in &dirs {
+                let side = [-dir[1], dir[0]];
+                let face = c[0] * dir[0] + c[1] * dir[1] + t.half_along(*dir) + FLOOR_GAP + 0.01 + extra;
+                let mid = c[0] * side[0] + c[1] * side[1];
+                for turn in [0.0, PI / 2.0, PI, -PI / 2.0] {
+                    out.push(aligned(b, yaw + turn, *dir, face, side, mid));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// In a target's run: at either end of it along its X, turned like it, fronts flush,
+/// abutting (the solver lets the two touch; see `floor::place`).
+fn run_slots(ctx: &Ctx<'_>, b: &Aabb, target: &str) -> Vec<Spot> {
+    let mut out = Vec::new();
+    for (_, t) in relate::bodies(ctx, target) {
+        let f = axis(t.front);
+        let x = [f[1], -f[0]];
+        let yaw = yaw_facing(f[0], f[1]);
+        let fp = footprint_at(b, yaw);
+        let half_f = 0.5 * ((fp.max[0] - fp.min[0]) * f[0].abs() + (fp.max[1] - fp.min[1]) * f[1].abs());
+        let c = t.center();
+        // The subject's front plane on the target's.
+        let front = c[0] * f[0] + c[1] * f[1] + t.half_along(f);
+        for dir in [x, [-x[0], -x[1]]] {
+            let face = c[0] * dir[0] + c[1] * dir[1] + t.half_along(dir) + 0.012;
+            out.push(aligned(b, yaw, dir, face, f, front - half_f));
+        }
+    }
+    out
 }
 
 /// Slots with the back to a wall, facing into the room, along `wall` (or every wall,
@@ -250,7 +337,22 @@ fn rotated(mut v: Vec<Body>, k: usize) -> Vec<Body> {
 /// Beside a target: left and right of it (same facing), then in front and behind,
 /// a little further out each round.
 pub(crate) fn beside(ctx: &Ctx<'_>, b: &Aabb, target: &str, k: usize) -> Vec<Spot> {
-    let bodies: Vec<Body> = relate::bodies(ctx, target).into_iter().map(|(_, b)| b).collect();
+    // Beside an arm on a stand: beside its stand (the arm's own base is inside it).
+    let stands: Vec<Body> = ctx
+        .input
+        .robots
+        .iter()
+        .filter(|r| r.group == target)
+        .filter_map(|r| match &r.mount {
+            crate::RobotMount::Carrier { object } => {
+                let i = ctx.input.objects.iter().position(|o| &o.name == object)?;
+                ctx.placed[i].as_ref().map(|p| Body::object(&ctx.local[i], &p.spot))
+            }
+            _ => None,
+        })
+        .collect();
+    let bodies: Vec<Body> =
+        if stands.is_empty() { relate::bodies(ctx, target).into_iter().map(|(_, b)| b).collect() } else { stands };
     beside_bodies(b, &rotated(bodies, k))
 }
 
@@ -426,7 +528,9 @@ fn around_one(ctx: &Ctx<'_>, b: &Aabb, target: &str, k: usize) -> Vec<Spot> {
 }
 
 /// Gaps to a target's face for pieces standing around it, m.
-pub(crate) const OUTSIDE: [f64; 4] = [0.07, 0.22, 0.42, 0.67];
+/// The far ones leave room for what else stands by the target ("chairs around the table
+/// with a trolley beside it").
+pub(crate) const OUTSIDE: [f64; 7] = [0.07, 0.22, 0.42, 0.67, 1.0, 1.4, 1.9];
 /// Gaps for seats around a table: tucked under its top first (negative), then out.
 pub(crate) const TUCKED: [f64; 8] = [-0.3, -0.2, -0.1, 0.0, 0.07, 0.2, 0.35, 0.6];
 

@@ -25,7 +25,10 @@ pub(crate) fn zone_exemptions(ctx: &Ctx<'_>, group: &str) -> Vec<String> {
             RelationKind::InFrontOf { target }
             | RelationKind::Behind { target }
             | RelationKind::Under { target }
-            | RelationKind::AtEndOfRow { target } => Some(target.clone()),
+            | RelationKind::AtEndOfRow { target }
+            | RelationKind::AtEndOf { target, .. }
+            | RelationKind::OnEachSideOf { target }
+            | RelationKind::SetInto { target } => Some(target.clone()),
             _ => None,
         })
         .collect();
@@ -73,6 +76,11 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     let exempt = zone_exemptions(ctx, &group);
     let ignore: Vec<&str> = exempt.iter().map(String::as_str).collect();
     let in_front = rels.iter().any(|r| matches!(r, RelationKind::InFrontOf { .. }));
+    // Room in front of and behind it for what is said to stand there ("a chair behind
+    // the desk"), for an object standing alone (a formation keeps its own).
+    let reserve = crate::formation::reserves(ctx, &group);
+    let ends = crate::formation::end_room(ctx, &group);
+    let wants_room = reserve != (0.0, 0.0) || ends.0 > 0.0;
     let mut egress_budget = if in_front { 0 } else { EGRESS_CHECKS };
     let b = ctx.bounds[idx];
 
@@ -123,7 +131,17 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     if rels.is_empty() && host.is_none() && ctx.input.objects[idx].has_tag("seating") {
         specific.extend(seats_at_tables(ctx, idx, k));
     }
-    let checks: Vec<Check<'_>> = rels.iter().map(|r| Check::new(ctx, r)).collect();
+    let checks: Vec<Check<'_>> = rels.iter().map(|r| Check::new(ctx, r).in_group(ctx, &group)).collect();
+    // A unit set into a run abuts the run (closer than floor objects otherwise stand).
+    let abut: Vec<String> = rels
+        .iter()
+        .filter_map(|r| match r {
+            RelationKind::SetInto { target } => Some(target.as_str()),
+            _ => None,
+        })
+        .flat_map(|t| ctx.instances(t).into_iter().map(|i| ctx.input.objects[i].name.clone()))
+        .collect();
+    let abut: Vec<&str> = abut.iter().map(String::as_str).collect();
     let host_ok = |ctx: &Ctx<'_>, body: &Body| match (&companion, host_body) {
         (Some(RelationKind::InFrontOf { .. }), Some(hb)) => relate::in_front(body, &hb, 1.0),
         (Some(_), Some(hb)) => relate::gap(&body.fp, &hb.fp) <= relate::NEXT_TO,
@@ -136,12 +154,15 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     let mut best_partial: Option<(Spot, usize)> = None;
     for spot in &specific {
         let body = Body::object(&ctx.local[idx], spot);
-        let unmet =
-            checks.iter().filter(|c| !c.holds(ctx, &body, group_size)).count() + usize::from(!host_ok(ctx, &body));
+        // Room kept for what is said to stand around it counts as one more thing to keep.
+        let kept = !wants_room || room_kept(ctx, idx, spot, reserve, ends);
+        let unmet = checks.iter().filter(|c| !c.holds(ctx, &body, group_size)).count()
+            + usize::from(!host_ok(ctx, &body))
+            + usize::from(!kept);
         if best_partial.as_ref().is_some_and(|(_, u)| *u <= unmet) && unmet > 0 {
             continue;
         }
-        if !fits_floor(ctx, idx, spot, &ignore) {
+        if !fits_floor_by(ctx, idx, spot, &ignore, &abut) {
             continue;
         }
         if egress_budget > 0 {
@@ -157,6 +178,18 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
         best_partial = Some((*spot, unmet));
     }
     drop(checks);
+    // Under something whose floor space is taken: on a level under its top.
+    if found.is_none() && crate::attempt::is_small(ctx, idx) {
+        let under = rels.iter().find_map(|r| match r {
+            RelationKind::Under { target } => Some(target.clone()),
+            _ => None,
+        });
+        if let Some(t) = under
+            && crate::surface::under_top(ctx, idx, &t)
+        {
+            return true;
+        }
+    }
     if found.is_none() {
         found = best_partial;
     }
@@ -168,26 +201,36 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
         let start = ctx.cursor.get(&group).copied().unwrap_or(0);
         let all = defaults.len() + grid.len();
         let at = |k: usize| if k < defaults.len() { defaults[k] } else { grid[k - defaults.len()] };
-        for j in start..all {
-            let spot = at(j);
-            if !fits_floor(ctx, idx, &spot, &ignore) {
-                continue;
-            }
-            if egress_budget > 0 {
-                egress_budget -= 1;
-                if !keeps_egress(ctx, idx, &spot) {
+        // With room kept in front and behind for what is said to stand there, then
+        // (when nothing has it) without.
+        let strict: &[bool] = if wants_room { &[true, false] } else { &[false] };
+        'passes: for &keep in strict {
+            for j in start..all {
+                let spot = at(j);
+                if !fits_floor(ctx, idx, &spot, &ignore) || (keep && !room_kept(ctx, idx, &spot, reserve, ends)) {
                     continue;
                 }
+                if egress_budget > 0 {
+                    egress_budget -= 1;
+                    if !keeps_egress(ctx, idx, &spot) {
+                        continue;
+                    }
+                }
+                if !keep {
+                    ctx.cursor.insert(group.clone(), j);
+                }
+                found = Some((spot, usize::MAX));
+                break 'passes;
             }
-            ctx.cursor.insert(group.clone(), j);
-            found = Some((spot, usize::MAX));
-            break;
         }
     }
     let Some((spot, unmet)) = found else {
         *ctx.group_failures.entry(group).or_insert(0) += 1;
         return fail(ctx, idx);
     };
+    if room_kept(ctx, idx, &spot, reserve, (0.0, false)) {
+        crate::formation::reserve_zones(ctx, idx, &spot, reserve.0, reserve.1);
+    }
     if unmet > 0 {
         let body = Body::object(&ctx.local[idx], &spot);
         if let Some(rel) = companion.clone()
@@ -199,6 +242,38 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     }
     ctx.commit(idx, spot, Support::Floor);
     true
+}
+
+/// Whether the strips kept in front of and behind an object at `spot` (`reserve`, m) are
+/// inside the room and free of floor objects.
+fn room_kept(ctx: &Ctx<'_>, idx: usize, spot: &Spot, reserve: (f64, f64), (ends, both): (f64, bool)) -> bool {
+    let b = ctx.bounds[idx];
+    let mut strips = Vec::new();
+    if ends > 0.0 {
+        // Room at one end, or at both when two things go there.
+        let left = Aabb { min: [b.min[0] - ends, b.min[1], 0.0], max: [b.min[0], b.max[1], 2.0] };
+        let right = Aabb { min: [b.max[0], b.min[1], 0.0], max: [b.max[0] + ends, b.max[1], 2.0] };
+        let free = |z: &Aabb| {
+            let w = z.transformed(&spot.pose());
+            ctx.space.inside(&Aabb { min: [w.min[0], w.min[1], 0.0], max: [w.max[0], w.max[1], 0.0] })
+                && ctx.space.zone_is_clear(&w, &[])
+        };
+        let (l, r) = (free(&left), free(&right));
+        if !(l && r || (!both && (l || r))) {
+            return false;
+        }
+    }
+    if reserve.0 > 0.0 {
+        strips.push(Aabb { min: [b.min[0], b.max[1], 0.0], max: [b.max[0], b.max[1] + reserve.0, 2.0] });
+    }
+    if reserve.1 > 0.0 {
+        strips.push(Aabb { min: [b.min[0], b.min[1] - reserve.1, 0.0], max: [b.max[0], b.min[1], 2.0] });
+    }
+    strips.iter().all(|z| {
+        let w = z.transformed(&spot.pose());
+        ctx.space.inside(&Aabb { min: [w.min[0], w.min[1], 0.0], max: [w.max[0], w.max[1], 0.0] })
+            && ctx.space.zone_is_clear(&w, &[])
+    })
 }
 
 /// Poses for an instance of `group` that leave room between it and the other target of
@@ -312,14 +387,23 @@ fn fail(ctx: &mut Ctx<'_>, idx: usize) -> bool {
 }
 
 pub(crate) fn fits_floor(ctx: &Ctx<'_>, idx: usize, spot: &Spot, ignore_zones: &[&str]) -> bool {
+    fits_floor_by(ctx, idx, spot, ignore_zones, &[])
+}
+
+/// As [`fits_floor`], standing closer than the floor gap to the objects `abut` (a sink
+/// unit in a counter run touches the counter), never into them.
+pub(crate) fn fits_floor_by(ctx: &Ctx<'_>, idx: usize, spot: &Spot, ignore_zones: &[&str], abut: &[&str]) -> bool {
     let boxes = spot.boxes(&ctx.local[idx]);
-    if !ctx.space.fits(&boxes, FLOOR_GAP, &[], true, ignore_zones) {
+    if !ctx.space.fits(&boxes, FLOOR_GAP, abut, true, ignore_zones) {
+        return false;
+    }
+    if !abut.is_empty() && !ctx.space.fits(&boxes, 0.004, &[], false, &[]) {
         return false;
     }
     // Its own keep-clear zones must be inside the room and free of floor objects.
     zones(ctx, idx, spot).iter().all(|(z, _)| {
         ctx.space.inside(&Aabb { min: [z.min[0], z.min[1], 0.0], max: [z.max[0], z.max[1], 0.0] })
-            && ctx.space.zone_is_clear(z, &[])
+            && ctx.space.zone_is_clear(z, abut)
     })
 }
 

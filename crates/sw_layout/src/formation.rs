@@ -42,6 +42,8 @@ struct Formation {
     end_reserve: f64,
     /// Each member's support: the floor, or the member below it in a stack.
     stacked: bool,
+    /// Members abut (units of one counter run): no floor gap or keep-clear space between them.
+    tight: bool,
 }
 
 impl Formation {
@@ -101,6 +103,7 @@ fn rows(ctx: &Ctx<'_>, rows: &[Vec<usize>], faces_up: &[bool], corridors: &[f64]
         back_reserve,
         end_reserve: 0.0,
         stacked: false,
+        tight: false,
     }
 }
 
@@ -119,7 +122,15 @@ fn stack(ctx: &Ctx<'_>, idxs: &[usize]) -> Formation {
         });
         z += top_of(ctx, idx);
     }
-    Formation { bounds: b, members, front_reserve: 0.0, back_reserve: 0.0, end_reserve: 0.0, stacked: true }
+    Formation {
+        bounds: b,
+        members,
+        front_reserve: 0.0,
+        back_reserve: 0.0,
+        end_reserve: 0.0,
+        stacked: true,
+        tight: false,
+    }
 }
 
 /// The height something stacked on an object rests at: its top surface, else its top —
@@ -267,13 +278,50 @@ fn formations_of(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind)
             }
             v
         }
+        RelationKind::BackToBack => {
+            // Pairs of rows back to back ("two rows of desks back to back"), pairs apart
+            // by a walkway; a pair of two is one row each.
+            let k = rows_said.unwrap_or(2).clamp(2, n.max(2)).min(n);
+            let parts = split(idxs, k);
+            let faces: Vec<bool> = (0..parts.len()).map(|r| r % 2 == 1).collect();
+            let corridors: Vec<f64> = (0..parts.len()).map(|r| if r % 2 == 0 { 0.06 } else { aisle }).collect();
+            vec![rows(ctx, &parts, &faces, &corridors, (reserve.0, 0.0))]
+        }
         RelationKind::Stacked { .. } => vec![stack(ctx, idxs)],
         _ => Vec::new(),
     }
 }
 
 /// Space kept in front of and behind each member for what other relations put there.
-fn reserves(ctx: &Ctx<'_>, group: &str) -> (f64, f64) {
+/// Room kept at the ends (along X) of a single object for what is said to stand in its
+/// run or at its end ("a sink set into the counter", "a bin at the end of the bench"):
+/// the widest one's width, and whether both ends are wanted (two or more of them).
+pub(crate) fn end_room(ctx: &Ctx<'_>, group: &str) -> (f64, bool) {
+    let widths: Vec<f64> = ctx
+        .input
+        .plan
+        .relations
+        .iter()
+        .filter(|r| {
+            matches!(&r.kind, RelationKind::SetInto { target } | RelationKind::AtEndOf { target, .. } | RelationKind::OnEachSideOf { target } if target == group)
+        })
+        .filter_map(|r| ctx.instances(&r.subject).first().map(|&i| (i, r)))
+        // Things resting on it need no floor.
+        .filter(|(i, _)| !crate::attempt::is_small(ctx, *i) && ctx.bounds[*i].size()[2] > 0.15)
+        .map(|(i, r)| {
+            let s = ctx.bounds[i].size();
+            let n = match r.kind {
+                RelationKind::AtEndOf { end: Some(sw_plan::EndOf::Both), .. } | RelationKind::OnEachSideOf { .. } => 2,
+                _ => 1,
+            };
+            (s[0].max(s[1]) + 0.1, n.min(ctx.instances(&r.subject).len()))
+        })
+        .flat_map(|(w, n)| std::iter::repeat_n(w, n))
+        .collect();
+    (widths.iter().copied().fold(0.0, f64::max), widths.len() >= 2)
+}
+
+pub(crate) fn reserves(ctx: &Ctx<'_>, group: &str) -> (f64, f64) {
     let mut front: f64 = 0.0;
     let mut back: f64 = 0.0;
     for r in &ctx.input.plan.relations {
@@ -306,6 +354,9 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize], rel: &Relati
     }
     if matches!(rel, RelationKind::OnTwoWalls) {
         return two_walls(ctx, group, idxs);
+    }
+    if let RelationKind::OnOppositeWalls { long } = rel {
+        return opposite_walls(ctx, group, idxs, *long);
     }
     if let RelationKind::Around { target } = rel {
         return around(ctx, group, idxs, target);
@@ -463,6 +514,12 @@ fn fits(ctx: &Ctx<'_>, f: &Formation, placed: &[(usize, Spot)]) -> bool {
         let fa = union(&ba);
         for (ib, sb) in placed.iter().skip(a + 1) {
             let bb = sb.boxes(&ctx.local[*ib]);
+            if f.tight {
+                if overlaps(&fa, &union(&bb), 0.004) {
+                    return false;
+                }
+                continue;
+            }
             if overlaps(&fa, &union(&bb), FLOOR_GAP - 1e-6) {
                 return false;
             }
@@ -562,6 +619,99 @@ fn two_walls(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
     place_on_walls(ctx, group, &halves, reserve, &order)
 }
 
+/// The unplaced floor units said to be set into `group`'s run (a sink unit, a range):
+/// they are laid out with it, abutting, as one run.
+pub(crate) fn run_units(ctx: &Ctx<'_>, group: &str) -> Vec<usize> {
+    let mut out = Vec::new();
+    for r in &ctx.input.plan.relations {
+        if !matches!(&r.kind, RelationKind::SetInto { target } if target == group) {
+            continue;
+        }
+        for i in ctx.instances(&r.subject) {
+            let unit = !crate::attempt::is_small(ctx, i) && ctx.bounds[i].size()[2] > 0.15;
+            if unit && ctx.placed[i].is_none() && !out.contains(&i) {
+                out.push(i);
+            }
+        }
+    }
+    out
+}
+
+/// A counter run: the units set into it (half at each end) and the group's instances in
+/// one row, fronts flush, abutting; placed where the group's own relations say.
+pub(crate) fn place_run(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize], units: &[usize]) -> bool {
+    let half = units.len().div_ceil(2);
+    let mut order: Vec<usize> = units[..half].to_vec();
+    order.extend_from_slice(idxs);
+    order.extend_from_slice(&units[half..]);
+    let mut members = Vec::new();
+    let fps: Vec<Aabb> = order.iter().map(|&i| fp_at(ctx, i, 0.0)).collect();
+    let depth = fps.iter().map(|f| f.max[1] - f.min[1]).fold(0.0, f64::max);
+    let gap = 0.012;
+    let len: f64 = fps.iter().map(|f| f.max[0] - f.min[0]).sum::<f64>() + gap * (order.len() - 1) as f64;
+    let mut x = -len / 2.0;
+    for (&idx, fp) in order.iter().zip(&fps) {
+        // Fronts on one line.
+        members.push(Member { idx, offset: [x - fp.min[0], depth / 2.0 - fp.max[1], 0.0], turn: 0.0 });
+        x += fp.max[0] - fp.min[0] + gap;
+    }
+    let f = Formation {
+        bounds: Aabb { min: [-len / 2.0, -depth / 2.0, 0.0], max: [len / 2.0, depth / 2.0, 1.0] },
+        members,
+        front_reserve: 0.0,
+        back_reserve: 0.0,
+        end_reserve: 0.0,
+        stacked: false,
+        tight: true,
+    };
+    let rels: Vec<RelationKind> = ctx.relations(group).into_iter().cloned().collect();
+    try_formation(ctx, group, &f, &rels, &RelationKind::InRow)
+}
+
+/// Half the group against one wall, half against the opposite one: the long walls first
+/// (only them with `long`), then the short ones.
+fn opposite_walls(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize], long: bool) -> bool {
+    let halves = if idxs.len() >= 2 { split(idxs, 2) } else { vec![idxs.to_vec()] };
+    let reserve = reserves(ctx, group);
+    let [hw, hd] = ctx.space.half;
+    let (long_pair, short_pair) = if hw >= hd {
+        ([Wall::North, Wall::South], [Wall::East, Wall::West])
+    } else {
+        ([Wall::East, Wall::West], [Wall::North, Wall::South])
+    };
+    let mut pairs = vec![long_pair];
+    if !long {
+        pairs.push(short_pair);
+    }
+    for pair in pairs {
+        for walls in [[pair[0], pair[1]], [pair[1], pair[0]]] {
+            // Each half on its own wall of the pair — as one row, else each member on its
+            // own along that wall (a doorway in the middle) — nothing committed unless
+            // both halves fit.
+            let saved = ctx.placed.clone();
+            let space = ctx.space.clone();
+            let (access, egress) = (ctx.access.clone(), ctx.egress.clone());
+            let all = halves.iter().zip(walls).all(|(half, w)| {
+                place_on_walls(ctx, group, std::slice::from_ref(half), reserve, &[w])
+                    || half
+                        .iter()
+                        .all(|&m| ctx.placed[m].is_some() || place_on_walls(ctx, group, &[vec![m]], reserve, &[w]))
+            });
+            if all {
+                return true;
+            }
+            ctx.placed = saved;
+            ctx.space = space;
+            ctx.access = access;
+            ctx.egress = egress;
+        }
+    }
+    if !ctx.input.plan.room.size_fixed {
+        ctx.floor_failures += 1;
+    }
+    false
+}
+
 /// Each half against its own wall, walls tried in `order`. Commits what it places.
 fn place_on_walls(ctx: &mut Ctx<'_>, group: &str, halves: &[Vec<usize>], reserve: (f64, f64), order: &[Wall]) -> bool {
     let _ = group;
@@ -616,10 +766,12 @@ fn stacks(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
     let ceiling = ctx.space.height;
     let mut rest: Vec<usize> = idxs.to_vec();
     let rels: Vec<RelationKind> = ctx.relations(group).into_iter().cloned().collect();
+    // "three stacks of four", "stacked two high": the column size said.
+    let said = column_size(&rels, idxs.len());
     let mut first = true;
     while !rest.is_empty() {
         // As many as fit under the ceiling, and no more than a column may hold.
-        let layers = ctx.input.max_layers.get(group).copied().unwrap_or(usize::MAX).max(1);
+        let layers = ctx.input.max_layers.get(group).copied().unwrap_or(usize::MAX).max(1).min(said);
         let mut z = 0.0;
         let mut n = 0;
         for &i in &rest {
@@ -632,7 +784,7 @@ fn stacks(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
         if n == 0 {
             return false;
         }
-        if n < rest.len() && first {
+        if n < rest.len() && first && n < said {
             let phrase = ctx.input.plan.phrase_of(group);
             let why = if n == layers {
                 "stand in one column (a taller one sinks more than 1 cm into the simulation's soft contacts)"
@@ -676,6 +828,19 @@ fn stacks(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
         first = false;
     }
     true
+}
+
+/// The members a column of a stacked group holds: `n` when said, else the group split
+/// over `stacks` columns, else all.
+pub(crate) fn column_size(rels: &[RelationKind], count: usize) -> usize {
+    rels.iter()
+        .find_map(|r| match r {
+            RelationKind::Stacked { n: Some(n), .. } if *n > 0 => Some(*n as usize),
+            RelationKind::Stacked { stacks: Some(k), .. } if *k > 0 => Some(count.div_ceil(*k as usize)),
+            _ => None,
+        })
+        .unwrap_or(usize::MAX)
+        .max(1)
 }
 
 /// Around a target: members spread over its sides in turn, facing it. Barriers

@@ -56,8 +56,21 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
             .map(|(ri, _)| format!("@robot{ri}"))
             .collect()
     };
+    // A target resting on something (placed with the items, later): its host.
+    let host_of = |t: &str| -> Option<String> {
+        ctx.relations(t).into_iter().find_map(|r| match r {
+            RelationKind::On { target } | RelationKind::Inside { target } if target != t => Some(target.clone()),
+            _ => None,
+        })
+    };
     let resolve = |t: &str| -> Vec<String> {
-        if group_keys.iter().any(|g| g == t) { vec![t.to_string()] } else { robot_keys(t) }
+        if group_keys.iter().any(|g| g == t) {
+            vec![t.to_string()]
+        } else if ctx.input.robots.iter().any(|r| r.group == t) {
+            robot_keys(t)
+        } else {
+            host_of(t).filter(|h| group_keys.contains(h)).into_iter().collect()
+        }
     };
     let deps: BTreeMap<String, Vec<String>> = units
         .iter()
@@ -118,6 +131,8 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
                                 | RelationKind::AtEnd { .. }
                                 | RelationKind::NearDoor
                                 | RelationKind::OnTwoWalls
+                                | RelationKind::OnOppositeWalls { .. }
+                                | RelationKind::InCorners
                                 | RelationKind::Leaning { .. }
                         )
                     });
@@ -125,9 +140,14 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
                 let formation = ctx.relations(g).iter().any(|r| r.is_group_formation());
                 // What goes under something claims the space before what goes around it.
                 let under = ctx.relations(g).iter().any(|r| matches!(r, RelationKind::Under { .. }));
+                // Corners are few: what is said to stand in them claims them first.
+                let cornered = ctx
+                    .relations(g)
+                    .iter()
+                    .any(|r| matches!(r, RelationKind::InCorner { .. } | RelationKind::InCorners));
                 let s = ctx.bounds[first].size();
                 let area = (s[0] * s[1] * 1e4) as i64;
-                (0, u8::from(!under), u8::from(!walled && !formation), -area)
+                (0, u8::from(!under && !cornered), u8::from(!walled && !formation), -area)
             }
         }
     };

@@ -8,6 +8,7 @@
 //! centreline at its top. The report measures from the arm's real shoulder.
 
 use sw_geom::SupportSurface;
+use sw_plan::RelationKind;
 
 use crate::attempt::Ctx;
 use crate::{RobotItem, RobotMount};
@@ -37,10 +38,40 @@ pub(crate) fn work_group(ctx: &Ctx<'_>, robot: &RobotItem) -> Option<String> {
         return Some(group.clone());
     }
     robot.near.clone().or_else(|| {
-        ctx.relations(&robot.group).iter().find_map(|r| match r {
-            sw_plan::RelationKind::Reach { target } => Some(target.clone()),
-            _ => None,
-        })
+        let rels = ctx.relations(&robot.group);
+        rels.iter()
+            .find_map(|r| match r {
+                RelationKind::Reach { target } => Some(target.clone()),
+                _ => None,
+            })
+            // An arm said to be at, beside, behind, facing or on either side of a thing
+            // works at it.
+            .or_else(|| {
+                rels.iter().find_map(|r| match r {
+                    RelationKind::NextTo { target }
+                    | RelationKind::Near { target }
+                    | RelationKind::InFrontOf { target }
+                    | RelationKind::Behind { target }
+                    | RelationKind::Facing { target }
+                    | RelationKind::OnEachSideOf { target }
+                    | RelationKind::AtEndOf { target, .. }
+                    | RelationKind::OnEdgeOf { target }
+                        if is_work(ctx, target) =>
+                    {
+                        Some(target.clone())
+                    }
+                    _ => None,
+                })
+            })
+    })
+}
+
+/// Whether an object group is something an arm works at: a work surface, a conveyor or
+/// a machine.
+pub(crate) fn is_work(ctx: &Ctx<'_>, group: &str) -> bool {
+    ctx.instances(group).first().is_some_and(|&i| {
+        let o = &ctx.input.objects[i];
+        o.category == "conveyor" || o.has_tag("machine") || (o.has_tag("surface") && !o.has_tag("seating"))
     })
 }
 
@@ -155,6 +186,16 @@ pub(crate) fn work_point(ctx: &Ctx<'_>, base: [f64; 3], idx: usize) -> Option<[f
 /// Returns the arms (base, reach) and whether all of them must reach.
 pub(crate) fn arms_for(ctx: &Ctx<'_>, idx: usize, item_group: &str) -> (Vec<([f64; 3], f64)>, bool) {
     let placed = |ri: usize| ctx.robots[ri].as_ref().map(|p| (p.pos, ctx.input.robots[ri].reach));
+    // Arms the item is said to be between ("bins between the two arms") reach it too.
+    let between: Vec<&str> = ctx
+        .relations(item_group)
+        .iter()
+        .filter_map(|r| match r {
+            RelationKind::Between { first, second } => Some([first.as_str(), second.as_str()]),
+            _ => None,
+        })
+        .flatten()
+        .collect();
     let said: Vec<([f64; 3], f64)> = ctx
         .input
         .robots
@@ -165,12 +206,24 @@ pub(crate) fn arms_for(ctx: &Ctx<'_>, idx: usize, item_group: &str) -> (Vec<([f6
                 && ctx
                     .relations(&r.group)
                     .iter()
-                    .any(|k| matches!(k, sw_plan::RelationKind::Reach { target } if target == item_group))
+                    .any(|k| matches!(k, RelationKind::Reach { target } if target == item_group))
         })
         .filter_map(|(ri, _)| placed(ri))
         .collect();
     if !said.is_empty() {
         return (said, true);
+    }
+    // Between two arms: within the reach of one of them (each arm has some).
+    let flanking: Vec<([f64; 3], f64)> = ctx
+        .input
+        .robots
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.is_arm && between.contains(&r.group.as_str()))
+        .filter_map(|(ri, _)| placed(ri))
+        .collect();
+    if !flanking.is_empty() {
+        return (flanking, false);
     }
     let host = &ctx.input.objects[idx];
     let at: Vec<([f64; 3], f64)> = ctx

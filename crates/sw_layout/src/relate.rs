@@ -8,7 +8,7 @@
 //! group, or the placed robots of a robot group.
 
 use sw_geom::Aabb;
-use sw_plan::{Corner, RelationKind, Wall};
+use sw_plan::{Corner, EndOf, RelationKind, Wall};
 
 use crate::attempt::Ctx;
 use crate::frames::Spot;
@@ -28,6 +28,20 @@ pub(crate) const FRONT_SIDE: f64 = 0.2;
 pub(crate) const CORNER_TOL: f64 = 0.25;
 /// Largest distance from the doorway's centre for "near the door", m (report: 2.5).
 pub(crate) const DOOR_DIST: f64 = 2.3;
+/// "at the end of": largest clear gap beyond the end, and offset from the axis line
+/// beyond the target's half depth, m (the report allows 1.5 and 0.5).
+pub(crate) const END_GAP: f64 = 1.0;
+pub(crate) const END_OFFSET: f64 = 0.3;
+/// "on each side of": largest gap to what it flanks, m (the report allows 1.5).
+pub(crate) const SIDE_GAP: f64 = 1.2;
+/// "facing": largest angle off the direction to the target, and the clear gap, m (the
+/// report allows 30° and 0.3–5 m).
+pub(crate) const FACING_DEG: f64 = 25.0;
+pub(crate) const FACING_GAP: (f64, f64) = (0.35, 4.5);
+/// A unit set into a run: the end gap it may leave and how flush its front is, m (the
+/// report allows −0.02…0.05 and 0.05).
+pub(crate) const RUN_GAP: f64 = 0.035;
+pub(crate) const RUN_FRONT: f64 = 0.03;
 
 /// A footprint on the floor and the direction its front faces.
 #[derive(Debug, Clone, Copy)]
@@ -81,6 +95,20 @@ pub(crate) fn bodies(ctx: &Ctx<'_>, target: &str) -> Vec<(Option<usize>, Body)> 
         ctx.placed_instances(target).into_iter().map(|(i, s)| (Some(i), Body::object(&ctx.local[i], &s))).collect();
     if !objects.is_empty() {
         return objects;
+    }
+    // Something that will rest on a host not yet holding it ("a sofa facing the TV" on
+    // its stand, placed later): its host stands in for it.
+    if !ctx.instances(target).is_empty() {
+        let host = ctx.relations(target).into_iter().find_map(|r| match r {
+            RelationKind::On { target: h } | RelationKind::Inside { target: h } if h != target => Some(h.clone()),
+            _ => None,
+        });
+        return host
+            .map(|h| ctx.placed_instances(&h))
+            .unwrap_or_default()
+            .into_iter()
+            .map(|(i, s)| (Some(i), Body::object(&ctx.local[i], &s)))
+            .collect();
     }
     ctx.input
         .robots
@@ -234,10 +262,83 @@ pub(crate) fn at_row_end(s: &Body, row: &Body) -> bool {
     along > row.half_along(u) && perp <= 0.5 && gap(&s.fp, &row.fp) <= NEXT_TO
 }
 
+/// The local +X axis of a body (objects: across the front; robots: across their work).
+pub(crate) fn x_axis(b: &Body) -> [f64; 2] {
+    [b.front[1], -b.front[0]]
+}
+
+/// The interval a footprint covers along a unit direction.
+pub(crate) fn span(fp: &Aabb, d: [f64; 2]) -> (f64, f64) {
+    let c = [0.5 * (fp.min[0] + fp.max[0]), 0.5 * (fp.min[1] + fp.max[1])];
+    let m = c[0] * d[0] + c[1] * d[1];
+    let h = 0.5 * ((fp.max[0] - fp.min[0]) * d[0].abs() + (fp.max[1] - fp.min[1]) * d[1].abs());
+    (m - h, m + h)
+}
+
+/// The side of `t` a body stands on, in `t`'s frame: 0 front, 1 right, 2 back, 3 left
+/// (by the larger of its centre's offsets, each scaled by `t`'s half extent).
+pub(crate) fn side_of(t: &Body, s: &Body) -> usize {
+    let f = t.front;
+    let r = [f[1], -f[0]];
+    let (c, tc) = (s.center(), t.center());
+    let d = [c[0] - tc[0], c[1] - tc[1]];
+    let a = (d[0] * f[0] + d[1] * f[1]) / t.half_along(f).max(1e-6);
+    let b = (d[0] * r[0] + d[1] * r[1]) / t.half_along(r).max(1e-6);
+    if a.abs() >= b.abs() {
+        if a >= 0.0 { 0 } else { 2 }
+    } else if b >= 0.0 {
+        1
+    } else {
+        3
+    }
+}
+
+/// The end of `t` a body stands beyond ([`EndOf::Start`] is `t`'s −X end along `axis`,
+/// else along its long side), when it is close enough and on its axis line.
+pub(crate) fn end_of(t: &Body, s: &Body, axis: Option<[f64; 2]>) -> Option<EndOf> {
+    let d = axis.unwrap_or_else(|| {
+        let sz = t.fp.size();
+        if sz[0] >= sz[1] { [1.0, 0.0] } else { [0.0, 1.0] }
+    });
+    let n = [-d[1], d[0]];
+    let (ls, hs) = span(&s.fp, d);
+    let (lt, ht) = span(&t.fp, d);
+    let (gap_end, gap_start) = (ls - ht, lt - hs);
+    let gap = gap_end.max(gap_start);
+    let (c, tc) = (s.center(), t.center());
+    let off = ((c[0] - tc[0]) * n[0] + (c[1] - tc[1]) * n[1]).abs();
+    let ok = (-0.02..=END_GAP).contains(&gap) && off <= t.half_along(n) + END_OFFSET;
+    ok.then_some(if gap_end >= gap_start { EndOf::End } else { EndOf::Start })
+}
+
+/// A unit standing in `t`'s run: turned alike, abutting one of its ends (along its X),
+/// fronts flush.
+pub(crate) fn in_run(t: &Body, s: &Body) -> bool {
+    let f = t.front;
+    let alike = s.front[0] * f[0] + s.front[1] * f[1] > 0.99;
+    let ax = x_axis(t);
+    let (ls, hs) = span(&s.fp, ax);
+    let (lt, ht) = span(&t.fp, ax);
+    let gap = (ls - ht).max(lt - hs);
+    let front = (span(&s.fp, f).1 - span(&t.fp, f).1).abs();
+    alike && (-0.005..=RUN_GAP).contains(&gap) && front <= RUN_FRONT
+}
+
+/// The corner a footprint stands in, if any (within `tol` of both walls).
+pub(crate) fn corner_of(ctx: &Ctx<'_>, fp: &Aabb, tol: f64) -> Option<Corner> {
+    Corner::ALL.into_iter().find(|c| {
+        let (a, b) = c.walls();
+        wall_gap(ctx, fp, a) <= tol && wall_gap(ctx, fp, b) <= tol
+    })
+}
+
 /// One per-instance relation, ready to test many candidate bodies: the target bodies
 /// are gathered once.
 pub(crate) struct Check<'r> {
     pub rel: &'r RelationKind,
+    /// The placed members of the subject's own group, for relations that spread a group
+    /// (distinct corners, both sides, both ends).
+    siblings: Vec<Body>,
     /// Target bodies (the row as one body first, when the target is a row).
     targets: Vec<Body>,
     /// For "between": instances of the two groups, with their object index.
@@ -249,7 +350,14 @@ pub(crate) struct Check<'r> {
 
 impl<'r> Check<'r> {
     pub fn new(ctx: &Ctx<'_>, rel: &'r RelationKind) -> Self {
-        let mut c = Check { rel, targets: Vec::new(), firsts: Vec::new(), seconds: Vec::new(), row: None };
+        let mut c = Check {
+            rel,
+            siblings: Vec::new(),
+            targets: Vec::new(),
+            firsts: Vec::new(),
+            seconds: Vec::new(),
+            row: None,
+        };
         match rel {
             RelationKind::Between { first, second } => {
                 c.firsts = bodies(ctx, first);
@@ -260,8 +368,16 @@ impl<'r> Check<'r> {
                 c.row = row_body(&all);
                 c.targets = all.into_iter().map(|(_, b)| b).collect();
             }
-            RelationKind::Under { target } => {
+            RelationKind::Under { target }
+            | RelationKind::OnEachSideOf { target }
+            | RelationKind::Facing { target }
+            | RelationKind::SetInto { target } => {
                 c.targets = bodies(ctx, target).into_iter().map(|(_, b)| b).collect();
+            }
+            RelationKind::AtEndOf { target, .. } => {
+                let all = bodies(ctx, target);
+                c.row = row_body(&all);
+                c.targets = all.into_iter().map(|(_, b)| b).collect();
             }
             r => {
                 if let Some(t) = r.targets().first() {
@@ -270,6 +386,13 @@ impl<'r> Check<'r> {
             }
         }
         c
+    }
+
+    /// The same check aware of the subject group's members placed so far (they spread
+    /// over distinct corners, two sides, both ends).
+    pub fn in_group(mut self, ctx: &Ctx<'_>, group: &str) -> Self {
+        self.siblings = bodies(ctx, group).into_iter().map(|(_, b)| b).collect();
+        self
     }
 
     /// Whether a body satisfies the relation. Group relations (rows, stacks, loads) are
@@ -317,9 +440,10 @@ impl<'r> Check<'r> {
             RelationKind::Near { .. } | RelationKind::Around { .. } => near_target(NEAR),
             RelationKind::InFrontOf { .. } => self.targets.iter().any(|t| in_front(body, t, 1.0)),
             RelationKind::Behind { .. } => self.targets.iter().any(|t| in_front(body, t, -1.0)),
+            // A single target: beyond an end of its long axis, on its line.
             RelationKind::AtEndOfRow { .. } => match &self.row {
                 Some(row) => at_row_end(body, row),
-                None => near_target(NEXT_TO),
+                None => self.targets.iter().any(|t| end_of(t, body, None).is_some()),
             },
             RelationKind::Between { .. } => {
                 let c = body.center();
@@ -337,6 +461,66 @@ impl<'r> Check<'r> {
                 let c = body.center();
                 inside(c, &t.fp) && fp.max[2] <= t.fp.max[2]
             }),
+            RelationKind::InCorners => {
+                let taken: Vec<Corner> =
+                    self.siblings.iter().filter_map(|b| corner_of(ctx, &b.fp, 2.0 * CORNER_TOL)).collect();
+                corner_of(ctx, fp, CORNER_TOL).is_some_and(|c| !taken.contains(&c))
+            }
+            RelationKind::Facing { .. } => self.targets.iter().any(|t| {
+                let (c, tc) = (body.center(), t.center());
+                let to = [tc[0] - c[0], tc[1] - c[1]];
+                let len = to[0].hypot(to[1]);
+                let cos = (body.front[0] * to[0] + body.front[1] * to[1]) / len.max(1e-9);
+                let g = gap(fp, &t.fp);
+                len > 1e-6 && cos >= FACING_DEG.to_radians().cos() && (FACING_GAP.0..=FACING_GAP.1).contains(&g)
+            }),
+            RelationKind::OnEachSideOf { .. } => {
+                let Some(t) = self.targets.iter().min_by(|a, b| gap(fp, &a.fp).total_cmp(&gap(fp, &b.fp))) else {
+                    return false;
+                };
+                if gap(fp, &t.fp) > SIDE_GAP {
+                    return false;
+                }
+                let side = side_of(t, body);
+                // The sides the group already uses at this target.
+                let nearest = |b: &Body| {
+                    self.targets
+                        .iter()
+                        .min_by(|x, y| gap(&b.fp, &x.fp).total_cmp(&gap(&b.fp, &y.fp)))
+                        .is_some_and(|x| x.fp.min == t.fp.min && x.fp.max == t.fp.max)
+                };
+                let used: Vec<usize> = self.siblings.iter().filter(|b| nearest(b)).map(|b| side_of(t, b)).collect();
+                match used.first() {
+                    None => true,
+                    Some(&s0) => {
+                        let pair = [s0, (s0 + 2) % 4];
+                        let here = used.iter().filter(|s| **s == side).count();
+                        let there = used.iter().filter(|s| **s != side).count();
+                        pair.contains(&side) && here <= there
+                    }
+                }
+            }
+            RelationKind::AtEndOf { end, .. } => {
+                let local = matches!(end, Some(EndOf::Start | EndOf::End));
+                let mut all: Vec<&Body> = self.row.iter().collect();
+                all.extend(self.targets.iter());
+                all.iter().any(|t| {
+                    let axis = local.then(|| x_axis(t));
+                    match end_of(t, body, axis) {
+                        None => false,
+                        Some(e) if local => Some(e) == *end,
+                        Some(e) if *end == Some(EndOf::Both) => {
+                            // The other end first when a member already stands at one.
+                            let at: Vec<EndOf> = self.siblings.iter().filter_map(|b| end_of(t, b, None)).collect();
+                            at.is_empty()
+                                || !at.contains(&e)
+                                || (at.contains(&EndOf::Start) && at.contains(&EndOf::End))
+                        }
+                        Some(_) => true,
+                    }
+                })
+            }
+            RelationKind::SetInto { .. } => self.targets.iter().any(|t| in_run(t, body)),
             RelationKind::On { .. }
             | RelationKind::OnTwoWalls
             | RelationKind::InRow
@@ -349,13 +533,8 @@ impl<'r> Check<'r> {
             | RelationKind::EachWith { .. }
             | RelationKind::Reach { .. }
             | RelationKind::Inside { .. }
-            | RelationKind::SetInto { .. }
-            | RelationKind::AtEndOf { .. }
             | RelationKind::OnEdgeOf { .. }
-            | RelationKind::OnEachSideOf { .. }
-            | RelationKind::Facing { .. }
             | RelationKind::OnOppositeWalls { .. }
-            | RelationKind::InCorners
             | RelationKind::BackToBack => true,
         }
     }
@@ -385,6 +564,11 @@ pub(crate) fn is_positional(rel: &RelationKind) -> bool {
             | RelationKind::AtEndOfRow { .. }
             | RelationKind::Between { .. }
             | RelationKind::Under { .. }
+            | RelationKind::InCorners
+            | RelationKind::Facing { .. }
+            | RelationKind::OnEachSideOf { .. }
+            | RelationKind::AtEndOf { .. }
+            | RelationKind::SetInto { .. }
     )
 }
 

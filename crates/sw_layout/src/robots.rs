@@ -109,13 +109,27 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
         if !strict && rels.is_empty() {
             break;
         }
-        let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
+        let checks: Vec<crate::relate::Check<'_>> =
+            rels.iter().map(|r| crate::relate::Check::new(ctx, r).in_group(ctx, &robot.group)).collect();
+        // "an arm on the edge of the table": its base near an edge of the top.
+        let edge = ctx.relations(&robot.group).iter().any(|r| matches!(r, sw_plan::RelationKind::OnEdgeOf { .. }));
+        // Things said to be between arms on one surface need the length of it: the arms
+        // stand at its ends.
+        // So do arms said to stand on either side of it: its ends leave their home poses
+        // apart.
+        let ends = ctx.input.plan.relations.iter().any(|r| {
+            matches!(&r.kind, sw_plan::RelationKind::Between { first, second } if *first == robot.group || *second == robot.group)
+                || (r.subject == robot.group && matches!(&r.kind, sw_plan::RelationKind::OnEachSideOf { target } if target == group))
+        });
         let mut chosen: Option<(usize, Spot, Spot, SupportSurface, Vec<Aabb>)> = None;
         'hosts: for (hi, hspot) in &hosts {
             let surfaces: Vec<SupportSurface> =
                 ctx.input.objects[*hi].asset.surfaces.iter().filter(|s| s.clearance.is_none()).cloned().collect();
             for surf in surfaces {
-                for (spot, boxes) in surface_spots(ctx, robot, hspot, &surf) {
+                for (spot, boxes) in surface_spots(ctx, robot, hspot, &surf, ends) {
+                    if edge && !near_edge(&spot, hspot, &surf) {
+                        continue;
+                    }
                     let body = crate::relate::robot_body(robot, &spot);
                     if strict && !checks.iter().all(|c| c.holds(ctx, &body, 1)) {
                         continue;
@@ -140,9 +154,23 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
     false
 }
 
+/// Whether a base at `spot` stands within 0.15 m of an edge of a host's surface.
+fn near_edge(spot: &Spot, host: &Spot, surf: &SupportSurface) -> bool {
+    let (s, c) = host.yaw.sin_cos();
+    let (dx, dy) = (spot.x - host.x, spot.y - host.y);
+    let (lx, ly) = (c * dx + s * dy, -s * dx + c * dy);
+    (lx - surf.min[0]).min(surf.max[0] - lx).min(ly - surf.min[1]).min(surf.max[1] - ly) <= 0.15
+}
+
 /// Free spawns of an arm on a surface: the back edge centre first, then along the edges,
 /// then inwards, working towards the surface's centre.
-fn surface_spots(ctx: &Ctx<'_>, robot: &RobotItem, hspot: &Spot, surf: &SupportSurface) -> Vec<(Spot, Vec<Aabb>)> {
+fn surface_spots(
+    ctx: &Ctx<'_>,
+    robot: &RobotItem,
+    hspot: &Spot,
+    surf: &SupportSurface,
+    ends: bool,
+) -> Vec<(Spot, Vec<Aabb>)> {
     let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
     let m = robot.base_radius + 0.01;
     let mut local: Vec<(f64, f64)> = Vec::new();
@@ -156,17 +184,46 @@ fn surface_spots(ctx: &Ctx<'_>, robot: &RobotItem, hspot: &Spot, surf: &SupportS
         x += 0.05;
     }
     let back = (cx, surf.min[1] + m);
-    local.sort_by(|a, b| {
-        let da = (a.0 - back.0).abs() + 2.0 * (a.1 - back.1).abs();
-        let db = (b.0 - back.0).abs() + 2.0 * (b.1 - back.1).abs();
-        da.total_cmp(&db)
-    });
+    // Towards an end of the surface's length, centred across it, no further from the
+    // middle than keeps it within reach of what lies half way to an arm at the other end.
+    let long_x = surf.max[0] - surf.min[0] >= surf.max[1] - surf.min[1];
+    let half_len = if long_x { 0.5 * (surf.max[0] - surf.min[0]) } else { 0.5 * (surf.max[1] - surf.min[1]) } - m;
+    let apart = half_len.min(0.9 * robot.reach);
+    let key = |p: &(f64, f64)| {
+        if ends {
+            let (along, across) = if long_x { (p.0 - cx, p.1 - cy) } else { (p.1 - cy, p.0 - cx) };
+            2.0 * (along.abs() - apart).abs() + across.abs()
+        } else {
+            (p.0 - back.0).abs() + 2.0 * (p.1 - back.1).abs()
+        }
+    };
+    local.sort_by(|a, b| key(a).total_cmp(&key(b)));
     let mut out = Vec::new();
     for (lx, ly) in local {
         let p = hspot.apply([lx, ly, surf.z]);
         let c = hspot.apply([cx, cy, surf.z]);
         let facing = robot_yaw_facing(c[0] - p[0], c[1] - p[1]);
-        let yaws = if (c[0] - p[0]).hypot(c[1] - p[1]) < 0.05 {
+        // Arms at the ends of a surface with things between them work across it (their
+        // home pose then leaves the length between them free), towards its front.
+        // Of the two ways across, the one whose home volume reaches least towards the
+        // middle first.
+        let across = [-hspot.yaw.sin(), hspot.yaw.cos()];
+        let yaws = if ends {
+            let inward = |yaw: f64| {
+                let k = crate::space::union(&Spot::new(p[0], p[1], p[2], yaw).boxes(&robot.keepout));
+                let d = [c[0] - p[0], c[1] - p[1]];
+                let len = d[0].hypot(d[1]).max(1e-9);
+                let u = [d[0] / len, d[1] / len];
+                let far = |x: f64, y: f64| (x - p[0]) * u[0] + (y - p[1]) * u[1];
+                far(k.min[0], k.min[1])
+                    .max(far(k.max[0], k.max[1]))
+                    .max(far(k.min[0], k.max[1]))
+                    .max(far(k.max[0], k.min[1]))
+            };
+            let mut v = vec![robot_yaw_facing(across[0], across[1]), robot_yaw_facing(-across[0], -across[1]), facing];
+            v.sort_by(|a, b| inward(*a).total_cmp(&inward(*b)));
+            v
+        } else if (c[0] - p[0]).hypot(c[1] - p[1]) < 0.05 {
             vec![hspot.yaw + PI / 2.0, hspot.yaw, hspot.yaw + PI, hspot.yaw - PI / 2.0]
         } else {
             vec![facing]
@@ -242,7 +299,8 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         .flat_map(|g| ctx.instances(g).into_iter().map(|i| ctx.input.objects[i].name.clone()).collect::<Vec<_>>())
         .collect();
     let ignore: Vec<&str> = exempt.iter().map(String::as_str).collect();
-    let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
+    let checks: Vec<crate::relate::Check<'_>> =
+        rels.iter().map(|r| crate::relate::Check::new(ctx, r).in_group(ctx, &robot.group)).collect();
     let mut fallback: Option<CarrierSpot> = None;
     let mut fallback_score = 0u8;
     for (spot, preferred) in candidates {
@@ -359,8 +417,23 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
     let keep = crate::space::union(&robot.keepout);
     let mut pts: Vec<(f64, f64, Option<f64>)> = Vec::new();
     for r in &rels {
+        // Where it works at or faces something, it turns to face it (below).
+        let faces = matches!(
+            r,
+            sw_plan::RelationKind::Facing { .. }
+                | sw_plan::RelationKind::OnEachSideOf { .. }
+                | sw_plan::RelationKind::AtEndOf { .. }
+        );
+        if let (true, Some(t)) = (faces, r.targets().first()) {
+            for (_, b) in crate::relate::bodies(ctx, t) {
+                let c = b.center();
+                if !targets.iter().any(|p| (p.0 - c[0]).abs() < 1e-9 && (p.1 - c[1]).abs() < 1e-9) {
+                    targets.push((c[0], c[1]));
+                }
+            }
+        }
         for s in crate::candidates::for_relation(ctx, &keep, &robot.group, ri, r) {
-            pts.push((s.x, s.y, Some(s.yaw)));
+            pts.push((s.x, s.y, (!faces).then_some(s.yaw)));
         }
     }
     let step = 0.1;
@@ -386,10 +459,16 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
     pts.extend(grid);
     let names: Vec<String> = ctx.input.objects.iter().map(|o| o.name.clone()).collect();
     let object_names: Vec<&str> = names.iter().map(String::as_str).collect();
-    let checks: Vec<crate::relate::Check<'_>> = rels.iter().map(|r| crate::relate::Check::new(ctx, r)).collect();
+    let checks: Vec<crate::relate::Check<'_>> =
+        rels.iter().map(|r| crate::relate::Check::new(ctx, r).in_group(ctx, &robot.group)).collect();
     let mut fallback: Option<(Spot, Vec<Aabb>)> = None;
     for (x, y, given) in pts {
-        let (tx, ty) = targets.first().copied().unwrap_or((0.0, 0.0));
+        // Facing the nearest thing it works at.
+        let (tx, ty) = targets
+            .iter()
+            .copied()
+            .min_by(|a, b| (a.0 - x).hypot(a.1 - y).total_cmp(&(b.0 - x).hypot(b.1 - y)))
+            .unwrap_or((0.0, 0.0));
         // A relation's pose keeps its yaw (along an aisle); else facing its work.
         let yaw = match given {
             Some(y) => y,

@@ -3,6 +3,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
+use sw_geom::Aabb;
 use sw_plan::{RelationKind, Support};
 
 use crate::attempt::{Ctx, surface_target};
@@ -13,11 +14,64 @@ use crate::space::SURFACE_GAP;
 
 /// Resolution of positions on a surface, m.
 const STEP: f64 = 0.02;
+/// "on the edge of": the footprint centre at most this far from an edge, m (the report
+/// allows 0.2).
+const EDGE: f64 = 0.15;
+/// A support this far or more below its host's top is inside it, m (the report: 0.02).
+const INTERIOR: f64 = 0.03;
+
+/// Which of a host's surfaces an item may use, and where on them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Want {
+    /// Any surface (the top of work furniture first).
+    Any,
+    /// An interior support: a level under another, a drawer, a bin's floor ("inside").
+    Interior,
+    /// Near an edge of a surface ("on the edge of").
+    Edge,
+    /// The top surface only ("a hob set into the worktop").
+    Top,
+    /// Towards one of its long edges, alternately ("a plate on each side of the table").
+    Side,
+}
+
+/// What an item's relation to `host` asks of the surface it rests on.
+fn want(ctx: &Ctx<'_>, idx: usize, host: &str) -> Want {
+    let group = &ctx.input.objects[idx].group;
+    ctx.relations(group)
+        .iter()
+        .find_map(|r| match r {
+            RelationKind::Inside { target } if target == host => Some(Want::Interior),
+            RelationKind::OnEdgeOf { target } if target == host => Some(Want::Edge),
+            RelationKind::SetInto { target } if target == host => Some(Want::Top),
+            RelationKind::OnEachSideOf { target } if target == host => Some(Want::Side),
+            // Between the arms that share a work surface: on its top, where they work.
+            RelationKind::Between { first, .. } if ctx.input.robots.iter().any(|r| &r.group == first) => {
+                Some(Want::Top)
+            }
+            _ => None,
+        })
+        .unwrap_or(Want::Any)
+}
 
 /// Items with an `on` relation (or resting on their host, "desks each with a monitor"):
 /// on their target, within reach of the arm that works there, else on the floor next to
 /// it (reported).
 pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
+    // Hosts that are loose small things themselves ("cans inside the bin") go first.
+    let mut hosts: Vec<usize> = Vec::new();
+    for &idx in items {
+        let Some(t) = surface_target(ctx, idx) else { continue };
+        for i in ctx.instances(&t) {
+            let loose = ctx.placed[i].is_none() && crate::attempt::is_small(ctx, i) && surface_target(ctx, i).is_none();
+            if loose && !items.contains(&i) && !hosts.contains(&i) && ctx.input.objects[i].carries_robot.is_none() {
+                hosts.push(i);
+            }
+        }
+    }
+    if !hosts.is_empty() {
+        place_loose(ctx, &hosts);
+    }
     for idx in in_stack_order(ctx, items) {
         let Some(target) = surface_target(ctx, idx) else {
             continue;
@@ -29,7 +83,15 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
         let k = order.iter().position(|&i| i == idx).unwrap_or(0);
         // Columns no taller than the group may have (learnt from a settle): every
         // `layers`-th member starts a new one on the surface.
-        let layers = ctx.input.max_layers.get(&group).copied().unwrap_or(usize::MAX).max(1);
+        let rels: Vec<RelationKind> = ctx.relations(&group).into_iter().cloned().collect();
+        let layers = ctx
+            .input
+            .max_layers
+            .get(&group)
+            .copied()
+            .unwrap_or(usize::MAX)
+            .max(1)
+            .min(crate::formation::column_size(&rels, order.len()));
         if stacked && k % layers != 0 && on_the_one_below(ctx, idx, &group, k) {
             continue;
         }
@@ -37,12 +99,23 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
             continue;
         }
         let name = ctx.input.objects[idx].name.clone();
+        // Said to be between two arms with no room left on the line between them: within
+        // the reach of one of them still (the report names the relation not kept).
+        let want = want(ctx, idx, &target);
+        if !robot_pairs(ctx, &ctx.input.objects[idx].group).is_empty()
+            && place_on_group_as(ctx, idx, &target, k, true, want, false)
+        {
+            continue;
+        }
         if place_on_group(ctx, idx, &target, k, false) {
             let phrase = ctx.input.plan.phrase_of(&target);
             ctx.warn(
                 "relation_unmet",
                 format!("{name}: no room on \"{phrase}\" within the reach of the arm that works there; placed out of its reach"),
             );
+            continue;
+        }
+        if stack_on_own(ctx, idx, &group) {
             continue;
         }
         let had_target = !ctx.placed_instances(&target).is_empty();
@@ -96,6 +169,37 @@ fn in_stack_order(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
 /// over it.
 fn on_the_one_below(ctx: &mut Ctx<'_>, idx: usize, group: &str, k: usize) -> bool {
     let Some(&below) = stack_order(ctx, group).get(k - 1) else { return false };
+    on_top_of(ctx, idx, below)
+}
+
+/// A stackable item with no room left on its target: on top of one of its own kind that
+/// rests there ("three crates on a pallet" that holds two side by side: the third on one
+/// of them). The lowest free one first.
+fn stack_on_own(ctx: &mut Ctx<'_>, idx: usize, group: &str) -> bool {
+    if !ctx.input.objects[idx].has_tag("stackable") {
+        return false;
+    }
+    let members = ctx.instances(group);
+    let mut below: Vec<(f64, usize)> = members
+        .iter()
+        .filter(|&&i| i != idx)
+        .filter_map(|&i| {
+            let p = ctx.placed[i].as_ref()?;
+            let resting = matches!(&p.support, Support::Object { .. });
+            // Nothing of its own kind on it yet.
+            let free =
+                !ctx.placed.iter().flatten().any(
+                    |q| matches!(&q.support, Support::Object { object, .. } if *object == ctx.input.objects[i].name),
+                );
+            (resting && free).then_some((p.spot.z, i))
+        })
+        .collect();
+    below.sort_by(|a, b| a.0.total_cmp(&b.0));
+    below.into_iter().any(|(_, b)| on_top_of(ctx, idx, b))
+}
+
+/// Item `idx` on top of object `below`, centred over it.
+fn on_top_of(ctx: &mut Ctx<'_>, idx: usize, below: usize) -> bool {
     let Some(bs) = ctx.placed[below].as_ref().map(|p| p.spot) else { return false };
     // On the highest point of the one below (a plate's rim, a box's lid).
     let top = ctx.bounds[below].max[2];
@@ -163,6 +267,25 @@ pub(crate) fn place_loose(ctx: &mut Ctx<'_>, items: &[usize]) {
 /// Tries every placed instance of `target` (starting with instance `k`) and every
 /// surface of it, least used first.
 fn place_on_group(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize, in_reach: bool) -> bool {
+    let want = want(ctx, idx, target);
+    place_on_group_as(ctx, idx, target, k, in_reach, want, true)
+}
+
+/// A small thing said to be under something whose floor space is taken (a crate under
+/// a workbench with a bottom shelf): on a level under its top.
+pub(crate) fn under_top(ctx: &mut Ctx<'_>, idx: usize, target: &str) -> bool {
+    place_on_group_as(ctx, idx, target, 0, false, Want::Interior, true)
+}
+
+fn place_on_group_as(
+    ctx: &mut Ctx<'_>,
+    idx: usize,
+    target: &str,
+    k: usize,
+    in_reach: bool,
+    want: Want,
+    between: bool,
+) -> bool {
     let mut hosts = ctx.placed_instances(target);
     if hosts.is_empty() {
         return false;
@@ -186,8 +309,25 @@ fn place_on_group(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize, in_reac
         });
         let item_group = ctx.input.objects[idx].group.clone();
         let (arms, all) = if in_reach { reach::arms_for(ctx, hi, &item_group) } else { (Vec::new(), false) };
-        for si in order {
-            if try_surface(ctx, idx, hi, si, &arms, all) {
+        let top = ctx.bounds[hi].max[2];
+        let highest = surfaces
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| s.clearance.is_none())
+            .max_by(|a, b| a.1.z.total_cmp(&b.1.z))
+            .map(|(i, _)| i);
+        let usable: Vec<usize> = order
+            .into_iter()
+            .filter(|&i| match want {
+                Want::Interior => surfaces[i].clearance.is_some() || top - surfaces[i].z >= INTERIOR,
+                Want::Top | Want::Side => Some(i) == highest,
+                Want::Any | Want::Edge => true,
+            })
+            .collect();
+        let pairs = if between { robot_pairs(ctx, &item_group) } else { Vec::new() };
+        for si in usable {
+            let side = (want == Want::Side).then_some(k % 2 == 0);
+            if try_surface(ctx, idx, hi, si, &arms, all, (want == Want::Edge, side), &pairs) {
                 return true;
             }
         }
@@ -201,7 +341,43 @@ fn fill(rects: &[[f64; 4]]) -> f64 {
 
 /// Puts the item on surface `si` of `host`, within the reach of one of `arms` (base,
 /// reach) — of every one with `all` — when there are any.
-fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize, arms: &[([f64; 3], f64)], all: bool) -> bool {
+/// The footprints of the robots an item is said to be between, in pairs.
+fn robot_pairs(ctx: &Ctx<'_>, item_group: &str) -> Vec<(Aabb, Aabb)> {
+    let mut out = Vec::new();
+    for r in ctx.relations(item_group) {
+        let RelationKind::Between { first, second } = r else { continue };
+        let robot = |g: &str| ctx.input.robots.iter().any(|x| x.group == g);
+        if !robot(first) || !robot(second) {
+            continue;
+        }
+        let (a, b) = (crate::relate::bodies(ctx, first), crate::relate::bodies(ctx, second));
+        for (i, (_, x)) in a.iter().enumerate() {
+            for (j, (_, y)) in b.iter().enumerate() {
+                if (first != second || i < j) && x.fp.min != y.fp.min {
+                    // A little inside their bases: the judge takes the base's own geometry.
+                    let shrink = |b: &Aabb| Aabb {
+                        min: [b.min[0] + 0.04, b.min[1] + 0.04, b.min[2]],
+                        max: [b.max[0] - 0.04, b.max[1] - 0.04, b.max[2]],
+                    };
+                    out.push((shrink(&x.fp), shrink(&y.fp)));
+                }
+            }
+        }
+    }
+    out
+}
+
+#[allow(clippy::too_many_arguments)]
+fn try_surface(
+    ctx: &mut Ctx<'_>,
+    idx: usize,
+    host: usize,
+    si: usize,
+    arms: &[([f64; 3], f64)],
+    all: bool,
+    (edge, side): (bool, Option<bool>),
+    between: &[(Aabb, Aabb)],
+) -> bool {
     let Some(host_spot) = ctx.placed[host].as_ref().map(|p| p.spot) else {
         return false;
     };
@@ -219,7 +395,16 @@ fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize, arms: &[([
         return false;
     }
     let flip = ctx.rng.chance(0.5);
-    let yaws = if flip { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
+    let mut yaws = if flip { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
+    if let Some((a, c)) = between.first() {
+        // Between two arms: its short side along the line between them, so more fit.
+        let (ca, cc) = (a.center(), c.center());
+        let (s, co) = host_spot.yaw.sin_cos();
+        let d = [cc[0] - ca[0], cc[1] - ca[1]];
+        let along_x = (co * d[0] + s * d[1]).abs() >= (-s * d[0] + co * d[1]).abs();
+        let wide_x = b.max[0] - b.min[0] >= b.max[1] - b.min[1];
+        yaws = if along_x == wide_x { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
+    }
     let from_right = ctx.rng.chance(0.5);
     for local_yaw in yaws {
         let rotated = local_yaw != 0.0;
@@ -239,14 +424,57 @@ fn try_surface(ctx: &mut Ctx<'_>, idx: usize, host: usize, si: usize, arms: &[([
         let (ox, oy) = if rotated { (-cy, cx) } else { (cx, cy) };
         let nx = ((x1 - x0) / STEP).floor() as usize;
         let ny = ((y1 - y0) / STEP).floor() as usize;
+        let mut grid: Vec<(f64, f64)> = Vec::with_capacity((nx + 1) * (ny + 1));
         for j in 0..=ny {
             for i in 0..=nx {
                 let x = if from_right { x1 - i as f64 * STEP } else { x0 + i as f64 * STEP };
-                let y = y0 + j as f64 * STEP;
+                grid.push((x, y0 + j as f64 * STEP));
+            }
+        }
+        if !between.is_empty() {
+            // Between two arms: packed from the middle of the line between them outwards,
+            // so that each end stays within the reach of its arm.
+            let mids: Vec<[f64; 2]> = between
+                .iter()
+                .map(|(a, b)| {
+                    let (ca, cb) = (a.center(), b.center());
+                    [0.5 * (ca[0] + cb[0]), 0.5 * (ca[1] + cb[1])]
+                })
+                .collect();
+            let key = |p: &(f64, f64)| {
+                let w = host_spot.apply([p.0, p.1, 0.0]);
+                mids.iter().map(|m| (w[0] - m[0]).hypot(w[1] - m[1])).fold(f64::INFINITY, f64::min)
+            };
+            grid.sort_by(|a, b| key(a).total_cmp(&key(b)));
+        }
+        {
+            for (x, y) in grid {
+                if edge && (x - surf.min[0]).min(surf.max[0] - x).min(y - surf.min[1]).min(surf.max[1] - y) > EDGE {
+                    continue;
+                }
+                if let Some(up) = side {
+                    // In the outer part of the half towards one long edge.
+                    let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
+                    let (hx, hy) = (0.5 * (surf.max[0] - surf.min[0]), 0.5 * (surf.max[1] - surf.min[1]));
+                    let (across, half, along, half_along) =
+                        if hx >= hy { (y - cy, hy, x - cx, hx) } else { (x - cx, hx, y - cy, hy) };
+                    let off = if up { across } else { -across };
+                    // On that side as seen from the middle (not nearer an end than the edge).
+                    if off < 0.3 * half || along.abs() / half_along >= off / half {
+                        continue;
+                    }
+                }
                 let rect = [x - ex, y - ey, x + ex, y + ey];
                 let used = ctx.surface_use.get(&host).and_then(|u| u.get(si));
                 if used.is_some_and(|u| u.iter().any(|r| rects_overlap(r, &rect, SURFACE_GAP))) {
                     continue;
+                }
+                if !between.is_empty() {
+                    // Its centre on the line between two arms (inside the hull of their bases).
+                    let c = host_spot.apply([x, y, surf.z]);
+                    if !between.iter().any(|(a, b)| crate::relate::in_hull(a, b, [c[0], c[1]])) {
+                        continue;
+                    }
                 }
                 if !arms.is_empty() {
                     let centre = host_spot.apply([x, y, surf.z + 0.5 * height]);

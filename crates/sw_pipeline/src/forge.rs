@@ -4,7 +4,7 @@
 use sw_catalog::{AssetRequest, CatalogError};
 use sw_geom::{Asset, Rng};
 use sw_layout::{RobotItem, RobotMount};
-use sw_plan::{Mount, ObjectPlan, ScenePlan, SizeHint, Stage, Warning};
+use sw_plan::{Mount, ObjectPlan, RelationKind, ScenePlan, SizeHint, Stage, Warning};
 use sw_robots::RobotKind;
 
 /// One object instance with its asset.
@@ -132,8 +132,18 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                 });
                 RobotMount::Carrier { object }
             };
+            // "a Panda on the edge of the table": mounted on it.
+            let said_surface = plan.relations.iter().filter(|x| x.subject == r.id).find_map(|x| match &x.kind {
+                RelationKind::On { target } | RelationKind::OnEdgeOf { target } if plan.object(target).is_some() => {
+                    Some(target.clone())
+                }
+                _ => None,
+            });
             let mount = match (&r.mount, is_arm) {
                 (_, false) => RobotMount::Floor,
+                (Mount::Auto, true) if said_surface.is_some() => {
+                    RobotMount::Surface { group: said_surface.clone().unwrap_or_default() }
+                }
                 (Mount::OnSurface { target }, true) => RobotMount::Surface { group: target.clone() },
                 (Mount::Pedestal, true) => carrier("pedestal", &mut out),
                 (Mount::MobileBase, true) => carrier("mobile_cart", &mut out),
@@ -164,7 +174,10 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                                 .fold(0.0, f64::max);
                             ((top / 0.75).floor() as u32).clamp(1, 3)
                         })
-                        .sum();
+                        .sum::<u32>()
+                        // Arms said to stand on either side of it share it (the layout
+                        // keeps their home volumes apart).
+                        .max(if flanking(plan, &r.id, &group) { r.count.min(2) } else { 0 });
                     if *used > capacity {
                         out.warnings.push(Warning::new(
                             Stage::Forge,
@@ -194,6 +207,13 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
         }
     }
     out
+}
+
+/// Whether a robot group is said to stand on each side of an object group.
+fn flanking(plan: &ScenePlan, robot: &str, group: &str) -> bool {
+    plan.relations
+        .iter()
+        .any(|r| r.subject == robot && matches!(&r.kind, RelationKind::OnEachSideOf { target } if target == group))
 }
 
 /// The same object with its footprint (width and depth) scaled by `factor`, kept within

@@ -204,6 +204,22 @@ pub fn generate(
     run_from_plan(prompt, plan, out, opts, Prepared::default(), timings, started, on_event)
 }
 
+/// Runs L2–L4 and verification for a plan made elsewhere (a hand-built plan, a stored
+/// one): validated first (an invalid plan is an input error naming the field).
+pub fn generate_from_plan(
+    mut plan: ScenePlan,
+    out: &Path,
+    opts: &Options,
+    on_event: &mut dyn FnMut(&Event),
+) -> Result<Outcome, PipelineError> {
+    let started = Instant::now();
+    package::check_destination(out)?;
+    plan.validate().map_err(|e| PipelineError::Input(e.to_string()))?;
+    apply_options(&mut plan, opts)?;
+    let prompt = plan.prompt.clone();
+    run_from_plan(&prompt, plan, out, opts, Prepared::default(), Timings::default(), started, on_event)
+}
+
 /// The command line's overrides of a plan: robots, rules profile, anomalies.
 fn apply_options(plan: &mut ScenePlan, opts: &Options) -> Result<(), PipelineError> {
     if let Some(models) = &opts.robots {

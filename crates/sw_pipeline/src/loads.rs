@@ -111,10 +111,26 @@ impl Sizing {
 
 /// Whether `group` rests on a surface an arm is mounted on (its workpieces).
 pub(crate) fn on_arm_surface(plan: &ScenePlan, group: &str) -> bool {
+    // An arm mounted on it, or left to the layout and said to stand on its edge or on
+    // either side of it (the layout mounts those on it).
+    let arm_on = |target: &str| {
+        plan.robots.iter().any(|b| match &b.mount {
+            sw_plan::Mount::OnSurface { target: t } => t == target,
+            sw_plan::Mount::Auto => plan.relations.iter().any(|r| {
+                r.subject == b.id
+                    && matches!(&r.kind, RelationKind::OnEachSideOf { target: t } | RelationKind::OnEdgeOf { target: t } if t == target)
+            }),
+            _ => false,
+        })
+    };
     plan.relations.iter().any(|r| {
         r.subject == group
-            && matches!(&r.kind, RelationKind::On { target }
-                if plan.robots.iter().any(|b| matches!(&b.mount, sw_plan::Mount::OnSurface { target: t } if t == target)))
+            && match &r.kind {
+                RelationKind::On { target } => arm_on(target),
+                // Between two arms: on the surface they share.
+                RelationKind::Between { first, second } => plan.robot(first).is_some() || plan.robot(second).is_some(),
+                _ => false,
+            }
     })
 }
 

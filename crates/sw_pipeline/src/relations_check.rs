@@ -73,8 +73,34 @@ pub(crate) fn stated(plan: &ScenePlan, layout: &LaidOutScene) -> Vec<Relation> {
         if let Some(n) = &r.near {
             add(Relation { subject: r.id.clone(), kind: RelationKind::Reach { target: n.clone() } }, &mut out);
         }
+        // An arm said to be at, beside, behind, facing or on either side of a work
+        // surface, a conveyor or a machine reaches it (everything on it).
+        for rel in plan.relations.iter().filter(|x| x.subject == r.id) {
+            let target = match &rel.kind {
+                RelationKind::NextTo { target }
+                | RelationKind::Near { target }
+                | RelationKind::InFrontOf { target }
+                | RelationKind::Behind { target }
+                | RelationKind::Facing { target }
+                | RelationKind::OnEachSideOf { target }
+                | RelationKind::AtEndOf { target, .. }
+                | RelationKind::OnEdgeOf { target } => target,
+                _ => continue,
+            };
+            if is_work(plan, target) {
+                add(Relation { subject: r.id.clone(), kind: RelationKind::Reach { target: target.clone() } }, &mut out);
+            }
+        }
     }
     out
+}
+
+/// Whether an object group is something an arm works at: a work surface, a conveyor or
+/// a machine (by its catalog tags).
+fn is_work(plan: &ScenePlan, group: &str) -> bool {
+    plan.object(group).and_then(|o| sw_catalog::find(&o.category)).is_some_and(|c| {
+        c.name == "conveyor" || c.has_tag("machine") || (c.has_tag("surface") && !c.has_tag("seating"))
+    })
 }
 
 /// A thing a relation is measured on: an object body or a robot.

@@ -267,7 +267,7 @@ pub(crate) fn measure(plan: &ScenePlan, w: &Written, r: &Relation, subjects: &[T
                 }
             }
         }
-        RelationKind::Stacked { .. } => stacked(subjects, v),
+        RelationKind::Stacked { n: high, stacks } => stacked(subjects, *high, *stacks, v),
         RelationKind::Loaded { target } => {
             let loaded = subjects
                 .iter()
@@ -522,10 +522,11 @@ fn stands_on(a: &crate::scene_geom::BodyGeom, b: &crate::scene_geom::BodyGeom) -
     site_under(a, b).is_some() || ((a.bounds.min[2] - b.bounds.max[2]).abs() <= REST && inside(a.center(), &b.bounds))
 }
 
-/// One stack: each resting on the one below. The stacks are counted as the things
+/// Stacks: each resting on the one below, as many columns as said (`stacks`, else as
+/// many as `high` members each need, else one). The stacks are counted as the things
 /// resting on none of the others (the bottoms of the columns), so that three columns of
 /// sixteen, where the ceiling allows no more, are three stacks, not forty-eight.
-fn stacked(subjects: &[Thing], v: &mut Verdict) {
+fn stacked(subjects: &[Thing], high: Option<u32>, said: Option<u32>, v: &mut Verdict) {
     let bottoms = subjects
         .iter()
         .enumerate()
@@ -534,8 +535,10 @@ fn stacked(subjects: &[Thing], v: &mut Verdict) {
     let stacks = u32::try_from(bottoms.max(1)).unwrap_or(u32::MAX);
     v.set("stacks", f64::from(stacks));
     v.set("height_m", subjects.iter().map(|t| t.body.bounds.max[2]).fold(0.0, f64::max));
-    if stacks > 1 {
-        v.fail(format!("{stacks} stacks, not one"));
+    let n = u32::try_from(subjects.len()).unwrap_or(u32::MAX);
+    let want = said.unwrap_or_else(|| high.filter(|h| *h > 0).map_or(1, |h| n.div_ceil(h)));
+    if stacks != want {
+        v.fail(format!("{stacks} stacks, not {want}"));
     }
 }
 
@@ -604,7 +607,8 @@ fn each_with(w: &Written, subjects: &[Thing], companions: &[Thing], v: &mut Verd
 /// An arm's reach of what it works at, from its shoulder: everything resting on the
 /// instance it stands on or is nearest (a belt: its centreline at belt height; nothing
 /// on it: the nearest point of its top; no surface: the nearest point of its box), and
-/// every instance of the target within the reach of this arm or another of its model.
+/// every instance of the target within the reach of this arm or another of its model
+/// (where arms share a surface, each item on it within the reach of one of them).
 fn reach(w: &Written, arm: &Thing, targets: &[Thing], v: &mut Verdict) {
     let model = arm.robot.as_deref().unwrap_or_default();
     let reach = sw_robots::find(model).map_or(0.0, |d| d.reach);
@@ -621,11 +625,29 @@ fn reach(w: &Written, arm: &Thing, targets: &[Thing], v: &mut Verdict) {
         .collect();
     let mut worst: f64 = 0.0;
     let mut mine: f64 = f64::INFINITY;
+    // A surface several arms share: each item on it within the reach of one of them.
+    let shared = arms.len() > 1;
     for t in targets {
-        let d_me = work_distance(w, t, me);
-        mine = mine.min(d_me);
-        let best = arms.iter().map(|s| work_distance(w, t, *s)).fold(d_me, f64::min);
-        worst = worst.max(best);
+        let items: Vec<[f64; 3]> = if shared
+            && !w.layout.objects.iter().any(|o| o.name == t.name && (o.movable || o.category == "conveyor"))
+        {
+            w.resting_on(t).iter().filter_map(|(name, _)| w.geom.bodies.get(name)).map(|b| b.bounds.center()).collect()
+        } else {
+            Vec::new()
+        };
+        if items.is_empty() {
+            let d_me = work_distance(w, t, me);
+            mine = mine.min(d_me);
+            let best = arms.iter().map(|s| work_distance(w, t, *s)).fold(d_me, f64::min);
+            worst = worst.max(best);
+            continue;
+        }
+        let d =
+            |p: [f64; 3], s: [f64; 3]| ((p[0] - s[0]).powi(2) + (p[1] - s[1]).powi(2) + (p[2] - s[2]).powi(2)).sqrt();
+        for p in items {
+            mine = mine.min(d(p, me));
+            worst = worst.max(arms.iter().map(|s| d(p, *s)).fold(d(p, me), f64::min));
+        }
     }
     v.set("distance_m", worst);
     v.set("nearest_work_m", mine);

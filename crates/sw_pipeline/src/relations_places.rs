@@ -269,11 +269,26 @@ pub(crate) fn facing(subjects: &[Thing], targets: &[Thing], v: &mut Verdict) {
     v.set("angle_deg", worst_angle);
 }
 
+/// The wall a thing stands against: of the walls within reach, the one its back is to
+/// (in a corner two are near), else the nearest.
+fn back_wall(half: [f64; 2], s: &Thing) -> (Wall, f64) {
+    let f = s.body.front();
+    Wall::ALL
+        .iter()
+        .map(|w| (*w, wall_gap(half, &s.body.bounds, *w)))
+        .filter(|(_, g)| *g <= WALL)
+        .max_by(|a, b| {
+            let (oa, ob) = (a.0.outward(), b.0.outward());
+            (-dot(f, oa)).total_cmp(&(-dot(f, ob)))
+        })
+        .unwrap_or_else(|| nearest_wall(half, &s.body.bounds))
+}
+
 pub(crate) fn on_opposite_walls(half: [f64; 2], subjects: &[Thing], long: bool, v: &mut Verdict) {
     let mut walls: Vec<Wall> = Vec::new();
     let mut worst: f64 = 0.0;
     for s in subjects {
-        let (w, g) = nearest_wall(half, &s.body.bounds);
+        let (w, g) = back_wall(half, s);
         worst = worst.max(g);
         if !walls.contains(&w) {
             walls.push(w);
@@ -351,7 +366,7 @@ pub(crate) fn rows_of(sizes: &[usize], m: u32, v: &mut Verdict) {
     let m = m as usize;
     let total: usize = sizes.iter().sum();
     let short = sizes.iter().filter(|k| **k != m).count();
-    if sizes.iter().any(|k| *k > m) || short > usize::from(m > 0 && total % m != 0) {
+    if sizes.iter().any(|k| *k > m) || short > usize::from(m > 0 && !total.is_multiple_of(m)) {
         v.fail(format!("rows of {sizes:?}, {m} each asked"));
     }
 }

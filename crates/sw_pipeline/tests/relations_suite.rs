@@ -95,6 +95,11 @@ fn the_judge_tells_holding_from_failing_fixtures() {
         if held(&v["counts"]) != case["expect"]["counts"].as_bool().unwrap() {
             wrong.push(format!("{fixture}: counts {}", v["counts"]));
         }
+        if let Some(e) = case["expect"].get("room")
+            && held(&v["room"]) != e.as_bool().unwrap()
+        {
+            wrong.push(format!("{fixture}: room {}", v["room"]));
+        }
         let expect = case["expect"]["relations"].as_array().unwrap();
         let got = v["relations"].as_array().unwrap();
         assert_eq!(expect.len(), got.len(), "{fixture}: an expectation per relation");
@@ -123,6 +128,11 @@ fn the_judge_tells_holding_from_failing_fixtures() {
         assert!(h && f, "the fixtures must show {name} both holding ({h}) and failing ({f})");
     }
     assert!(used.len() >= 25, "the suite uses {} relation kinds", used.len());
+    // And every relation a plan can state, and the stated size.
+    for name in sw_plan::RelationKind::NAMES.iter().chain(&["size"]) {
+        let (h, f) = both.get(*name).copied().unwrap_or_default();
+        assert!(h && f, "the fixtures must show {name} both holding ({h}) and failing ({f})");
+    }
 }
 
 #[test]

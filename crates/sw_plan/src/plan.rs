@@ -733,9 +733,7 @@ impl RelationKind {
                 | RelationKind::Stacked { .. }
                 | RelationKind::Around { .. }
                 | RelationKind::OnOppositeWalls { .. }
-                | RelationKind::InCorners
                 | RelationKind::BackToBack
-                | RelationKind::OnEachSideOf { .. }
         )
     }
 }
