@@ -240,10 +240,10 @@ pub(crate) const BANANA: Category = def(
     Kind::Food,
     PlacementKind::OnSurface,
     true,
-    // YCB banana: 19 × 4 × 3.6 cm along its curve; 17–22 cm long.
+    // YCB banana: 19 cm tip to tip, 3.6 cm thick, its curve 6–7 cm across; 17–22 cm long.
     &[
         ParamDef::new("width", 0.19, 0.13, 0.24, 0.08, "tip to tip"),
-        ParamDef::new("depth", 0.05, 0.035, 0.07, 0.08, "across the curve"),
+        ParamDef::new("depth", 0.065, 0.04, 0.09, 0.08, "across the curve"),
         ParamDef::new("height", 0.037, 0.028, 0.045, 0.06, "thickness lying"),
     ],
     build_banana,
