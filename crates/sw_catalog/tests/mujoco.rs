@@ -181,7 +181,6 @@ const OPEN_CONTAINERS: &[&str] = &[
     "frying_pan",
     "saucepan",
     "stock_pot",
-    "wok",
     "colander",
     "measuring_cup",
     "drinking_glass",

@@ -173,7 +173,9 @@ pub fn fill(input: &FillInput<'_>, level: FillLevel) -> FillOutcome {
     }
     // Robots: their keep-out boxes, and on the floor a disc of their reach kept clear.
     let mut arm_zones: Vec<([f64; 2], f64)> = Vec::new();
-    for (r, placed) in input.robots.iter().filter_map(|r| scene.robots.iter().find(|p| p.name == r.name).map(|p| (r, p))) {
+    for (r, placed) in
+        input.robots.iter().filter_map(|r| scene.robots.iter().find(|p| p.name == r.name).map(|p| (r, p)))
+    {
         let (s, c) = placed.yaw.sin_cos();
         for k in &r.keepout {
             let mut b = Aabb::EMPTY;
@@ -219,7 +221,8 @@ pub fn fill(input: &FillInput<'_>, level: FillLevel) -> FillOutcome {
     // 1. Furniture along the walls (and in the open for tables), in the profile's order.
     let mut hosts: Vec<(String, Asset, [f64; 3], f64)> = Vec::new();
     let present = |cat: &str, added: &[Added]| {
-        scene.objects.iter().filter(|o| o.category == cat).count() + added.iter().filter(|a| a.placed.category == cat).count()
+        scene.objects.iter().filter(|o| o.category == cat).count()
+            + added.iter().filter(|a| a.placed.category == cat).count()
     };
     let mut furniture_short = 0usize;
     for item in profile.furniture {
@@ -275,7 +278,8 @@ pub fn fill(input: &FillInput<'_>, level: FillLevel) -> FillOutcome {
                 if out.added.len() >= input.max_added {
                     break;
                 }
-                let n = clutter_surface(input, &mut out, &mut occupied, &mut name_of, &mut rng, items, host, s, *pos, *yaw);
+                let n =
+                    clutter_surface(input, &mut out, &mut occupied, &mut name_of, &mut rng, items, host, s, *pos, *yaw);
                 placed_items += n;
             }
         }
@@ -283,7 +287,10 @@ pub fn fill(input: &FillInput<'_>, level: FillLevel) -> FillOutcome {
             out.warnings.push(Warning::new(
                 Stage::Layout,
                 "fill_no_surface",
-                format!("--fill cluttered: no free surface in the {} for small things", input.room_kind.name().replace('_', " ")),
+                format!(
+                    "--fill cluttered: no free surface in the {} for small things",
+                    input.room_kind.name().replace('_', " ")
+                ),
             ));
         }
     }
@@ -369,7 +376,13 @@ fn wall_spot(
 }
 
 /// A spot in the open floor, facing a random quarter.
-fn open_spot(a: &Asset, occ: &Occupied, arms: &[([f64; 2], f64)], [hw, hd]: [f64; 2], rng: &mut Rng) -> Option<([f64; 3], f64)> {
+fn open_spot(
+    a: &Asset,
+    occ: &Occupied,
+    arms: &[([f64; 2], f64)],
+    [hw, hd]: [f64; 2],
+    rng: &mut Rng,
+) -> Option<([f64; 3], f64)> {
     let yaw = f64::from((rng.next_u64() % 2) as u32) * std::f64::consts::FRAC_PI_2;
     let [fx, fy] = half_footprint(a, yaw);
     let xs = steps(-hw + fx + 0.5, hw - fx - 0.5, 0.15);
@@ -379,7 +392,11 @@ fn open_spot(a: &Asset, occ: &Occupied, arms: &[([f64; 2], f64)], [hw, hd]: [f64
     spots.sort_by(|a, b| (a.0.hypot(a.1)).total_cmp(&b.0.hypot(b.1)));
     let c = a.bounds().center();
     let (s, co) = yaw.sin_cos();
-    spots.into_iter().map(|(x, y)| [x - (co * c[0] - s * c[1]), y - (s * c[0] + co * c[1]), 0.0]).find(|p| fits_floor(a, *p, yaw, occ, arms, [hw, hd])).map(|p| (p, yaw))
+    spots
+        .into_iter()
+        .map(|(x, y)| [x - (co * c[0] - s * c[1]), y - (s * c[0] + co * c[1]), 0.0])
+        .find(|p| fits_floor(a, *p, yaw, occ, arms, [hw, hd]))
+        .map(|p| (p, yaw))
 }
 
 fn steps(a: f64, b: f64, step: f64) -> Vec<f64> {
@@ -390,10 +407,21 @@ fn steps(a: f64, b: f64, step: f64) -> Vec<f64> {
     (0..=n).map(|k| a + step * k as f64).collect()
 }
 
-fn fits_floor(a: &Asset, pos: [f64; 3], yaw: f64, occ: &Occupied, arms: &[([f64; 2], f64)], [hw, hd]: [f64; 2]) -> bool {
+fn fits_floor(
+    a: &Asset,
+    pos: [f64; 3],
+    yaw: f64,
+    occ: &Occupied,
+    arms: &[([f64; 2], f64)],
+    [hw, hd]: [f64; 2],
+) -> bool {
     let boxes = world_boxes(a, pos, yaw);
     let u = union(&boxes);
-    if u.min[0] < -hw + WALL_GAP - 1e-9 || u.max[0] > hw - WALL_GAP + 1e-9 || u.min[1] < -hd + WALL_GAP - 1e-9 || u.max[1] > hd - WALL_GAP + 1e-9 {
+    if u.min[0] < -hw + WALL_GAP - 1e-9
+        || u.max[0] > hw - WALL_GAP + 1e-9
+        || u.min[1] < -hd + WALL_GAP - 1e-9
+        || u.max[1] > hd - WALL_GAP + 1e-9
+    {
         return false;
     }
     // Clear of every arm's floor reach (nearest point of the footprint).

@@ -32,11 +32,11 @@ use sw_plan::{Approximation, Dims, ProxyPlan, ScenePlan, Stage, Warning};
 /// meaning, cosine similarity of MiniLM vectors (tuned on bench/vocab/dev.tsv).
 pub const SIBLING_MIN: f32 = 0.62;
 /// The nearest category tells an unknown noun's kind of thing only this close.
-pub const KIND_MIN: f32 = 0.5;
+pub const KIND_MIN: f32 = 0.58;
 /// A noun with no candidate by its head that is this much nearer to an abstract noun
 /// ([`ABSTRACT`]) than to every category names nothing physical ("a happiness"): it is
 /// left out, with a warning.
-pub const ABSTRACT_MARGIN: f32 = 0.05;
+pub const ABSTRACT_MARGIN: f32 = 0.02;
 
 /// Nouns that name no physical thing: feelings, ideas, events, sounds, time. A noun
 /// nearer to these by meaning than to any category is not an object.
@@ -54,10 +54,6 @@ pub const ABSTRACT: &[&str] = &[
     "time",
     "a moment",
     "an hour",
-    "music",
-    "a song",
-    "a sound",
-    "a noise",
     "a smell",
     "the weather",
     "a meeting",
@@ -170,7 +166,11 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
         // knife, not the table knife that is also "a knife").
         if let Some((i, Some(s))) = best(&tied(&[Tie::Named, Tie::HeadNamed])) {
             if s >= SIBLING_MIN {
-                return Resolution::Category { name: cands[i].0.name, score: Some(s), lexical: cands[i].1 == Tie::Named };
+                return Resolution::Category {
+                    name: cands[i].0.name,
+                    score: Some(s),
+                    lexical: cands[i].1 == Tie::Named,
+                };
             }
         }
         // Named by the head itself: a kind of that category.
@@ -185,7 +185,8 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
             // Kinds of one thing: the proxy takes their kind when they agree, or the
             // nearest one's when the model can say which.
             let kinds: Vec<Kind> = cands.iter().map(|(c, _)| c.kind).collect();
-            let kind = if kinds.iter().all(|k| *k == kinds[0]) || score.is_some() { Some(cands[i].0.kind) } else { None };
+            let kind =
+                if kinds.iter().all(|k| *k == kinds[0]) || score.is_some() { Some(cands[i].0.kind) } else { None };
             return Resolution::Proxy { kind, nearest: score.map(|s| (cands[i].0.name, s)) };
         }
     }
@@ -220,7 +221,10 @@ pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning>
                 let Some(cat) = sw_catalog::find(name) else { continue };
                 let how = match (lexical, score) {
                     (true, _) => format!("a kind of {} (its head noun names it)", cat.display),
-                    (false, Some(s)) => format!("the nearest {} by meaning (similarity {s:.2})", cat.is_a.first().copied().unwrap_or("thing")),
+                    (false, Some(s)) => format!(
+                        "the nearest {} by meaning (similarity {s:.2})",
+                        cat.is_a.first().copied().unwrap_or("thing")
+                    ),
                     (false, None) => format!("a kind of {}", cat.display),
                 };
                 plan.understanding.approximated.push(Approximation {
@@ -271,7 +275,9 @@ pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning>
     }
     if !dropped.is_empty() {
         plan.objects.retain(|o| !dropped.contains(&o.id));
-        plan.relations.retain(|r| !dropped.contains(&r.subject) && !r.kind.targets().iter().any(|t| dropped.iter().any(|d| d == t)));
+        plan.relations.retain(|r| {
+            !dropped.contains(&r.subject) && !r.kind.targets().iter().any(|t| dropped.iter().any(|d| d == t))
+        });
     }
     warnings
 }
@@ -285,7 +291,12 @@ fn sized_by_kind(p: &ProxyPlan, kind: Kind, explicit: &sw_plan::ExplicitSize) ->
             s[i] = v;
         }
     }
-    ProxyPlan { label: p.label.clone(), prior: kind.name().to_string(), size: Dims::new(s[0], s[1], s[2]), movable: prior.movable }
+    ProxyPlan {
+        label: p.label.clone(),
+        prior: kind.name().to_string(),
+        size: Dims::new(s[0], s[1], s[2]),
+        movable: prior.movable,
+    }
 }
 
 /// The in-process MiniLM over every category's names and description; `None` inside when
@@ -319,8 +330,10 @@ impl MiniLmMeaning {
         let model = sw_forge::embed::MiniLm::load(dir).map_err(|e| e.to_string());
         let mut vectors = BTreeMap::new();
         if let Ok(m) = &model {
-            let mut texts: Vec<(&'static str, String)> =
-                sw_catalog::categories().iter().flat_map(|c| texts_of(c).into_iter().map(move |t| (c.name, t))).collect();
+            let mut texts: Vec<(&'static str, String)> = sw_catalog::categories()
+                .iter()
+                .flat_map(|c| texts_of(c).into_iter().map(move |t| (c.name, t)))
+                .collect();
             texts.extend(ABSTRACT.iter().map(|a| (ABSTRACT_KEY, a.to_string())));
             let key = cache_key(dir, &texts);
             let file = cache.join(format!("categories-{key}.bin"));
@@ -396,9 +409,7 @@ impl Meaning for MiniLmMeaning {
             among
                 .iter()
                 .map(|c| {
-                    self.vectors
-                        .get(c.name)
-                        .map_or(0.0, |vs| vs.iter().map(|v| dot(&q, v)).fold(f32::MIN, f32::max))
+                    self.vectors.get(c.name).map_or(0.0, |vs| vs.iter().map(|v| dot(&q, v)).fold(f32::MIN, f32::max))
                 })
                 .collect(),
         )
@@ -452,7 +463,8 @@ fn write_cache(file: &Path, rows: &[Vec<f32>]) {
         return;
     }
     let bytes: Vec<u8> = rows.iter().flat_map(|r| r.iter().flat_map(|v| v.to_le_bytes())).collect();
-    let tmp: PathBuf = dir.join(format!(".{}.tmp{}", file.file_name().and_then(|n| n.to_str()).unwrap_or("v"), std::process::id()));
+    let tmp: PathBuf =
+        dir.join(format!(".{}.tmp{}", file.file_name().and_then(|n| n.to_str()).unwrap_or("v"), std::process::id()));
     if std::fs::write(&tmp, bytes).is_ok() && std::fs::rename(&tmp, file).is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
@@ -470,69 +482,96 @@ fn phrase_noun(phrase: &str) -> Vec<String> {
         .collect()
 }
 
-/// Groups the planner matched by their head noun alone ("a santoku knife" read as the
-/// catalog's "knife") whose phrase is nearer by meaning to another category named alike
-/// (a chef's knife): the nearest one, reported as approximated. Only compounds that are
-/// not a name of their category and share their head with another category are looked at.
-pub fn refine_heads(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning> {
+/// The head nouns of a category's names ("knife" of "chef's knife").
+fn name_heads(cat: &Category) -> Vec<String> {
+    let mut h: Vec<String> = names_of(cat).into_iter().filter_map(|n| n.last().cloned()).collect();
+    h.sort();
+    h.dedup();
+    h
+}
+
+/// Levenshtein distance of two words (for the planner's typo tolerance).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for j in 0..b.len() {
+            let cur = row[j + 1];
+            row[j + 1] = if ca == b[j] { prev } else { 1 + prev.min(row[j]).min(row[j + 1]) };
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// Whether `word` is one of `heads`, allowing the planner's typo tolerance.
+fn is_head_of(word: &str, heads: &[String]) -> bool {
+    let limit = match word.chars().count() {
+        0..=4 => 0,
+        5..=7 => 1,
+        _ => 2,
+    };
+    heads.iter().any(|h| h == word || edit_distance(word, h) <= limit)
+}
+
+/// Groups the planner read by a word that is not the phrase's head noun ("a bottle
+/// opener" read as a bottle, "a potato masher" as a potato): the thing named is not a kind
+/// of that category, so the group becomes an unknown noun for [`resolve_plan`], and the
+/// report says why. Also notes every group read through another name of its category
+/// ("a handsaw" made as the catalog's hand saw), so that no reading is silent.
+pub fn check_readings(plan: &mut ScenePlan) -> Vec<Warning> {
     let mut warnings = Vec::new();
+    let on_something: Vec<String> = plan
+        .relations
+        .iter()
+        .filter(|r| matches!(r.kind, sw_plan::RelationKind::On { .. }))
+        .map(|r| r.subject.clone())
+        .collect();
     for group in plan.objects.iter_mut().filter(|o| o.proxy.is_none()) {
         let Some(cat) = sw_catalog::find(&group.category) else { continue };
         let words = phrase_noun(&group.phrase);
-        if words.len() < 2 || names_of(cat).iter().any(|n| *n == words || words.ends_with(n) && n.len() > 1) {
+        let Some(last) = words.last() else { continue };
+        let heads = name_heads(cat);
+        let modifier_named = words[..words.len() - 1].iter().any(|w| heads.contains(w));
+        if modifier_named && !is_head_of(last, &heads) {
+            let label = words.join(" ");
+            warnings.push(Warning::new(
+                Stage::Forge,
+                "noun_reread",
+                format!(
+                    "'{label}' is not a kind of {} (its head noun is '{last}'); read as a noun the catalog lacks",
+                    cat.display
+                ),
+            ));
+            let resting = on_something.contains(&group.id);
+            group.proxy = Some(sw_planner::vocab::proxy(&label, resting, &group.size.words, &group.size.explicit));
+            group.category = "proxy".to_string();
             continue;
         }
-        let cands: Vec<&'static Category> = candidates(&words[words.len() - 1..])
-            .into_iter()
-            .filter(|(_, t)| *t != Tie::Sibling)
-            .map(|(c, _)| c)
-            .collect();
-        if cands.len() < 2 || !cands.iter().any(|c| c.name == cat.name) {
-            continue;
-        }
-        let text = words.join(" ");
-        let Some(scores) = meaning.scores(&text, &cands) else { continue };
-        let own = cands.iter().position(|c| c.name == cat.name).map_or(0.0, |i| scores[i]);
-        let Some((i, s)) = scores.iter().copied().enumerate().max_by(|a, b| a.1.total_cmp(&b.1)) else { continue };
-        if cands[i].name != cat.name && s >= SIBLING_MIN && s >= own + 0.05 {
-            let to = cands[i];
-            let message = format!(
-                "'{text}' is not in the catalog; made as a {} (nearest by meaning, {s:.2}) rather than a {} ({own:.2})",
-                to.display, cat.display
-            );
+        let said = words.join(" ");
+        let own = [cat.display.to_lowercase(), cat.name.replace('_', " ")];
+        if !own.contains(&said) && !plan.understanding.approximated.iter().any(|a| a.text == group.phrase) {
             plan.understanding.approximated.push(Approximation {
                 text: group.phrase.clone(),
-                became: to.display.to_string(),
-                reason: message.clone(),
+                became: cat.display.to_string(),
+                reason: format!("'{said}' is read as the catalog's {} (one of its names)", cat.display),
             });
-            warnings.push(Warning::new(Stage::Forge, "noun_approximated", message));
-            group.category = to.name.to_string();
         }
     }
     warnings
 }
 
-/// Whether any group is a compound the planner matched by its head alone, with another
-/// category named alike (cheap: no model).
-fn has_head_matches(plan: &ScenePlan) -> bool {
-    plan.objects.iter().filter(|o| o.proxy.is_none()).any(|o| {
-        let Some(cat) = sw_catalog::find(&o.category) else { return false };
-        let words = phrase_noun(&o.phrase);
-        words.len() >= 2
-            && !names_of(cat).iter().any(|n| *n == words || words.ends_with(n) && n.len() > 1)
-            && candidates(&words[words.len() - 1..]).iter().filter(|(_, t)| *t != Tie::Sibling).count() >= 2
-    })
-}
-
-/// Resolves the plan's unknown nouns (and head-only matches of compounds) with the
-/// shared matcher when there are any; says when matching by meaning is off.
+/// Checks how the planner read every group ([`check_readings`]), then resolves the
+/// plan's unknown nouns with the shared matcher when there are any; says when matching
+/// by meaning is off.
 pub(crate) fn resolve_unknown_nouns(plan: &mut ScenePlan) -> Vec<Warning> {
-    let proxies = plan.objects.iter().any(|o| o.proxy.is_some());
-    if !proxies && !has_head_matches(plan) {
-        return Vec::new();
+    let mut warnings = check_readings(plan);
+    if plan.objects.iter().all(|o| o.proxy.is_none()) {
+        return warnings;
     }
     let meaning = MiniLmMeaning::shared();
-    let mut warnings = Vec::new();
     if let Some(why) = meaning.unavailable() {
         warnings.push(Warning::new(
             Stage::Forge,
@@ -540,9 +579,6 @@ pub(crate) fn resolve_unknown_nouns(plan: &mut ScenePlan) -> Vec<Warning> {
             format!("unknown nouns were matched by their head words only, not by meaning: {why}"),
         ));
     }
-    warnings.extend(refine_heads(plan, meaning));
-    if proxies {
-        warnings.extend(resolve_plan(plan, meaning));
-    }
+    warnings.extend(resolve_plan(plan, meaning));
     warnings
 }

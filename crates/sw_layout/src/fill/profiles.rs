@@ -303,9 +303,19 @@ const KITCHEN: Profile = Profile {
         Clutter { hosts: &["counter", "kitchen_island"], items: COUNTER_ITEMS },
         Clutter {
             hosts: &["sink"],
-            items: &[i("plate", 2), i("bowl", 2), i("mug", 2), i("drinking_glass", 2), i("dish_rack", 1), i("spray_bottle", 1)],
+            items: &[
+                i("plate", 2),
+                i("bowl", 2),
+                i("mug", 2),
+                i("drinking_glass", 2),
+                i("dish_rack", 1),
+                i("spray_bottle", 1),
+            ],
         },
-        Clutter { hosts: &["stove"], items: &[i("frying_pan", 2), i("saucepan", 2), i("stock_pot", 1), i("kettle", 1), i("teapot", 1)] },
+        Clutter {
+            hosts: &["stove"],
+            items: &[i("frying_pan", 2), i("saucepan", 2), i("stock_pot", 1), i("kettle", 1), i("teapot", 1)],
+        },
         Clutter { hosts: &["dining_table", "table", "cafe_table"], items: TABLE_SETTING },
         Clutter { hosts: &["shelf", "bookshelf", "cabinet", "fridge"], items: PANTRY_ITEMS },
     ],
@@ -402,7 +412,10 @@ const BEDROOM: Profile = Profile {
         f("chair", 1, Open),
     ],
     clutter: &[
-        Clutter { hosts: &["bed"], items: &[i("pillow", 3), i("cushion", 2), i("blanket", 2), i("teddy_bear", 1), i("book", 1)] },
+        Clutter {
+            hosts: &["bed"],
+            items: &[i("pillow", 3), i("cushion", 2), i("blanket", 2), i("teddy_bear", 1), i("book", 1)],
+        },
         Clutter {
             hosts: &["nightstand", "side_table"],
             items: &[
@@ -431,7 +444,14 @@ const BEDROOM: Profile = Profile {
         },
         Clutter {
             hosts: &["wardrobe"],
-            items: &[i("shoe_box", 2), i("storage_box", 2), i("blanket", 2), i("towel", 1), i("backpack", 1), i("handbag", 1)],
+            items: &[
+                i("shoe_box", 2),
+                i("storage_box", 2),
+                i("blanket", 2),
+                i("towel", 1),
+                i("backpack", 1),
+                i("handbag", 1),
+            ],
         },
         Clutter { hosts: &["shoe_rack"], items: &[i("shoe", 4), i("boot", 2)] },
         Clutter { hosts: &["desk", "table"], items: DESK_ITEMS },
@@ -450,7 +470,10 @@ const DINING: Profile = Profile {
     ],
     clutter: &[
         Clutter { hosts: &["dining_table", "table"], items: TABLE_SETTING },
-        Clutter { hosts: &["tv_stand"], items: &[i("vase", 2), i("candle", 2), i("plate", 2), i("bowl", 2), i("pitcher", 1), i("bottle", 2)] },
+        Clutter {
+            hosts: &["tv_stand"],
+            items: &[i("vase", 2), i("candle", 2), i("plate", 2), i("bowl", 2), i("pitcher", 1), i("bottle", 2)],
+        },
         Clutter { hosts: &["cabinet", "shelf", "bookshelf"], items: PANTRY_ITEMS },
     ],
 };
@@ -481,7 +504,13 @@ const BATHROOM: Profile = Profile {
         Clutter { hosts: &["bathtub"], items: &[i("shampoo_bottle", 2), i("rubber_duck", 1), i("soap_dispenser", 1)] },
         Clutter {
             hosts: &["shelf", "cabinet"],
-            items: &[i("towel", 4), i("toilet_paper", 4), i("shampoo_bottle", 2), i("soap_dispenser", 1), i("storage_box", 1)],
+            items: &[
+                i("towel", 4),
+                i("toilet_paper", 4),
+                i("shampoo_bottle", 2),
+                i("soap_dispenser", 1),
+                i("storage_box", 1),
+            ],
         },
     ],
 };
@@ -503,7 +532,14 @@ const WORKSHOP: Profile = Profile {
         Clutter { hosts: &["shelf", "pallet_rack", "cabinet"], items: GARAGE_SHELF },
         Clutter {
             hosts: &["tool_chest"],
-            items: &[i("toolbox", 1), i("power_drill", 1), i("hammer", 1), i("flashlight", 1), i("tape_measure", 1), i("wrench", 1)],
+            items: &[
+                i("toolbox", 1),
+                i("power_drill", 1),
+                i("hammer", 1),
+                i("flashlight", 1),
+                i("tape_measure", 1),
+                i("wrench", 1),
+            ],
         },
     ],
 };
@@ -521,9 +557,18 @@ const SHOP: Profile = Profile {
         Clutter { hosts: &["gondola_shelf", "shelf"], items: SHOP_SHELF },
         Clutter {
             hosts: &["checkout_counter", "counter"],
-            items: &[i("cash_register", 3), i("shopping_basket", 1), i("kitchen_scale", 1), i("bottle", 1), i("drink_can", 1)],
+            items: &[
+                i("cash_register", 3),
+                i("shopping_basket", 1),
+                i("kitchen_scale", 1),
+                i("bottle", 1),
+                i("drink_can", 1),
+            ],
         },
-        Clutter { hosts: &["display_case"], items: &[i("bread_loaf", 2), i("cup", 2), i("jar", 2), i("plate", 2), i("cash_register", 1)] },
+        Clutter {
+            hosts: &["display_case"],
+            items: &[i("bread_loaf", 2), i("cup", 2), i("jar", 2), i("plate", 2), i("cash_register", 1)],
+        },
     ],
 };
 
@@ -538,7 +583,10 @@ const CAFE: Profile = Profile {
         f("potted_plant", 1, Wall),
     ],
     clutter: &[
-        Clutter { hosts: &["cafe_table", "table", "dining_table"], items: &[i("mug", 2), i("cup", 2), i("plate", 1), i("drinking_glass", 1), i("spoon", 1), i("vase", 1)] },
+        Clutter {
+            hosts: &["cafe_table", "table", "dining_table"],
+            items: &[i("mug", 2), i("cup", 2), i("plate", 1), i("drinking_glass", 1), i("spoon", 1), i("vase", 1)],
+        },
         Clutter {
             hosts: &["counter"],
             items: &[
@@ -629,7 +677,10 @@ const CLINIC: Profile = Profile {
 const STORAGE: Profile = Profile {
     name: "storage room",
     furniture: &[f("shelf", 4, Wall), f("cabinet", 1, Wall)],
-    clutter: &[Clutter { hosts: &["shelf", "pallet_rack", "gondola_shelf", "cabinet", "workbench", "table"], items: STORE_ROOM }],
+    clutter: &[Clutter {
+        hosts: &["shelf", "pallet_rack", "gondola_shelf", "cabinet", "workbench", "table"],
+        items: STORE_ROOM,
+    }],
 };
 
 /// Room words of the prompt that choose a profile over its plan room kind.
@@ -701,5 +752,7 @@ pub fn pick(items: &[Item], rng: &mut Rng) -> Option<Item> {
 }
 
 /// Every profile, for the tests and the benchmark.
-pub const ALL: &[&Profile] =
-    &[&KITCHEN, &OFFICE, &LIVING, &BEDROOM, &DINING, &BATHROOM, &WORKSHOP, &SHOP, &CAFE, &CLASSROOM, &LAB, &CLINIC, &STORAGE];
+pub const ALL: &[&Profile] = &[
+    &KITCHEN, &OFFICE, &LIVING, &BEDROOM, &DINING, &BATHROOM, &WORKSHOP, &SHOP, &CAFE, &CLASSROOM, &LAB, &CLINIC,
+    &STORAGE,
+];
