@@ -12,6 +12,7 @@ from .errors import ScenewrightError
 from .package import Package
 
 PHYSICS = ("native", "mjx")
+FILLS = ("none", "furnished", "cluttered")
 
 
 def _robot_list(robot: str | Sequence[str] | None) -> str | None:
@@ -29,6 +30,7 @@ def generate(
     physics: str = "native",
     verify: bool = True,
     timeout: float | None = 600.0,
+    fill: str | None = None,
 ) -> Package:
     """Generate a scene from a plain-English prompt and return its package.
 
@@ -41,6 +43,10 @@ def generate(
         physics: `"native"` (MuJoCo, MuJoCo Warp) or `"mjx"` (MuJoCo XLA's collision pairs).
         verify: Compile and settle the scene in MuJoCo (on by default).
         timeout: Seconds before the run is abandoned.
+        fill: `"none"`, `"furnished"` (the furniture the room's kind is used with) or
+            `"cluttered"` (furnished, with small things on its surfaces), added after the
+            stated objects without moving them; `None` follows the prompt's own words
+            ("a cluttered kitchen"), else no fill.
 
     Returns:
         The package. A scene that failed verification is returned too: check
@@ -52,6 +58,8 @@ def generate(
     """
     if physics not in PHYSICS:
         raise ValueError(f"physics must be one of {PHYSICS}, not {physics!r}")
+    if fill is not None and fill not in FILLS:
+        raise ValueError(f"fill must be one of {FILLS}, not {fill!r}")
     target = Path(out) if out is not None else Path(tempfile.mkdtemp(prefix="scenewright-")) / "package"
     args = [
         "generate",
@@ -69,6 +77,8 @@ def generate(
         args += ["--robot", robots]
     if not verify:
         args.append("--no-verify")
+    if fill is not None:
+        args += ["--fill", fill]
     res = _engine.run(args, timeout=timeout)
     doc = res.document if isinstance(res.document, dict) else {}
     path = Path(str(doc.get("out_dir", target)))

@@ -31,6 +31,7 @@ fn placed(name: &str, category: &str, pos: [f64; 3], support: Support, asset: &A
         movable: asset.is_free(),
         mass: None,
         asset_seed: asset.seed,
+        added: false,
     }
 }
 
@@ -180,7 +181,6 @@ const OPEN_CONTAINERS: &[&str] = &[
     "frying_pan",
     "saucepan",
     "stock_pot",
-    "wok",
     "colander",
     "measuring_cup",
     "drinking_glass",

@@ -41,6 +41,21 @@ pub(crate) enum BenchCommand {
         #[arg(long)]
         json: bool,
     },
+    /// Rooms with `--fill` (kitchens, offices, bedrooms, living rooms, workshops, shops):
+    /// objects per room, free bodies that stayed put, deep contacts, fill and run times.
+    Fill {
+        /// none, furnished or cluttered.
+        #[arg(long, default_value = "cluttered")]
+        level: String,
+        /// Seeds per room (0..N).
+        #[arg(long, default_value_t = 2)]
+        seeds: u64,
+        /// Rooms (prompts) instead of the six of issue 21, comma-separated.
+        #[arg(long, value_delimiter = ',')]
+        rooms: Vec<String>,
+        #[arg(long)]
+        json: bool,
+    },
     /// Every catalog category generated at seeds 0..N: median and p95 per category.
     Assets {
         /// Seeds per category.
@@ -153,6 +168,7 @@ pub(crate) fn run(c: BenchCommand) -> Result<u8, Failure> {
         BenchCommand::Server(b) => crate::bench_server::run(b),
         BenchCommand::Scenes { suite, prompt, seeds, repeat, json } => scenes(suite, prompt, seeds, repeat, json),
         BenchCommand::Assets { seeds, only, json } => assets(seeds, &only, json),
+        BenchCommand::Fill { level, seeds, rooms, json } => crate::bench_fill::run(&level, seeds, &rooms, json),
         BenchCommand::Cad { suite, workers, latency_repeat, writer, llm_config, json } => {
             let writer = match writer.as_str() {
                 "template" => crate::bench_cad::Writer::Template,

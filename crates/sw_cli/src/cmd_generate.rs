@@ -46,9 +46,20 @@ pub(crate) struct GenerateArgs {
     /// collision pairs: no cylinder–box; see ARCHITECTURE.md).
     #[arg(long, default_value = "native", value_parser = crate::cmd_dataset::parse_physics)]
     physics: sw_pipeline::PhysicsTarget,
+    /// Add furniture and small things after the stated objects are placed, without
+    /// moving them: `none`, `furnished` (the furniture the room's kind is used with) or
+    /// `cluttered` (furnished, with things on every surface). Default: the prompt's own
+    /// words ("cluttered", "lived-in", "furnished", "realistic"), else `none`.
+    #[arg(long, value_parser = parse_fill)]
+    fill: Option<sw_pipeline::FillLevel>,
     /// Print one JSON document instead of progress and a summary.
     #[arg(long)]
     json: bool,
+}
+
+fn parse_fill(s: &str) -> Result<sw_pipeline::FillLevel, String> {
+    sw_pipeline::FillLevel::from_name(s)
+        .ok_or_else(|| format!("unknown fill '{s}' (one of: {})", sw_pipeline::FillLevel::NAMES.join(", ")))
 }
 
 /// Progress output: spinners on a terminal, plain lines otherwise, nothing for --json.
@@ -124,6 +135,7 @@ pub(crate) fn run(a: GenerateArgs) -> Result<u8, Failure> {
         anomaly,
         cancel: None,
         physics: a.physics,
+        fill: a.fill,
     };
     if let Some(n) = a.variations {
         return run_variations(&prompt, &a.out, n, &opts, a.json);

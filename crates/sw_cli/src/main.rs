@@ -4,6 +4,7 @@
 //! that failed verification.
 
 mod bench_cad;
+mod bench_fill;
 mod bench_index;
 mod bench_llm;
 mod bench_llm_real;

@@ -386,6 +386,7 @@ fn finish(ctx: Ctx<'_>, size: Dims, door: DoorLayout) -> AttemptResult {
                 sw_geom::MassModel::Static => None,
             },
             asset_seed: o.asset.seed,
+            added: false,
         });
     }
     for (group, (requested, placed, category)) in per_group {

@@ -12,6 +12,7 @@
 mod anomaly;
 mod attempt;
 mod candidates;
+pub mod fill;
 mod floor;
 mod formation;
 mod frames;

@@ -19,6 +19,7 @@ fn object(name: &str, category: &str, pos: [f64; 3], yaw: f64, support: Support,
         movable,
         mass: None,
         asset_seed: 1,
+        added: false,
     }
 }
 

@@ -516,6 +516,7 @@ pub(crate) fn placed_stub(f: &ForgedObject) -> PlacedObject {
             sw_geom::MassModel::Static => None,
         },
         asset_seed: f.asset.seed,
+        added: false,
     }
 }
 

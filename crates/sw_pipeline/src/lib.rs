@@ -12,11 +12,13 @@ mod edit;
 mod edit_ops;
 mod edit_pose;
 mod edit_work;
+mod fill;
 mod forge;
 mod forge_source;
 mod llm_generate;
 mod loads;
 pub mod manifest;
+pub mod open_vocab;
 mod package;
 mod parts;
 mod physics_budget;
@@ -53,6 +55,7 @@ pub use llm_generate::{LlmRun, Structure, generate_with_llm, plan_with_llm, rela
 pub use package::{OutputError, discard_staged_packages, validate_dir};
 pub use refine::{MAX_TURNS as REFINE_MAX_TURNS, Refined, Refiner, Turn};
 pub use robot_facts::measure as measure_robot;
+pub use sw_layout::fill::FillLevel;
 pub use sw_mjcf::PhysicsTarget;
 pub use variations::{generate_variations, structural_difference};
 
@@ -75,6 +78,9 @@ pub struct Options {
     /// The simulator the package is written for (`--physics`): native MuJoCo, or MuJoCo
     /// XLA's collision pairs (`sw_mjcf::physics`).
     pub physics: PhysicsTarget,
+    /// Furnish and clutter the room after the stated objects are placed (`--fill`);
+    /// `None` takes the prompt's own words ("cluttered", "lived-in"), else no fill.
+    pub fill: Option<FillLevel>,
 }
 
 impl Default for Options {
@@ -87,6 +93,7 @@ impl Default for Options {
             anomaly: None,
             cancel: None,
             physics: PhysicsTarget::Native,
+            fill: None,
         }
     }
 }
@@ -309,11 +316,18 @@ pub(crate) fn run_from_plan(
 
     // L2
     let t = stage(Stage::Forge, on_event);
+    let mut plan = plan;
     let mut forged = {
         let _s = info_span!("stage", stage = "forge").entered();
         match prepared.forge {
             Some(f) => f(&plan),
-            None => forge(&plan, opts.seed),
+            None => {
+                // Nouns the catalog lacks: a kind of a category, or a proxy of their kind.
+                let noted = open_vocab::resolve_unknown_nouns(&mut plan);
+                let mut forged = forge(&plan, opts.seed);
+                forged.warnings.splice(0..0, noted);
+                forged
+            }
         }
     };
     for o in &forged.objects {
@@ -369,6 +383,7 @@ pub(crate) fn run_from_plan(
                 layout = candidate;
             }
         }
+        fill::apply(&mut plan, &mut layout, &mut forged, opts);
         if let Some(a) = &plan.anomaly {
             layout = lay_out(&plan, &forged, opts.seed, Some((a, &mut layout)), &BTreeMap::new());
         }
@@ -464,6 +479,7 @@ pub(crate) fn run_from_plan(
                 // Counted in the layout's time; the events say it as a note above.
                 let t = Instant::now();
                 layout = lay_out(&plan, &forged, opts.seed, None, &max_layers);
+                fill::apply(&mut plan, &mut layout, &mut forged, opts);
                 if let Some(x) = timings.stages.iter_mut().find(|x| x.stage == Stage::Layout) {
                     x.ms += t.elapsed().as_secs_f64() * 1000.0;
                 }
@@ -528,6 +544,7 @@ fn lay_out(
         objects: forged
             .objects
             .iter()
+            .filter(|o| o.group != sw_layout::fill::FILL_GROUP)
             .map(|o| sw_layout::ObjectItem {
                 name: o.name.clone(),
                 group: o.group.clone(),

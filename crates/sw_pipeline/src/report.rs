@@ -226,6 +226,7 @@ pub(crate) fn assemble(
         objects_requested: plan.object_count(),
         objects_placed: placed,
         robots: layout.robots.iter().map(|r| r.name.clone()).collect(),
+        objects_added: layout.objects.iter().filter(|o| o.added).map(|o| o.name.clone()).collect(),
     };
     let mut report = Report::new(&plan.prompt, seed, summary);
     report.not_understood = plan.understanding.not_understood.clone();

@@ -91,6 +91,9 @@ pub struct PlacedObject {
     pub mass: Option<f64>,
     /// The generator seed of the asset (reproducible from category, params and seed).
     pub asset_seed: u64,
+    /// Added by `--fill` (furnishing and clutter), not asked for by the prompt.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub added: bool,
 }
 
 /// What an object rests on.

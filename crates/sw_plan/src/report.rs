@@ -138,6 +138,9 @@ pub struct SceneSummary {
     pub objects_requested: u32,
     pub objects_placed: u32,
     pub robots: Vec<String>,
+    /// Objects `--fill` added (marked `added` in layout.json), by name.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub objects_added: Vec<String>,
 }
 
 /// MuJoCo's verdict on the package.

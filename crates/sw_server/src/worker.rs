@@ -390,6 +390,7 @@ fn options(o: &Value, seed: u64) -> Options {
         anomaly: o.get("anomaly").and_then(|a| serde_json::from_value(a.clone()).ok()),
         cancel: None,
         physics: o["physics"].as_str().and_then(sw_pipeline::PhysicsTarget::parse).unwrap_or_default(),
+        fill: None,
     }
 }
 

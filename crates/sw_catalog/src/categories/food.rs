@@ -139,7 +139,7 @@ fruit!(
     PEACH,
     "peach",
     "peach",
-    ["nectarine", "plum", "apricot"],
+    ["nectarine", "flat peach", "donut peach"],
     "a round fuzzy peach",
     0.065,
     0.062,
@@ -199,6 +199,205 @@ fruit!(
     "Melons: cantaloupe 15–18 cm, small watermelons 20–25 cm."
 );
 
+// Mangoes: 9–11 cm across, 12–14 cm long (standing 8 × 8 × 12 cm).
+fruit!(
+    MANGO,
+    "mango",
+    "mango",
+    ["papaya", "avocado"],
+    "an oval mango",
+    0.085,
+    0.11,
+    build_mango,
+    [[0.0, 0.0], [0.35, 0.0], [0.85, 0.15], [1.0, 0.45], [0.85, 0.8], [0.35, 0.97], [0.0, 1.0]],
+    &[[0.95, 0.65, 0.15, 1.0], [0.55, 0.7, 0.2, 1.0], [0.25, 0.35, 0.15, 1.0]],
+    STALK,
+    950.0,
+    "Mangoes: 9–11 cm across, 12–14 cm long."
+);
+// Kiwi fruit: 5 cm across, 6–7 cm long.
+fruit!(
+    KIWI,
+    "kiwi",
+    "kiwi fruit",
+    ["kiwifruit", "fig", "passion fruit"],
+    "a small oval brown kiwi fruit",
+    0.052,
+    0.065,
+    build_kiwi,
+    bulb(0.3, 0.5, 0.25),
+    &[[0.55, 0.4, 0.22, 1.0], [0.45, 0.33, 0.2, 1.0]],
+    STALK,
+    1000.0,
+    "Kiwi fruit: 5 cm across, 6–7 cm long."
+);
+// Pumpkins: 20–30 cm across, 15–25 cm tall.
+fruit!(
+    PUMPKIN,
+    "pumpkin",
+    "pumpkin",
+    ["squash", "butternut squash", "gourd", "jack-o'-lantern"],
+    "a round orange pumpkin with a stalk",
+    0.26,
+    0.2,
+    build_pumpkin,
+    bulb(0.4, 0.45, 0.2),
+    &[[0.95, 0.5, 0.1, 1.0], [0.85, 0.45, 0.12, 1.0], [0.9, 0.75, 0.45, 1.0]],
+    STALK,
+    400.0,
+    "Pumpkins: 20–30 cm across, 15–25 cm tall."
+);
+// Cauliflowers and broccoli heads: 12–18 cm across, 10–15 cm tall.
+fruit!(
+    CAULIFLOWER,
+    "cauliflower",
+    "cauliflower",
+    ["broccoli", "head of broccoli", "cabbage", "lettuce", "iceberg lettuce", "head of lettuce"],
+    "a round head of cauliflower, broccoli or lettuce",
+    0.15,
+    0.13,
+    build_cauliflower,
+    bulb(0.4, 0.35, 0.3),
+    &[[0.95, 0.93, 0.85, 1.0], [0.25, 0.5, 0.2, 1.0], [0.55, 0.78, 0.35, 1.0]],
+    LEAF,
+    400.0,
+    "Cauliflower and broccoli heads, lettuces: 12–18 cm across, 10–15 cm tall."
+);
+// Bell peppers: 7–9 cm across, 8–10 cm tall.
+fruit!(
+    BELL_PEPPER,
+    "bell_pepper",
+    "bell pepper",
+    ["capsicum", "sweet pepper", "red pepper", "green pepper", "pepper"],
+    "a bell pepper",
+    0.08,
+    0.09,
+    build_bell_pepper,
+    [[0.0, 0.0], [0.5, 0.0], [0.9, 0.1], [1.0, 0.5], [0.9, 0.88], [0.3, 0.95], [0.0, 0.92]],
+    &[[0.85, 0.1, 0.08, 1.0], [0.2, 0.55, 0.2, 1.0], [0.95, 0.8, 0.1, 1.0], [0.95, 0.5, 0.1, 1.0]],
+    LEAF,
+    500.0,
+    "Bell peppers: 7–9 cm across, 8–10 cm tall."
+);
+// Garlic bulbs: 5–6 cm across, 4–5 cm tall.
+fruit!(
+    GARLIC,
+    "garlic",
+    "head of garlic",
+    ["garlic bulb", "bulb of garlic", "garlic clove"],
+    "a head of garlic",
+    0.055,
+    0.048,
+    build_garlic,
+    [[0.0, 0.0], [0.4, 0.0], [0.9, 0.15], [1.0, 0.4], [0.7, 0.75], [0.2, 0.92], [0.0, 1.0]],
+    &[[0.95, 0.93, 0.88, 1.0], [0.9, 0.85, 0.85, 1.0]],
+    [0.8, 0.75, 0.6, 1.0],
+    600.0,
+    "Garlic bulbs: 5–6 cm across, 4–5 cm tall."
+);
+// Pineapples: 12–15 cm across, 30 cm tall with the crown.
+fruit!(
+    PINEAPPLE,
+    "pineapple",
+    "pineapple",
+    ["ananas"],
+    "a pineapple with a leafy crown",
+    0.13,
+    0.3,
+    build_pineapple,
+    [[0.0, 0.0], [0.6, 0.0], [0.95, 0.12], [1.0, 0.35], [0.8, 0.6], [0.3, 0.68], [0.5, 0.85], [0.15, 1.0], [0.0, 1.0]],
+    &[[0.8, 0.6, 0.2, 1.0], [0.7, 0.55, 0.2, 1.0]],
+    LEAF,
+    500.0,
+    "Pineapples: 12–15 cm across, 28–32 cm tall with the crown."
+);
+// Strawberries 3 cm; a punnet of them: 14 × 9 × 6 cm.
+fruit!(
+    GRAPES,
+    "grapes",
+    "bunch of grapes",
+    ["grape", "cherries", "strawberries", "punnet of strawberries", "berries", "blueberries"],
+    "a bunch of grapes or a handful of berries",
+    0.12,
+    0.08,
+    build_grapes,
+    bulb(0.45, 0.4, 0.35),
+    &[[0.45, 0.15, 0.35, 1.0], [0.6, 0.8, 0.3, 1.0], [0.8, 0.1, 0.15, 1.0]],
+    STALK,
+    600.0,
+    "A bunch of grapes lying down: 12–18 cm long, 8–10 cm high; a punnet of berries 14 × 9 × 6 cm."
+);
+
+/// A long vegetable lying down: tapering ends around a round body along X.
+fn long_veg(p: &Params, rng: &mut Rng, b: &mut AssetBuilder, skins: &[[f32; 4]]) -> f64 {
+    let (w, d, h) = whd(p);
+    let skin = b.material("skin", pick(rng, skins), true);
+    let tip = b.material("ends", [0.55, 0.5, 0.25, 1.0], false);
+    let end = w * 0.1;
+    long_item(
+        b,
+        &[
+            Seg {
+                x0: -w / 2.0,
+                x1: -w / 2.0 + end + 0.002,
+                width: d * 0.6,
+                height: h * 0.6,
+                round: true,
+                material: tip,
+            },
+            Seg { x0: -w / 2.0 + end, x1: w / 2.0 - end, width: d, height: h, round: true, material: skin },
+            Seg { x0: w / 2.0 - end - 0.002, x1: w / 2.0, width: d * 0.6, height: h * 0.6, round: true, material: tip },
+        ],
+    );
+    (w * d * h * 700.0).max(0.05)
+}
+
+pub(crate) const CUCUMBER: Category = def(
+    "cucumber",
+    "cucumber",
+    &["courgette", "zucchini", "marrow", "aubergine", "eggplant", "leek"],
+    PACKAGE,
+    "a long green cucumber or courgette lying down",
+    &["vegetable", "produce", "food"],
+    Kind::Food,
+    PlacementKind::OnSurface,
+    true,
+    // Cucumbers 25–30 cm, courgettes 18–22 cm, 4–5 cm across.
+    &[
+        ParamDef::new("width", 0.24, 0.14, 0.35, 0.1, "length"),
+        ParamDef::new("depth", 0.045, 0.03, 0.08, 0.08, "diameter"),
+        ParamDef::new("height", 0.045, 0.03, 0.08, 0.08, "diameter, lying"),
+    ],
+    build_cucumber,
+);
+
+fn build_cucumber(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    long_veg(p, rng, b, &[[0.2, 0.45, 0.15, 1.0], [0.3, 0.55, 0.2, 1.0], [0.3, 0.12, 0.3, 1.0]])
+}
+
+pub(crate) const CORN_COB: Category = def(
+    "corn_cob",
+    "corn on the cob",
+    &["ear of corn", "sweetcorn", "sweet corn", "maize"],
+    PACKAGE,
+    "a yellow ear of sweetcorn lying down",
+    &["vegetable", "produce", "food"],
+    Kind::Food,
+    PlacementKind::OnSurface,
+    true,
+    // Sweetcorn cobs: 17–22 cm long, 4.5–5 cm across.
+    &[
+        ParamDef::new("width", 0.19, 0.12, 0.25, 0.08, "length"),
+        ParamDef::new("depth", 0.05, 0.035, 0.065, 0.06, "diameter"),
+        ParamDef::new("height", 0.05, 0.035, 0.065, 0.06, "diameter, lying"),
+    ],
+    build_corn_cob,
+);
+
+fn build_corn_cob(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    long_veg(p, rng, b, &[[0.98, 0.82, 0.25, 1.0], [0.95, 0.75, 0.2, 1.0]])
+}
+
 pub(crate) const POTATO: Category = def(
     "potato",
     "potato",
@@ -240,10 +439,10 @@ pub(crate) const BANANA: Category = def(
     Kind::Food,
     PlacementKind::OnSurface,
     true,
-    // YCB banana: 19 × 4 × 3.6 cm along its curve; 17–22 cm long.
+    // YCB banana: 19 cm tip to tip, 3.6 cm thick, its curve 6–7 cm across; 17–22 cm long.
     &[
         ParamDef::new("width", 0.19, 0.13, 0.24, 0.08, "tip to tip"),
-        ParamDef::new("depth", 0.05, 0.035, 0.07, 0.08, "across the curve"),
+        ParamDef::new("depth", 0.065, 0.04, 0.09, 0.08, "across the curve"),
         ParamDef::new("height", 0.037, 0.028, 0.045, 0.06, "thickness lying"),
     ],
     build_banana,

@@ -29,6 +29,7 @@ mod robot_bases;
 mod safety;
 mod shapes;
 mod shop;
+mod small_things;
 mod stationery;
 mod storage;
 mod tableware;
@@ -176,6 +177,16 @@ pub(crate) static ALL: &[Category] = &[
     food::TOMATO,
     food::ONION,
     food::MELON,
+    food::MANGO,
+    food::KIWI,
+    food::PUMPKIN,
+    food::CAULIFLOWER,
+    food::BELL_PEPPER,
+    food::GARLIC,
+    food::PINEAPPLE,
+    food::GRAPES,
+    food::CUCUMBER,
+    food::CORN_COB,
     food::POTATO,
     food::BANANA,
     food::CARROT,
@@ -332,4 +343,16 @@ pub(crate) static ALL: &[Category] = &[
     toys::STORAGE_BOX,
     toys::SPRAY_BOTTLE,
     toys::KEYS,
+    small_things::MAGAZINE,
+    small_things::ENVELOPE,
+    small_things::SAUCER,
+    small_things::SPONGE,
+    small_things::SOAP_BAR,
+    small_things::TOOTHPASTE,
+    small_things::ERASER,
+    small_things::HAIRBRUSH,
+    small_things::VACUUM_FLASK,
+    small_things::CAMERA,
+    small_things::PADLOCK,
+    small_things::MATTRESS,
 ];

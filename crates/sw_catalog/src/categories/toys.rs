@@ -571,7 +571,7 @@ fn build_wallet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const HANDBAG: Category = def(
     "handbag",
     "handbag",
-    &["hand bag", "tote bag", "shoulder bag", "shopping bag", "carrier bag", "bag", "messenger bag"],
+    &["hand bag", "tote bag", "shoulder bag", "shopping bag", "carrier bag", "messenger bag"],
     CARRIED,
     "a handbag standing upright with two handles",
     &["bag", "container", "accessory"],
