@@ -323,7 +323,10 @@ impl Phrases<'_> {
     /// a participle ("leaving") or a past form ("placed").
     fn can_be_noun(&self, i: usize) -> bool {
         let w = self.word(i);
-        !(w.ends_with("ly") || w.ends_with("ing") || (w.ends_with("ed") && w.len() > 4))
+        // "-ly" is an adverb ("neatly") unless a noun follows it ("an assembly cell", "a
+        // supply cart").
+        let adverb = w.ends_with("ly") && self.lookup(i + 1, is_head).is_none();
+        !(adverb || w.ends_with("ing") || (w.ends_with("ed") && w.len() > 4))
     }
 
     /// A word that only modifies the noun after it: a participle or an adjective the
@@ -642,6 +645,9 @@ impl Phrases<'_> {
                 let tail_end = nouns.last().map_or(0, Noun::end);
                 let modifier_noun = match &nouns[k] {
                     Noun::Known(Meaning::Room(_) | Meaning::RoomWord | Meaning::RoomAisle(_), ..) => true,
+                    // "a robot dispensing system", "a robot lawnmower": the generic word names
+                    // a kind of machine, not a robot of the registry.
+                    Noun::Known(Meaning::Robot(w), s, l) if !w.exact && self.word(s + l - 1) == "robot" => true,
                     // "a dock leveller", "a wall clock", "a floor lamp".
                     Noun::Place(_, s, l) if singular(self.word(s + l - 1)) == self.word(s + l - 1) => true,
                     Noun::Known(_, s, l) | Noun::Place(_, s, l) => {
@@ -661,6 +667,14 @@ impl Phrases<'_> {
                 {
                     return Some((Head::Known(m.clone()), *s, *l, nouns[..k - 1].to_vec()));
                 }
+            }
+            // "a robot picks boxes": a robot before an object is the subject of a verb, not a
+            // modifier of the object (a robot modifies rooms: "a robot assembly cell").
+            if matches!(nouns[k], Noun::Known(Meaning::Category(_), ..))
+                && let Some(r) = nouns[..k].iter().position(|n| matches!(n, Noun::Known(Meaning::Robot(_), ..)))
+                && let Noun::Known(m, s, l) = &nouns[r]
+            {
+                return Some((Head::Known(m.clone()), *s, *l, nouns[..r].to_vec()));
             }
             // "a Kinova arm", "the UR5e robot": the model, not the generic word after it.
             if let (Noun::Known(Meaning::Robot(generic), ..), Some(Noun::Known(m @ Meaning::Robot(_), s, _))) =

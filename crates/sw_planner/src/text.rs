@@ -167,6 +167,18 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
             i = j;
             continue;
         }
+        // "w/ a fridge": with.
+        if c == '/'
+            && let Some(last) = out.last_mut()
+            && last.kind == TokenKind::Word
+            && last.norm == "w"
+            && last.end == start
+        {
+            last.norm = "with".into();
+            last.end = end_of(i + 1);
+            i += 1;
+            continue;
+        }
         let kind = match c {
             '×' | '*' => TokenKind::Times,
             ',' => TokenKind::Comma,

@@ -234,6 +234,9 @@ fn meaning_of(p: &ScenePlan, with_room: bool) -> Meaning {
             );
         }
     }
+    for r in &p.robots {
+        *m.counts.entry(format!("robot:{}", r.model)).or_insert(0) += r.count;
+    }
     for r in &p.relations {
         m.relations.insert(relation_key(&r.subject, &r.kind, &name_of));
     }
@@ -780,6 +783,53 @@ fn ends(rng: &mut Rng) -> Case {
     Case { prompt, want, with_room: false }
 }
 
+/// A noun that only modifies another is no object: "a robot assembly cell with …" has no
+/// robot, "a storage room with …" no storage, "the warehouse floor" no warehouse object.
+fn modifier_nouns(rng: &mut Rng) -> Case {
+    let f = *rng.pick(&nouns(Role::Floor));
+    let s = *rng.pick(&nouns(Role::Surface));
+    let body = format!("{} {} and {} {}", article(f.forms[0]), f.forms[0], article(s.forms[0]), s.forms[0]);
+    let prompt = match rng.below(4) {
+        0 => format!("a robot assembly cell with {body}"),
+        1 => format!("A robot welding line: {body}."),
+        2 => format!("{body} on the warehouse floor"),
+        _ => format!("a robot test cell with {body}"),
+    };
+    let mut want = Meaning::default();
+    want.counts.insert(f.cat.into(), 1);
+    want.counts.insert(s.cat.into(), 1);
+    Case { prompt, want, with_room: false }
+}
+
+/// A robot named as the subject of a verb, its model in brackets, a robot that is a
+/// machine: "a Panda waits next to a table", "a robot arm (UR10e) next to a table", "a
+/// robot vacuum cleaner".
+fn robots_named(rng: &mut Rng) -> Case {
+    let s = *rng.pick(&nouns(Role::Surface));
+    let sf = s.forms[0];
+    let mut want = Meaning::default();
+    want.counts.insert(s.cat.into(), 1);
+    let prompt = match rng.below(3) {
+        0 => {
+            want.counts.insert("robot:ur10e".into(), 1);
+            want.relations.insert(rel("ur10e", "next_to", Some(s.cat)));
+            want.relations.insert(rel("ur10e", "reach", Some(s.cat)));
+            format!("a robot arm (UR10e) next to {} {sf}", article(sf))
+        }
+        1 => {
+            want.counts.insert("robot:panda".into(), 1);
+            want.relations.insert(rel("panda", "next_to", Some(s.cat)));
+            want.relations.insert(rel("panda", "reach", Some(s.cat)));
+            format!("a Panda waits next to {} {sf}", article(sf))
+        }
+        _ => {
+            want.counts.insert("robot:turtlebot3".into(), 1);
+            format!("a robot vacuum cleaner and {} {sf}", article(sf))
+        }
+    };
+    Case { prompt, want, with_room: false }
+}
+
 // ------------------------------------------------------------------ the test
 
 /// Cases per family; each plans in well under a millisecond.
@@ -806,6 +856,8 @@ fn every_wording_of_a_scene_gives_the_same_plan() {
         ("typos", typos),
         ("imperial", imperial),
         ("ends", ends),
+        ("modifier_nouns", modifier_nouns),
+        ("robots_named", robots_named),
     ];
     let mut report = String::new();
     let mut total = 0;

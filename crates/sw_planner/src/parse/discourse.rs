@@ -80,7 +80,11 @@ impl Parser<'_> {
                     .map(singular)
                     .is_some_and(|last| last == head || (head.len() >= 4 && last.ends_with(head.as_str())))
             });
-            hit.then(|| g.id.clone())
+            // "each bunk" for "3 bunk beds": the word that made the phrase a kind.
+            let modifier = !hit
+                && head.len() >= 4
+                && g.phrase.to_lowercase().split_whitespace().rev().skip(1).any(|w| singular(w) == head);
+            (hit || modifier).then(|| g.id.clone())
         })
     }
 
