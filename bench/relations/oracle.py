@@ -64,7 +64,9 @@ def proxy(key: str, label: str, relations: list[dict[str, Any]]) -> dict[str, An
     A thing said to rest on or in something is a tabletop item; a thing others rest on is a
     low surface; anything else a floor object.
     """
-    rests = any(r["subject"] == key and r["relation"] in RESTING for r in relations)
+    rests = any(r["subject"] == key and r["relation"] in RESTING for r in relations) or any(
+        r.get("target") == key and r["relation"] == "each_with" and r.get("where") == "on" for r in relations
+    )
     carries = any(r.get("target") == key and r["relation"] in RESTING for r in relations)
     if rests:
         prior, size, movable = "tabletop item", (0.12, 0.12, 0.12), True
@@ -136,10 +138,10 @@ def to_plan(line: dict[str, Any], cats: set[str]) -> dict[str, Any]:
         if subj is None:
             continue
         if rel == "size":
-            o = next((o for o in objects if o["id"] == subj), None)
-            if o is None:
+            sized = next((x for x in objects if x["id"] == subj), None)
+            if sized is None:
                 continue
-            ex = o.setdefault("size", {}).setdefault("explicit", {})
+            ex = sized.setdefault("size", {}).setdefault("explicit", {})
             for k, (lo, hi) in r["dims"].items():
                 ex[k] = round((lo + hi) / 2.0, 4)
             continue

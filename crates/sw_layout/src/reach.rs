@@ -226,6 +226,8 @@ pub(crate) fn arms_for(ctx: &Ctx<'_>, idx: usize, item_group: &str) -> (Vec<([f6
         return (flanking, false);
     }
     let host = &ctx.input.objects[idx];
+    // The arms that work at this very instance (the one each is on or nearest): what
+    // rests on the group's other instances is theirs to reach, or nobody's.
     let at: Vec<([f64; 3], f64)> = ctx
         .input
         .robots
@@ -233,6 +235,7 @@ pub(crate) fn arms_for(ctx: &Ctx<'_>, idx: usize, item_group: &str) -> (Vec<([f6
         .enumerate()
         .filter(|(_, r)| work_group(ctx, r).as_deref() == Some(host.group.as_str()))
         .filter_map(|(ri, _)| placed(ri))
+        .filter(|(base, _)| work_instance(ctx, &host.group, *base) == Some(idx))
         .collect();
     (at, false)
 }

@@ -326,7 +326,7 @@ fn place_on_group_as(
             .collect();
         let pairs = if between { robot_pairs(ctx, &item_group) } else { Vec::new() };
         for si in usable {
-            let side = (want == Want::Side).then_some(k % 2 == 0);
+            let side = (want == Want::Side).then_some(k.is_multiple_of(2));
             if try_surface(ctx, idx, hi, si, &arms, all, (want == Want::Edge, side), &pairs) {
                 return true;
             }

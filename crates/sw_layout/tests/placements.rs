@@ -4,54 +4,17 @@
 //! here from the laid-out collision boxes (not the solver's own checks).
 
 use proptest::prelude::*;
-use sw_catalog::AssetRequest;
-use sw_geom::{Aabb, Asset, Pose};
-use sw_layout::{LayoutInput, ObjectItem, solve};
+use sw_geom::{Aabb, Pose};
 use sw_plan::{
     Dims, EndOf, LaidOutScene, ObjectPlan, PlacedObject, Relation, RelationKind, RoomKind, RoomPlan, ScenePlan,
     Support, Wall,
 };
 
-struct Forged {
-    plan: ScenePlan,
-    assets: Vec<(String, String, Asset, Vec<String>)>,
-}
-
-fn forge(plan: ScenePlan, seed: u64) -> Forged {
-    let mut assets = Vec::new();
-    let mut n = std::collections::BTreeMap::new();
-    for g in &plan.objects {
-        let cat = sw_catalog::find(&g.category).unwrap();
-        for k in 0..g.count {
-            let a = sw_catalog::generate(&AssetRequest::new(&g.category, seed ^ (u64::from(k) * 7919))).unwrap();
-            let c = n.entry(g.category.clone()).or_insert(0);
-            *c += 1;
-            assets.push((
-                format!("{}_{c}", g.category),
-                g.id.clone(),
-                a,
-                cat.tags.iter().map(|t| t.to_string()).collect(),
-            ));
-        }
-    }
-    Forged { plan, assets }
-}
+mod common;
+use common::{Forged, forge};
 
 fn solve_forged(f: &Forged, seed: u64) -> LaidOutScene {
-    let objects = f
-        .assets
-        .iter()
-        .map(|(name, group, asset, tags)| ObjectItem {
-            name: name.clone(),
-            group: group.clone(),
-            category: asset.category.clone(),
-            label: asset.category.clone(),
-            asset,
-            tags: tags.clone(),
-            carries_robot: None,
-        })
-        .collect();
-    solve(&LayoutInput { plan: &f.plan, objects, robots: Vec::new(), seed, max_layers: Default::default() })
+    common::solve_forged(f, Vec::new(), seed)
 }
 
 fn plan(kind: RoomKind, size: Dims, groups: &[(&str, &str, u32)], rels: Vec<(&str, RelationKind)>) -> ScenePlan {

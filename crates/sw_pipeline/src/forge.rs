@@ -247,7 +247,12 @@ pub(crate) fn make(group: &ObjectPlan, k: u32, seed: u64) -> Result<(Asset, Vec<
 pub(crate) fn make_seeded(group: &ObjectPlan, s: u64) -> Result<(Asset, Vec<String>, String), CatalogError> {
     let color = group.color.as_ref().map(|c| c.rgba.map(|v| v as f32));
     if let Some(p) = &group.proxy {
-        let a = sw_catalog::proxy_asset(&p.label, [p.size.width, p.size.depth, p.size.height], p.movable, color, s);
+        // A stated size wins over the stand-in's prior.
+        let stated = group.size.explicit.axes(p.size.width >= p.size.depth);
+        let size = [p.size.width, p.size.depth, p.size.height];
+        let size: [f64; 3] =
+            std::array::from_fn(|i| stated[i].filter(|v| v.is_finite() && *v > 0.0).unwrap_or(size[i]));
+        let a = sw_catalog::proxy_asset(&p.label, size, p.movable, color, s);
         let mut tags = vec!["proxy".to_string()];
         if p.movable {
             tags.push("tabletop".into());
@@ -258,9 +263,10 @@ pub(crate) fn make_seeded(group: &ObjectPlan, s: u64) -> Result<(Asset, Vec<Stri
     let mut req = AssetRequest::new(cat.name, s);
     req.scale = scale_of(&group.size);
     req.color = color;
-    // A stated length goes to the category's longer side ("a 4.5 m conveyor").
+    // A stated length goes to the category's longer side ("a 4.5 m conveyor"); on a
+    // squarish thing (a 90 cm range) to its width across the front.
     let default = |n: &str| cat.param(n).map_or(0.0, |p| p.default);
-    let x_long = default("width") >= default("depth");
+    let x_long = default("width") >= 0.85 * default("depth");
     for (name, v) in ["width", "depth", "height"].into_iter().zip(group.size.explicit.axes(x_long)) {
         if let Some(v) = v
             && cat.param(name).is_some()

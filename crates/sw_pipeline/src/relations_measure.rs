@@ -352,7 +352,7 @@ fn cluster_near(subjects: &[Thing], targets: &[Thing], limit: f64, v: &mut Verdi
 }
 
 /// Which side of a target a point is on: 0 front, 1 right, 2 back, 3 left.
-fn side_of(t: &Thing, p: [f64; 2]) -> usize {
+pub(crate) fn side_of(t: &Thing, p: [f64; 2]) -> usize {
     let f = t.body.front();
     let sd = [f[1], -f[0]];
     let c = t.body.center();

@@ -13,6 +13,7 @@ use crate::relations_check::{
     CORNER, REST, Thing, Verdict, WALL, Written, center, dot, gap, half_along, inside, nearest_wall, site_under,
     wall_gap,
 };
+use crate::relations_measure::side_of;
 use crate::scene_geom::{BodyGeom, Site};
 
 /// A support this far or more below a thing's top is inside it (a cabinet level, a bin's floor), m.
@@ -183,23 +184,6 @@ pub(crate) fn on_edge_of(subjects: &[Thing], hosts: &[Thing], v: &mut Verdict) {
         }
     }
     v.set("edge_distance_m", worst);
-}
-
-/// The side of `t` a point is on, in its own frame: 0 front, 1 right, 2 back, 3 left.
-fn side_of(t: &Thing, p: [f64; 2]) -> usize {
-    let f = t.body.front();
-    let r = [f[1], -f[0]];
-    let c = t.body.center();
-    let d = [p[0] - c[0], p[1] - c[1]];
-    let a = dot(d, f) / half_along(&t.body.bounds, f).max(1e-6);
-    let b = dot(d, r) / half_along(&t.body.bounds, r).max(1e-6);
-    if a.abs() >= b.abs() {
-        if a >= 0.0 { 0 } else { 2 }
-    } else if b >= 0.0 {
-        1
-    } else {
-        3
-    }
 }
 
 pub(crate) fn on_each_side_of(subjects: &[Thing], targets: &[Thing], v: &mut Verdict) {
