@@ -351,7 +351,7 @@ pub(crate) fn rows_of(sizes: &[usize], m: u32, v: &mut Verdict) {
     let m = m as usize;
     let total: usize = sizes.iter().sum();
     let short = sizes.iter().filter(|k| **k != m).count();
-    if sizes.iter().any(|k| *k > m) || short > usize::from(m > 0 && total % m != 0) {
+    if sizes.iter().any(|k| *k > m) || short > usize::from(m > 0 && !total.is_multiple_of(m)) {
         v.fail(format!("rows of {sizes:?}, {m} each asked"));
     }
 }
