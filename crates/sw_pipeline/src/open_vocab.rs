@@ -162,16 +162,11 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
             }
         };
         let tied = |t: &[Tie]| -> Vec<usize> { (0..cands.len()).filter(|&i| t.contains(&cands[i].1)).collect() };
-        // Named alike: the nearest by meaning when it is close ("santoku knife" → chef's
-        // knife, not the table knife that is also "a knife").
-        if let Some((i, Some(s))) = best(&tied(&[Tie::Named, Tie::HeadNamed])) {
-            if s >= SIBLING_MIN {
-                return Resolution::Category {
-                    name: cands[i].0.name,
-                    score: Some(s),
-                    lexical: cands[i].1 == Tie::Named,
-                };
-            }
+        // Named alike: the nearest by meaning when it is close ("a deep fryer" → air fryer).
+        if let Some((i, Some(s))) = best(&tied(&[Tie::Named, Tie::HeadNamed]))
+            && s >= SIBLING_MIN
+        {
+            return Resolution::Category { name: cands[i].0.name, score: Some(s), lexical: cands[i].1 == Tie::Named };
         }
         // Named by the head itself: a kind of that category.
         if let Some((i, score)) = best(&tied(&[Tie::Named])) {

@@ -533,7 +533,7 @@ fn build_globe(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     round_solid(b, 0, [0.0, 0.0], 0.01, 0.024, zc - r + 0.01, stand);
     b.visual(Shape::Sphere { radius: r }, Pose::from_pos([0.0, 0.0, zc]), sea);
     for (x, y, z) in [(0.5, 0.3, 0.5), (-0.4, 0.5, 0.2), (0.2, -0.6, -0.3)] {
-        let n = (x * x + y * y + z * z) as f64;
+        let n: f64 = x * x + y * y + z * z;
         let k = r * 0.72 / n.sqrt();
         b.visual(Shape::Sphere { radius: r * 0.3 }, Pose::from_pos([x * k, y * k, zc + z * k]), land);
     }
