@@ -69,8 +69,40 @@ struct Outcome {
     /// Free-form: the largest extent is one a real object of the kind has.
     plausible: Option<bool>,
     roundtrip_ms: Option<f64>,
+    /// Refused by the writer with the words it could not read (not made, said why).
+    refused_with_words: bool,
+    /// The writer's own check of the executed part failed (not handed out).
+    own_check_failed: bool,
     #[serde(skip)]
     mesh: Option<Mesh>,
+}
+
+/// What a prompt came to, against its reference: the part made exactly (a closed solid,
+/// bounding box within 1 %, volume within 2 %); refused with the words it could not read;
+/// made wrong (handed out, but not the part the reference is); or failed otherwise (the
+/// code did not run, the mesh is no solid, or the part failed its own check).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+enum Verdict {
+    Exact,
+    Refused,
+    Wrong,
+    Failed,
+}
+
+impl Outcome {
+    /// The verdict, where the prompt has a reference.
+    fn verdict(&self) -> Option<Verdict> {
+        if self.refused_with_words {
+            return Some(Verdict::Refused);
+        }
+        let pass = self.pass?;
+        Some(match (self.executed, pass, self.own_check_failed) {
+            (true, true, false) => Verdict::Exact,
+            (true, false, false) => Verdict::Wrong,
+            _ => Verdict::Failed,
+        })
+    }
 }
 
 #[derive(Debug, Default, Serialize)]
@@ -89,6 +121,11 @@ struct TierSummary {
     median_chamfer_rel: Option<f64>,
     with_plausibility: usize,
     plausible: usize,
+    /// Against a reference: exact, refused with the words, made wrong, failed otherwise.
+    exact: usize,
+    refused_with_words: usize,
+    wrong: usize,
+    failed: usize,
     failures: BTreeMap<String, usize>,
 }
 
@@ -189,6 +226,8 @@ fn blank(p: &Prompt) -> Outcome {
         chamfer_rel: None,
         plausible: None,
         roundtrip_ms: None,
+        refused_with_words: false,
+        own_check_failed: false,
         mesh: None,
     }
 }
@@ -232,6 +271,7 @@ fn one(runner: &CadRunner, p: &Prompt) -> Outcome {
         }
         Err(e) => {
             o.failure = Some(FailureKind::Writer);
+            o.refused_with_words = matches!(e, synth::SynthError::Unread { .. });
             o.message = Some(e.to_string());
             return o;
         }
@@ -249,6 +289,7 @@ fn one(runner: &CadRunner, p: &Prompt) -> Outcome {
         && let Err(f) = validate::validate(&mesh, &s.target())
     {
         o.failure = Some(f.kind);
+        o.own_check_failed = true;
         o.message = Some(format!("against its own promise: {}", f.message));
     }
     o.size_mm = Some(mesh.bounds().size());
@@ -353,6 +394,13 @@ fn summarize<'a>(outcomes: impl Iterator<Item = &'a Outcome>) -> TierSummary {
         if let Some(p) = o.plausible {
             s.with_plausibility += 1;
             s.plausible += usize::from(p);
+        }
+        match o.verdict() {
+            Some(Verdict::Exact) => s.exact += 1,
+            Some(Verdict::Refused) => s.refused_with_words += 1,
+            Some(Verdict::Wrong) => s.wrong += 1,
+            Some(Verdict::Failed) => s.failed += 1,
+            None => {}
         }
     }
     s.with_chamfer = cd.len();
@@ -578,6 +626,23 @@ fn render(b: &CadBench, missing_refs: usize) -> String {
         line(name, t);
     }
     line("all", &b.all);
+    if b.all.with_reference > 0 || b.all.refused_with_words > 0 {
+        s.push_str("\ntier      exact  refused with the words  wrong  failed otherwise\n");
+        let mut verdicts = |name: &str, t: &TierSummary| {
+            let of = t.exact + t.refused_with_words + t.wrong + t.failed;
+            s.push_str(&format!(
+                "{name:<9} {:>5}  {:>22}  {:>5}  {:>16}\n",
+                format!("{} ({})", t.exact, pct(t.exact, of)),
+                t.refused_with_words,
+                t.wrong,
+                t.failed
+            ));
+        };
+        for (name, t) in &b.tiers {
+            verdicts(name, t);
+        }
+        verdicts("all", &b.all);
+    }
     if let Some(l) = &b.part_latency {
         s.push_str(&format!(
             "\nparts in the run: median {:.0} ms · p95 {:.0} ms · min {:.0} ms over {} jobs ({} workers)\n",
