@@ -73,6 +73,12 @@ struct Outcome {
     refused_with_words: bool,
     /// The writer's own check of the executed part failed (not handed out).
     own_check_failed: bool,
+    /// The manner the prompt is written in, where the suite says.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    style: Option<String>,
+    /// A prompt that must be refused, quoting some of these words.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    refuse_words: Option<String>,
     #[serde(skip)]
     mesh: Option<Mesh>,
 }
@@ -91,8 +97,19 @@ enum Verdict {
 }
 
 impl Outcome {
-    /// The verdict, where the prompt has a reference.
+    /// The verdict, where the prompt has a reference or must be refused. A prompt that
+    /// must be refused passes when the refusal quotes some of its words, and any part made
+    /// for it is a wrong one.
     fn verdict(&self) -> Option<Verdict> {
+        if let Some(words) = &self.refuse_words {
+            return Some(if self.made_by.is_some() {
+                Verdict::Wrong
+            } else if self.refused_with_words && quotes(self.message.as_deref().unwrap_or(""), words) {
+                Verdict::Refused
+            } else {
+                Verdict::Failed
+            });
+        }
         if self.refused_with_words {
             return Some(Verdict::Refused);
         }
@@ -154,6 +171,12 @@ struct CadBench {
     wall_s: f64,
     parts_per_s: f64,
     tiers: BTreeMap<String, TierSummary>,
+    /// By the manner prompts are written in, and by what they expect (made or refused),
+    /// where the suite says.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    styles: BTreeMap<String, TierSummary>,
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    expected: BTreeMap<String, TierSummary>,
     all: TierSummary,
     /// Every part that ran code, in the suite run (parallel workers).
     part_latency: Option<Latency>,
@@ -196,12 +219,19 @@ fn load(suite: &str) -> Result<Suite, Failure> {
             if prompts.is_empty() {
                 return Err(Failure::input(format!("{path}: no prompts (id<TAB>tier<TAB>prompt per line)")));
             }
-            // Beside it: STEM.refs.tsv, STEM.ref.py, STEM.sizes.tsv.
+            // Beside it: STEM.refs.tsv (else refs.tsv in its folder), STEM.ref.py, STEM.sizes.tsv.
             let side = |ext: &str| fs_err::read_to_string(p.with_extension(ext)).unwrap_or_default();
+            let mut refs = side("refs.tsv");
+            if refs.trim().is_empty() {
+                refs = std::fs::read_to_string(p.with_file_name("refs.tsv")).unwrap_or_default();
+            }
+            // Only the references of this file's prompts.
+            let ids: std::collections::BTreeSet<&str> = prompts.iter().map(|q| q.id.as_str()).collect();
+            let refs = parse_refs(&refs).into_iter().filter(|(id, _)| ids.contains(id.as_str())).collect();
             Ok(Suite {
                 name: path.into(),
                 prompts,
-                refs: parse_refs(&side("refs.tsv")),
+                refs,
                 programs: parse_programs(&side("ref.py")),
                 sizes: parse_sizes(&side("sizes.tsv")),
             })
@@ -213,6 +243,8 @@ fn blank(p: &Prompt) -> Outcome {
     Outcome {
         id: p.id.clone(),
         tier: p.tier.clone(),
+        style: p.style.clone(),
+        refuse_words: p.refuse_words.clone(),
         made_by: None,
         executed: false,
         retries: 0,
@@ -230,6 +262,21 @@ fn blank(p: &Prompt) -> Outcome {
         own_check_failed: false,
         mesh: None,
     }
+}
+
+/// Whether a refusal (`could not read "…": …`) quotes a word or number of `words`.
+fn quotes(message: &str, words: &str) -> bool {
+    const COMMON: &[&str] = &["a", "an", "the", "of", "with", "and", "mm", "in", "on", "to", "x"];
+    let quoted = message.split('"').nth(1).unwrap_or("");
+    let toks = |t: &str| -> Vec<String> {
+        t.to_lowercase()
+            .split(|c: char| !(c.is_alphanumeric() || c == '.' || c == '/'))
+            .map(|w| w.trim_matches('.').to_string())
+            .filter(|w| !w.is_empty() && !COMMON.contains(&w.as_str()))
+            .collect()
+    };
+    let want = toks(words);
+    toks(quoted).iter().any(|w| want.contains(w))
 }
 
 /// Runs code, retrying once when the runner (not the code) failed.
@@ -522,6 +569,18 @@ pub(crate) fn run(
         tiers.insert(t.clone(), summarize(outcomes.iter().filter(|o| &o.tier == t)));
     }
     let all = summarize(outcomes.iter());
+    let mut styles = BTreeMap::new();
+    let mut expected = BTreeMap::new();
+    if outcomes.iter().any(|o| o.style.is_some() || o.refuse_words.is_some()) {
+        let mut seen: Vec<String> = outcomes.iter().filter_map(|o| o.style.clone()).collect();
+        seen.sort();
+        seen.dedup();
+        for st in seen {
+            styles.insert(st.clone(), summarize(outcomes.iter().filter(|o| o.style.as_deref() == Some(st.as_str()))));
+        }
+        expected.insert("make".to_string(), summarize(outcomes.iter().filter(|o| o.refuse_words.is_none())));
+        expected.insert("refuse".to_string(), summarize(outcomes.iter().filter(|o| o.refuse_words.is_some())));
+    }
     let model_calls = model.as_ref().map(|w| {
         let calls = w.take_calls();
         ModelCalls {
@@ -542,6 +601,8 @@ pub(crate) fn run(
         wall_s,
         parts_per_s: outcomes.len() as f64 / wall_s.max(1e-9),
         tiers,
+        styles,
+        expected,
         all,
         part_latency,
         warm_latency,
@@ -627,21 +688,29 @@ fn render(b: &CadBench, missing_refs: usize) -> String {
     }
     line("all", &b.all);
     if b.all.with_reference > 0 || b.all.refused_with_words > 0 {
-        s.push_str("\ntier      exact  refused with the words  wrong  failed otherwise\n");
+        s.push_str(
+            "\nverdict      prompts         exact  refused with the words  wrong  failed otherwise\n",
+        );
         let mut verdicts = |name: &str, t: &TierSummary| {
             let of = t.exact + t.refused_with_words + t.wrong + t.failed;
             s.push_str(&format!(
-                "{name:<9} {:>5}  {:>22}  {:>5}  {:>16}\n",
+                "{name:<12} {of:>7}  {:>12}  {:>22}  {:>5}  {:>16}\n",
                 format!("{} ({})", t.exact, pct(t.exact, of)),
                 t.refused_with_words,
                 t.wrong,
                 t.failed
             ));
         };
-        for (name, t) in &b.tiers {
+        for (name, t) in b.tiers.iter().chain(&b.styles) {
             verdicts(name, t);
         }
+        for (name, t) in &b.expected {
+            verdicts(&format!("{name} rows"), t);
+        }
         verdicts("all", &b.all);
+        if b.expected.contains_key("refuse") {
+            s.push_str("(a row that must be refused counts under \"refused with the words\" when the refusal quotes its words)\n");
+        }
     }
     if let Some(l) = &b.part_latency {
         s.push_str(&format!(

@@ -13,11 +13,15 @@ use sw_geom::raster::{Camera, Image, Renderer};
 use crate::metrics::surface_chamfer;
 
 /// One prompt of a suite.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Prompt {
     pub id: String,
     pub tier: String,
     pub text: String,
+    /// The manner it is written in, where the suite says ("drawing", "inch" …).
+    pub style: Option<String>,
+    /// A prompt that must be refused: the words the refusal must quote (some of them).
+    pub refuse_words: Option<String>,
 }
 
 /// A reference's extents (mm, per axis as placed) and volume (mm³).
@@ -39,20 +43,58 @@ fn rows(text: &str) -> impl Iterator<Item = Vec<&str>> {
     text.lines().filter(|l| !l.trim().is_empty() && !l.starts_with('#')).map(|l| l.split('\t').map(str::trim).collect())
 }
 
+/// A suite's prompts: `id<TAB>tier<TAB>prompt` per line, or, after a header line naming
+/// its columns (`id  level  style  expected  description  refuse_words`), those columns.
 pub fn parse_suite(text: &str) -> Vec<Prompt> {
+    let header: Option<Vec<&str>> = text
+        .lines()
+        .find(|l| l.starts_with("id\t"))
+        .map(|l| l.split('\t').map(str::trim).collect());
+    let Some(h) = header else {
+        return rows(text)
+            .filter_map(|c| {
+                let (id, tier, text) = (c.first()?, c.get(1)?, c.get(2..)?.join("\t"));
+                Some(Prompt { id: (*id).into(), tier: (*tier).into(), text, ..Prompt::default() })
+            })
+            .collect();
+    };
+    let col = |names: &[&str]| h.iter().position(|x| names.contains(x));
+    let (tier, style, expected, text_at, words) = (
+        col(&["level", "tier"]),
+        col(&["style"]),
+        col(&["expected"]),
+        col(&["description", "prompt", "text"]),
+        col(&["refuse_words"]),
+    );
     rows(text)
+        .filter(|c| c.first() != Some(&"id"))
         .filter_map(|c| {
-            let (id, tier, text) = (c.first()?, c.get(1)?, c.get(2..)?.join("\t"));
-            Some(Prompt { id: (*id).into(), tier: (*tier).into(), text })
+            let get = |i: Option<usize>| i.and_then(|i| c.get(i)).map(|s| (*s).to_string());
+            let refuse = get(expected).is_some_and(|e| e == "refuse");
+            Some(Prompt {
+                id: get(Some(0))?,
+                tier: get(tier).unwrap_or_default(),
+                text: get(text_at)?,
+                style: get(style),
+                refuse_words: refuse.then(|| get(words).unwrap_or_default()),
+            })
         })
         .collect()
 }
 
+/// Reference extents and volumes: `id  x  y  z  volume`, or `id  x,y,z  volume` (a row
+/// whose size is `refuse` has no reference: the prompt must be refused).
 pub fn parse_refs(text: &str) -> BTreeMap<String, Reference> {
     rows(text)
         .filter_map(|c| {
-            let num = |i: usize| c.get(i).and_then(|s| s.parse::<f64>().ok());
-            Some(((*c.first()?).to_string(), Reference { size: [num(1)?, num(2)?, num(3)?], volume: num(4) }))
+            let num = |s: Option<&&str>| s.and_then(|s| s.parse::<f64>().ok());
+            let id = (*c.first()?).to_string();
+            if let Some(packed) = c.get(1).filter(|s| s.contains(',')) {
+                let v: Vec<f64> = packed.split(',').filter_map(|x| x.trim().parse().ok()).collect();
+                let [a, b, d] = v.as_slice() else { return None };
+                return Some((id, Reference { size: [*a, *b, *d], volume: num(c.get(2)) }));
+            }
+            Some((id, Reference { size: [num(c.get(1))?, num(c.get(2))?, num(c.get(3))?], volume: num(c.get(4)) }))
         })
         .collect()
 }

@@ -636,6 +636,15 @@ impl Doc {
                     quals.push("from-center".into());
                 }
             }
+            // "120 across", "45 inside", "50 outside": a diameter; "16 square": a side.
+            let role = match (role, after.first().map(|(_, w)| w.as_str()), after.get(1).map(|(_, w)| w.as_str())) {
+                (Role::Bare, Some("across"), next) if !matches!(next, Some("flat" | "corner")) => Role::Diameter,
+                (Role::Bare, Some("inside" | "outside"), _) => Role::Diameter,
+                (Role::Bare, Some("square"), next) if !next.is_some_and(|w| super::lexicon::noun(w).is_some()) => {
+                    Role::Side
+                }
+                (r, ..) => r,
+            };
             // "M4 clearance holes": the screw's clearance diameter; "a 95 mm bolt circle": the
             // circle's diameter.
             let role =
@@ -743,7 +752,8 @@ impl Doc {
             if group.len() >= 2 {
                 let len = group.len();
                 // "in a 100mm x 60mm rectangular pattern": the whole list is the pattern's.
-                if group.iter().any(|g| dims[*g].has("pattern")) {
+                // "on 120 x 70 centres": a spacing list places copies too.
+                if group.iter().any(|g| dims[*g].has("pattern") || dims[*g].role == Role::Spacing) {
                     for g in &group {
                         if !dims[*g].has("pattern") {
                             dims[*g].quals.push("pattern".into());

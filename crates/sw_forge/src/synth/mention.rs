@@ -10,7 +10,7 @@ use super::text::Tk;
 
 /// Words that may stand before a noun to say what it is for ("mounting holes", "gasket
 /// groove", "flight-controller holes"); they do not change its geometry.
-const LABELS: &[&str] = &[
+pub const LABELS: &[&str] = &[
     "motor",
     "mounting",
     "flight-controller",
@@ -430,6 +430,8 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                         && doc.word(k - 1).is_some_and(|w| super::doc::role_of(w).is_some())
                         && matches!(doc.toks[k - 2].kind, Tk::Num { unit: Some(_), .. })
                         && matches!(doc.toks.get(k + 1).map(|t| &t.kind), Some(Tk::Num { unit: Some(_), .. }))
+                        // Not across into another noun's phrase ("BLOCK 40 x 60 HIGH, Ø16 HOLE").
+                        && !(0..k).rev().take_while(|q| !doc.sym(*q, ',') && !doc.sym(*q, '.') && !doc.word(*q).is_some_and(is_det)).any(|q| doc.word(q).is_some_and(|w| noun(w).is_some()))
                 }
                 // "dodecagonal (12-sided) prism": an aside inside the phrase.
                 Tk::Sym(')') => {

@@ -150,7 +150,37 @@ pub fn tokenize(text: &str) -> Vec<Token> {
     let pos = |i: usize| chars.get(i).map_or(text.len(), |c| c.0);
     let mut toks: Vec<Token> = Vec::new();
     let mut i = 0;
+    // "2 in. long", "1.5 in x 3 in", "0.5 in thick", "3/8 in holes": after a number, "in"
+    // ending at `e` is the inch, not the preposition, unless an article or a place follows.
+    let inch_after = |e: usize| {
+        let mut f = e;
+        while at(f) == Some(' ') {
+            f += 1;
+        }
+        let mut g = f;
+        while at(g).is_some_and(|c| c.is_ascii_alphabetic()) {
+            g += 1;
+        }
+        let next: String = chars[f..g].iter().map(|c| c.1).collect::<String>().to_ascii_lowercase();
+        !matches!(
+            next.as_str(),
+            "the" | "a" | "an" | "its" | "each" | "one" | "both" | "from" | "which" | "this" | "that" | "all" | "place"
+        ) && !(next.len() == 1 && matches!(next.as_str(), "x" | "y" | "z") && at(g) == Some('='))
+    };
+    // A role symbol read before the next number ("Ø"), and where it began.
+    let mut pending_role: Option<(&'static str, usize)> = None;
     while i < chars.len() {
+        if let Some((role, from)) = pending_role
+            && toks.last().is_some_and(|t| matches!(t.kind, Tk::Num { .. }) && t.end > from && t.start >= from)
+        {
+            // The number just read: it begins at the symbol, and its role word follows it.
+            let (s, e) = (from, toks.last().map_or(from, |t| t.end));
+            if let Some(t) = toks.last_mut() {
+                t.start = s;
+            }
+            toks.push(Token { kind: Tk::Word(role.into()), start: s, end: e });
+            pending_role = None;
+        }
         let c = chars[i].1;
         let start = pos(i);
         // "±22", "+/-22", "+25", "-25" (a sign directly before a digit, not after a letter
@@ -191,6 +221,29 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 i = j.max(i + 1);
                 continue;
             };
+            // "1-1/2\"", "1 1/2 in": a whole number and a fraction.
+            if v.fract() == 0.0 && matches!(at(j), Some('-' | ' ')) {
+                let ds = j + 1;
+                let mut k = ds;
+                while at(k).is_some_and(|d| d.is_ascii_digit()) {
+                    k += 1;
+                }
+                let mut e = k + 1;
+                while at(e).is_some_and(|d| d.is_ascii_digit()) {
+                    e += 1;
+                }
+                if k > ds && at(k) == Some('/') && e > k + 1 {
+                    let num: String = chars[ds..k].iter().map(|c| c.1).collect();
+                    let den: String = chars[k + 1..e].iter().map(|c| c.1).collect();
+                    if let (Ok(a), Ok(b)) = (num.parse::<f64>(), den.parse::<f64>())
+                        && b > 0.0
+                        && a < b
+                    {
+                        v += a / b;
+                        j = e;
+                    }
+                }
+            }
             if sign < 0.0 {
                 v = -v;
             }
@@ -219,7 +272,29 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 i = e;
                 continue;
             }
-            if !hyphen && let Some(f) = unit_factor(&unit) {
+            let inch = super::notation::INCH_WORDS.contains(&unit.as_str()) && inch_after(e);
+            // "16 SWG": a gauge, in inches.
+            if unit == "swg"
+                && let Some(g) = super::notation::swg_inch(v)
+            {
+                toks.push(Token { kind: Tk::Num { v: g * 25.4, unit: Some(1.0), pm, signed }, start, end: pos(e) });
+                i = e;
+                continue;
+            }
+            let unit_f = if inch { Some(25.4) } else { unit_factor(&unit) };
+            if !hyphen && let Some(f) = unit_f {
+                // "in." is the unit's abbreviation, not the end of a sentence.
+                let e = if inch && at(e) == Some('.') && at(e + 1).is_some_and(|c| c == ' ') && {
+                    let mut q = e + 1;
+                    while at(q) == Some(' ') {
+                        q += 1;
+                    }
+                    at(q).is_some_and(|c| c.is_ascii_lowercase() || c.is_ascii_digit())
+                } {
+                    e + 1
+                } else {
+                    e
+                };
                 toks.push(Token { kind: Tk::Num { v, unit: Some(f), pm, signed }, start, end: pos(e) });
                 i = e;
                 continue;
@@ -257,7 +332,12 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                         f += 1;
                     }
                     let unit: String = chars[e..f].iter().map(|c| c.1).collect::<String>().to_ascii_lowercase();
-                    if let Some(u) = unit_factor(&unit) {
+                    let u = if super::notation::INCH_WORDS.contains(&unit.as_str()) && inch_after(f) {
+                        Some(25.4)
+                    } else {
+                        unit_factor(&unit)
+                    };
+                    if let Some(u) = u {
                         toks.push(Token { kind: Tk::Num { v: value, unit: Some(u), pm, signed }, start, end: pos(f) });
                         i = f;
                     } else {
@@ -270,6 +350,19 @@ pub fn tokenize(text: &str) -> Vec<Token> {
             toks.push(Token { kind: Tk::Num { v, unit: None, pm, signed }, start, end: pos(j) });
             i = j;
             continue;
+        }
+        // "Ø20", "⌀ 20": the number's role, written after it ("20 diameter") so that the
+        // phrase reads as the language's own.
+        if let Some(role) = super::notation::role_symbol(c) {
+            let mut k = i + 1;
+            while at(k) == Some(' ') {
+                k += 1;
+            }
+            if at(k).is_some_and(|d| d.is_ascii_digit() || d == '.') {
+                pending_role = Some((role, start));
+                i = k;
+                continue;
+            }
         }
         // "i.e." and "e.g.": one word, not two sentences.
         if (c == 'i' || c == 'e' || c == 'I' || c == 'E')
@@ -300,7 +393,35 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 }
             }
             let raw: String = chars[i..j].iter().map(|c| c.1).collect();
-            let w = raw.to_lowercase();
+            let mut w = raw.to_lowercase();
+            // "A/F", "C/L", "w/": a spelling written with a slash.
+            if at(j) == Some('/') {
+                let mut k = j + 1;
+                while at(k).is_some_and(|c| c.is_ascii_alphabetic()) {
+                    k += 1;
+                }
+                let joined: String = chars[i..k].iter().map(|c| c.1).collect::<String>().to_lowercase();
+                if super::notation::spelling(&joined).is_some() {
+                    w = joined;
+                    j = k;
+                }
+            }
+            // "ISO 7089", "NEMA 17": a standard's designation.
+            if super::notation::STANDARDS.contains(&w.as_str()) {
+                let mut k = j;
+                while at(k) == Some(' ') {
+                    k += 1;
+                }
+                let ds = k;
+                while at(k).is_some_and(|c| c.is_ascii_digit()) {
+                    k += 1;
+                }
+                if k > ds && !at(k).is_some_and(|c| c.is_ascii_alphabetic() || c == '.') {
+                    toks.push(Token { kind: Tk::Word("standard".into()), start, end: pos(k) });
+                    i = k;
+                    continue;
+                }
+            }
             // "M6": a metric screw size.
             if let Some(size) = w.strip_prefix('m').and_then(|s| s.parse::<f64>().ok()) {
                 toks.push(Token { kind: Tk::Word("metric".into()), start, end: pos(j) });
@@ -312,8 +433,19 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 i = j;
                 continue;
             }
+            // "R5": a radius.
+            if let Some((role, v)) = super::notation::role_prefix(&w) {
+                toks.push(Token { kind: Tk::Num { v, unit: None, pm: false, signed: false }, start, end: pos(j) });
+                toks.push(Token { kind: Tk::Word(role.into()), start, end: pos(j) });
+                i = j;
+                continue;
+            }
             if w == "x" {
                 toks.push(Token { kind: Tk::Sym('x'), start, end: pos(j) });
+            } else if let Some(words) = super::notation::spelling(&w) {
+                for to in words {
+                    toks.push(Token { kind: Tk::Word((*to).into()), start, end: pos(j) });
+                }
             } else {
                 toks.push(Token { kind: Tk::Word(fold(&w)), start, end: pos(j) });
             }
@@ -330,8 +462,188 @@ pub fn tokenize(text: &str) -> Vec<Token> {
         }
         i += 1;
     }
+    if let Some((role, from)) = pending_role
+        && toks.last().is_some_and(|t| matches!(t.kind, Tk::Num { .. }) && t.start >= from)
+    {
+        let e = toks.last().map_or(from, |t| t.end);
+        if let Some(t) = toks.last_mut() {
+            t.start = from;
+        }
+        toks.push(Token { kind: Tk::Word(role.into()), start: from, end: e });
+    }
     inherit_units(&mut toks);
+    notes(&mut toks);
     toks
+}
+
+/// Whether token `i` is a role written as a symbol with the number before it ("Ø20" read
+/// as 20 diameter, "R5" as 5 radius): a word spanning that number.
+fn marker(toks: &[Token], i: usize) -> bool {
+    i > 0
+        && toks.get(i).is_some_and(|t| matches!(t.word(), Some("diameter" | "radius")))
+        && toks[i].start == toks[i - 1].start
+        && matches!(toks[i - 1].kind, Tk::Num { .. })
+}
+
+/// The factor of the prompt's own unit: that of its first length with a unit, else mm.
+fn prompt_unit(toks: &[Token]) -> f64 {
+    toks.iter().find_map(|t| if let Tk::Num { unit: Some(f), .. } = t.kind { Some(f) } else { None }).unwrap_or(1.0)
+}
+
+/// Drawing-note lengths: numbers written without a unit that the words around them make
+/// lengths ("42 OD x 36 ID x 120 long", "Ø20", "thickness 5", "100 x 60 x 5 plate"), in the
+/// prompt's unit; a chamfer's "1 x 45°"; spacings "on 50 centres"; and holes named by
+/// their callout alone ("4x Ø6.6 thru", "M6 clearance").
+fn notes(toks: &mut Vec<Token>) {
+    let unit = prompt_unit(toks);
+    let n = toks.len();
+    let word = |toks: &[Token], i: usize| toks.get(i).and_then(Token::word).map(str::to_string);
+    let is_role = |w: &str| super::doc::role_of(w).is_some() && !matches!(w, "side" | "sided" | "extruded" | "extrude");
+    let unitless = |t: &Token| matches!(t.kind, Tk::Num { unit: None, .. });
+    let mut length = vec![false; n];
+    for i in 0..n {
+        if !unitless(&toks[i]) || (i > 0 && toks[i - 1].is_sym('=')) {
+            continue;
+        }
+        let next = word(toks, i + 1);
+        let length_noun = next.as_deref().is_some_and(|w| super::notation::LENGTH_NOUNS.contains(&w));
+        // A count: "6 holes", "4x Ø6.6", "16 teeth", "4 x M6".
+        if !length_noun
+            && next.as_deref().is_some_and(|w| super::lexicon::noun(w).is_some() || matches!(w, "tooth" | "vertex" | "point"))
+        {
+            continue;
+        }
+        let after = next.as_deref().is_some_and(is_role)
+            || length_noun
+            || next.as_deref().is_some_and(|w| super::notation::SPACING_AFTER.contains(&w))
+            || next.as_deref().is_some_and(|w| super::notation::LENGTH_AFTER.contains(&w));
+        let prev = if i >= 2 && (toks[i - 1].is_word("of") || toks[i - 1].is_sym(':') || toks[i - 1].is_sym('=')) {
+            word(toks, i - 2)
+        } else {
+            i.checked_sub(1).and_then(|p| word(toks, p))
+        };
+        let before = i > 0
+            && prev.as_deref().is_some_and(|w| {
+                matches!(
+                    super::doc::role_of(w),
+                    Some(
+                        super::doc::Role::Diameter
+                            | super::doc::Role::Radius
+                            | super::doc::Role::Thickness
+                            | super::doc::Role::Length
+                            | super::doc::Role::Width
+                            | super::doc::Role::Height
+                            | super::doc::Role::Depth
+                            | super::doc::Role::Fillet
+                            | super::doc::Role::Chamfer
+                    )
+                ) && !matches!(w, "long" | "wide" | "thick" | "tall" | "high" | "deep")
+            });
+        // "1 x 45°": a chamfer's size.
+        let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x')) && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
+        if after || before || chamfer {
+            length[i] = true;
+        }
+    }
+    // Lists: "100 x 60 x 5" with one member a length (or all three given), all of them.
+    loop {
+        let mut changed = false;
+        for i in 0..n {
+            if !unitless(&toks[i]) || length[i] {
+                continue;
+            }
+            let joined = |j: usize| {
+                toks.get(j).is_some_and(|t| matches!(t.kind, Tk::Num { .. }))
+                    && (length[j] || matches!(toks[j].kind, Tk::Num { unit: Some(_), .. }))
+            };
+            // The number before "x", past a role written with it ("Ø20 x 50": 20 diameter x 50).
+            let before_x = |x: usize| -> Option<usize> {
+                let p = x.checked_sub(1)?;
+                if marker(toks, p) { p.checked_sub(1) } else { Some(p) }
+            };
+            let left = i >= 2 && toks[i - 1].is_sym('x') && before_x(i - 1).is_some_and(joined);
+            // "4x Ø6.6", "2 x Ø14 holes": a count of what the Ø names, not a list.
+            let right = toks.get(i + 1).is_some_and(|t| t.is_sym('x')) && joined(i + 2) && !marker(toks, i + 3);
+            // Three numbers in a row joined by x: a box.
+            let triple = toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
+                && toks.get(i + 2).is_some_and(unitless)
+                && toks.get(i + 3).is_some_and(|t| t.is_sym('x'))
+                && toks.get(i + 4).is_some_and(unitless)
+                && !(i > 0 && toks[i - 1].is_sym('x'));
+            if left || right || triple {
+                length[i] = true;
+                if triple {
+                    length[i + 2] = true;
+                    length[i + 4] = true;
+                }
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    for (i, t) in toks.iter_mut().enumerate() {
+        if let (true, Tk::Num { v, unit: None, pm, signed }) = (length[i], &t.kind) {
+            t.kind = Tk::Num { v: *v, unit: Some(unit), pm: *pm, signed: *signed };
+        }
+    }
+    // "1 x 45°", "45° x 1": the times sign between a chamfer's size and angle is no list.
+    let mut i = 1;
+    while i + 1 < toks.len() {
+        let num = |t: &Token| matches!(t.kind, Tk::Num { unit: Some(_), .. });
+        let deg = |t: &Token| matches!(t.kind, Tk::Deg(_));
+        if toks[i].is_sym('x') && ((num(&toks[i - 1]) && deg(&toks[i + 1])) || (deg(&toks[i - 1]) && num(&toks[i + 1]))) {
+            toks.remove(i);
+        }
+        i += 1;
+    }
+    // "on 50 centres": a spacing.
+    for i in 1..toks.len() {
+        if matches!(toks[i - 1].kind, Tk::Num { unit: Some(_), .. })
+            && toks[i].word().is_some_and(|w| super::notation::SPACING_AFTER.contains(&w) && w != "pitch")
+        {
+            toks[i].kind = Tk::Word("spacing".into());
+        }
+    }
+    // A hole named by its callout: a diameter (or a screw's clearance) followed, before any
+    // noun or the end of its phrase, by "thru", "deep", "clearance" …, or counted "4x Ø6.6".
+    let mut i = 0;
+    while i < toks.len() {
+        let dia_after = matches!(toks[i].kind, Tk::Num { unit: Some(_), .. })
+            && toks.get(i + 1).is_some_and(|t| t.is_word("diameter"))
+            && toks.get(i + 1).is_some_and(|t| t.start == toks[i].start);
+        let metric = i > 0 && toks[i - 1].is_word("metric") && matches!(toks[i].kind, Tk::Num { unit: Some(_), .. });
+        if !(dia_after || metric) {
+            i += 1;
+            continue;
+        }
+        let at = if dia_after { i + 2 } else { i + 1 };
+        let first = if metric { i - 1 } else { i };
+        let counted = first >= 2 && toks[first - 1].is_sym('x') && matches!(toks[first - 2].kind, Tk::Num { unit: None, .. });
+        let mut callout = counted;
+        let mut j = at;
+        while let Some(t) = toks.get(j) {
+            match &t.kind {
+                Tk::Word(w) if super::notation::CALLOUT.contains(&w.as_str()) => {
+                    callout = true;
+                    break;
+                }
+                Tk::Word(w) if super::lexicon::noun(w).is_some() => {
+                    callout = false;
+                    break;
+                }
+                Tk::Sym(',' | ';' | '.' | ')' | '(') => break,
+                _ => {}
+            }
+            j += 1;
+        }
+        if callout {
+            let (s, e) = (toks[at - 1].end, toks[at - 1].end);
+            toks.insert(at, Token { kind: Tk::Word("hole".into()), start: s, end: e });
+        }
+        i = at + 1;
+    }
 }
 
 /// Gives a unit to numbers that take it from their neighbours: coordinates ("Z=0 to

@@ -381,6 +381,9 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
             return right_triangle(r, e);
         }
         ShapeHint::Ngon(n) => {
+            let flats = r.find(e, &[Role::Bare, Role::Diameter, Role::Width], &["across", "flat"], &[]).is_some()
+                && r.find(e, &[Role::Bare, Role::Diameter], &["across", "corner"], &[]).is_none()
+                && r.find(e, &[Role::Diameter, Role::Radius], &["circumscribed"], &[]).is_none();
             let d = r
                 .take_diameter(e, &["circumscribed"], &[])
                 .or_else(|| r.take(e, &[Role::Bare, Role::Diameter], &["across", "corner"], &[]))
@@ -390,8 +393,15 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                 })
                 .or_else(|| r.take_diameter(e, &[], NOT_OUTER));
             let d = need(d, "circumscribed diameter", r, e)?;
-            // A triangle stands on its base (a corner on +v); other polygons have a corner on +u.
-            let phase = if n == 3 { 90.0 } else { 0.0 };
+            // A triangle stands on its base (a corner on +v); other polygons have a corner on
+            // +u, but one given across its flats lies on a flat (an octagon's flats on both axes).
+            let phase = if n == 3 {
+                90.0
+            } else if flats && n % 4 == 0 {
+                180.0 / n as f64
+            } else {
+                0.0
+            };
             (Profile::Ngon { n, d, phase }, d, None)
         }
         ShapeHint::Star => {
@@ -439,6 +449,26 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
         });
         if len.is_none() && shape == ShapeHint::Star {
             len = r.take(e, &[Role::Width], &["face"], &[]);
+        }
+        // "Ø20 x 50 pin", "Ø100 x 6 disc": the one length written after its diameter.
+        if len.is_none() {
+            let bare: Vec<usize> = r
+                .free_dims(e)
+                .into_iter()
+                .filter(|k| {
+                    let d = r.dim(*k);
+                    d.role == Role::Bare
+                        && !d.paren
+                        && d.restates.is_none()
+                        && !NOT_OUTER.iter().any(|q| d.has(q))
+                        && !d.has("from-center")
+                        && !d.has("pattern")
+                })
+                .collect();
+            if let [k] = bare.as_slice() {
+                r.used_dims[*k] = true;
+                len = Some(r.dim(*k).mm);
+            }
         }
         // A flat part's thickness ("lying flat … (Z=0 to Z=3)") for a disc on it.
         if len.is_none()
@@ -576,7 +606,14 @@ fn cone(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 }
 
 fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
-    let dia = need(r.take_diameter(e, &[], &[]), "diameter or radius", r, e)?;
+    // "a 45 mm ball": a bare size before it is its diameter.
+    let dia = r.take_diameter(e, &[], &[]).or_else(|| {
+        let bare: Vec<usize> = r.free_dims(e).into_iter().filter(|k| r.dim(*k).role == Role::Bare).collect();
+        let [k] = bare.as_slice() else { return None };
+        r.used_dims[*k] = true;
+        Some(r.dim(*k).mm)
+    });
+    let dia = need(dia, "diameter or radius", r, e)?;
     // On top of the body before it ("topped by a hemisphere … centered on the top face").
     let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == Axis::Z && !b.cut).map(|b| b.span));
     let z0 = match (prev, half) {

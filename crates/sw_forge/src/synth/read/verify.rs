@@ -316,13 +316,36 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                 || matches!(w.as_str(), "x" | "y" | "z" | "xy" | "xz" | "yz" | "degree" | "mm")
         }
         Tk::Sym(_) => true,
-        Tk::Num { unit: None, .. } => true,
+        // A number without a unit is read only as a count ("4x", "six holes", "16 teeth")
+        // or an enumeration "(1)"; any other is a size that was not read.
+        Tk::Num { unit: None, .. } => is_count(d, i),
         _ => false,
     });
     if let Some((a, b)) = runs.first() {
         return Err(Refusal::new(d.quote(*a, *b), "the synthesizer does not know what these words ask for"));
     }
     Ok(())
+}
+
+/// Whether the unitless number at `i` counts something: before "x", before the noun it
+/// counts (past fillers and labels: "6 equally spaced holes"), or numbering an item "(1)".
+fn is_count(d: &super::super::doc::Doc, i: usize) -> bool {
+    if d.sym(i + 1, 'x') || (i > 0 && d.sym(i - 1, '=')) || (i > 0 && d.sym(i - 1, '(') && d.sym(i + 1, ')')) {
+        return true;
+    }
+    for j in i + 1..(i + 5).min(d.len()) {
+        match d.word(j) {
+            Some(w) if super::super::lexicon::noun(w).is_some() => return true,
+            Some(
+                "tooth" | "vertex" | "point" | "side" | "sided" | "per" | "row" | "time" | "place" | "position" | "way"
+                | "spoke" | "step" | "turn",
+            ) => return true,
+            Some(w) if is_filler(w) || super::super::lexicon::shape_adjective(w).is_some() => {}
+            Some(w) if QUALS.contains(&w) || matches!(w, "m" | "metric" | "equally" | "evenly" | "whole") => {}
+            _ => return false,
+        }
+    }
+    false
 }
 
 /// Nouns that, said of a made part, name a place on it rather than a new body.
