@@ -552,6 +552,13 @@ impl Doc {
             let floor = prev_num.map_or(0, |p| p + 1);
             while j > floor {
                 j -= 1;
+                // A role written as a symbol with the number before ("Ø20 x 50": the 20's).
+                if j > 0
+                    && self.toks[j].start == self.toks[j - 1].start
+                    && matches!(self.toks[j - 1].kind, Tk::Num { .. })
+                {
+                    break;
+                }
                 match &self.toks[j].kind {
                     Tk::Word(w) if w == "and" || w == "with" || w == "has" || w == "have" => break,
                     Tk::Word(w) => before.push((j, w.clone())),
@@ -636,6 +643,31 @@ impl Doc {
                     quals.push("from-center".into());
                 }
             }
+            // "1 x 45°", "1 mm 45° chamfer": a chamfer's size before its angle.
+            let role = if matches!(self.toks.get(i + 1).map(|t| &t.kind), Some(Tk::Deg(_))) && role == Role::Bare {
+                Role::Chamfer
+            } else {
+                role
+            };
+            // "10 from edges", "20 from each end", "12 in from the sides": an inset.
+            let role = {
+                let mut q = after_end;
+                if self.is(q, "in") {
+                    q += 1;
+                }
+                let from = self.is(q, "from");
+                while matches!(self.word(q + 1), Some("each" | "the" | "both" | "all" | "either" | "its")) {
+                    q += 1;
+                }
+                if role == Role::Bare
+                    && from
+                    && matches!(self.word(q + 1), Some("edge" | "end" | "side" | "corner" | "face"))
+                {
+                    Role::Inset
+                } else {
+                    role
+                }
+            };
             // "120 across", "45 inside", "50 outside": a diameter; "16 square": a side.
             let role = match (role, after.first().map(|(_, w)| w.as_str()), after.get(1).map(|(_, w)| w.as_str())) {
                 (Role::Bare, Some("across"), next) if !matches!(next, Some("flat" | "corner")) => Role::Diameter,

@@ -106,6 +106,20 @@ fn is_prep(w: &str) -> bool {
     matches!(w, "through" | "into" | "in" | "of" | "from" | "on" | "onto" | "to" | "at" | "across" | "around" | "thru")
 }
 
+/// Whether the clause of token `h` (between colons, semicolons and full stops) states a length.
+fn clause_sized(d: &Doc, h: usize) -> bool {
+    let stop = |i: usize| d.sym(i, ':') || d.sym(i, ';') || d.sym(i, '.');
+    let mut a = h;
+    while a > 0 && !stop(a - 1) {
+        a -= 1;
+    }
+    let mut b = h;
+    while b < d.len() && !stop(b) {
+        b += 1;
+    }
+    d.dims.iter().any(|x| x.tok >= a && x.tok < b)
+}
+
 /// Words that may stand inside a length's phrase before the noun it sizes.
 fn in_phrase(d: &Doc, i: usize) -> bool {
     match &d.toks[i].kind {
@@ -188,7 +202,7 @@ impl<'a> Takeoff<'a> {
             let same = things.iter().rposition(|t| t.noun == w);
             // A thing announced without its sizes ("a shaft with a keyway: … A rectangular
             // keyway runs …") is the same when named again with them.
-            let announced = same.is_some_and(|t| things[t].dims.is_empty() && things[t].count.is_none_or(|c| c <= 1));
+            let announced = same.is_some_and(|t| !clause_sized(doc, things[t].phrase.1) && things[t].count.is_none_or(|c| c <= 1));
             let refers = det.is_some_and(definite) || det.is_none() || prep || announced;
             let id = match (same, refers) {
                 (Some(t), true) => t,

@@ -513,8 +513,12 @@ fn notes(toks: &mut Vec<Token>) {
         {
             continue;
         }
+        let next2 = word(toks, i + 2);
         let after = next.as_deref().is_some_and(is_role)
             || length_noun
+            // "40 base diameter", "30 outside dia", "12 in from each end".
+            || (next.as_deref().is_some_and(|w| super::doc::QUALS.contains(&w) || w == "in")
+                && next2.as_deref().is_some_and(|w| is_role(w) || w == "from"))
             || next.as_deref().is_some_and(|w| super::notation::SPACING_AFTER.contains(&w))
             || next.as_deref().is_some_and(|w| super::notation::LENGTH_AFTER.contains(&w));
         let prev = if i >= 2 && (toks[i - 1].is_word("of") || toks[i - 1].is_sym(':') || toks[i - 1].is_sym('=')) {
@@ -586,6 +590,20 @@ fn notes(toks: &mut Vec<Token>) {
     for (i, t) in toks.iter_mut().enumerate() {
         if let (true, Tk::Num { v, unit: None, pm, signed }) = (length[i], &t.kind) {
             t.kind = Tk::Num { v: *v, unit: Some(unit), pm: *pm, signed: *signed };
+        }
+    }
+    // "0.5x45 chfr": a chamfer's angle written without its degree sign.
+    for i in 2..toks.len() {
+        let angle = matches!(toks[i].kind, Tk::Num { v, unit: None, .. } if v == 45.0)
+            && toks[i - 1].is_sym('x')
+            && matches!(toks[i - 2].kind, Tk::Num { v, .. } if v < 45.0)
+            && !toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
+            && !toks.get(i + 1).and_then(Token::word).is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Body(_))));
+        if angle {
+            toks[i].kind = Tk::Deg(45.0);
+            if let Tk::Num { v, unit: None, pm, signed } = toks[i - 2].kind {
+                toks[i - 2].kind = Tk::Num { v, unit: Some(unit), pm, signed };
+            }
         }
     }
     // "1 x 45°", "45° x 1": the times sign between a chamfer's size and angle is no list.

@@ -589,9 +589,22 @@ fn cone(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         .or_else(|| r.take_diameter(e, &[], &["top", "tip"]));
     // "a 30mm base": a bare length named for the base.
     let base = base.or_else(|| r.take(e, &[Role::Bare], &["base"], &[]));
+    // "apex down, 40 across the top": the wide end is the top (the same solid turned over).
+    let down = (0..r.doc.len()).any(|i| {
+        matches!(r.doc.word(i), Some("apex" | "point" | "tip" | "vertex"))
+            && matches!(r.doc.word(i + 1), Some("down" | "downward" | "downwards"))
+    });
+    let base = if base.is_none() && down { r.take_diameter(e, &["top"], &[]) } else { base };
     let base = need(base, "base diameter", r, e)?;
     let top = r.take_diameter(e, &["top"], &[]).unwrap_or(0.0);
-    let h = need(r.take(e, &[Role::Height, Role::Length], &[], &[]), "height", r, e)?;
+    let h = need(r.take(e, &[Role::Height, Role::Length, Role::Depth], &[], &[]), "height", r, e)?;
+    for i in 0..r.doc.len() {
+        if matches!(r.doc.word(i), Some("apex" | "point" | "tip" | "vertex"))
+            && matches!(r.doc.word(i + 1), Some("down" | "downward" | "downwards" | "up" | "upward" | "upwards"))
+        {
+            r.doc.mark_range(i, i + 2);
+        }
+    }
     let span = span(r, e, Axis::Z, Some(h))?;
     let at = positions(r, e, Axis::Z)?;
     let mut bodies = Vec::new();
@@ -675,10 +688,16 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
 }
 
 fn torus(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    let od = r.take_diameter(e, &["outer"], &[]);
-    let id = r.take_diameter(e, &["inner"], &[]);
-    let (major, minor) = match (od, id) {
-        (Some(o), Some(i)) if i < o => ((o + i) / 2.0, (o - i) / 2.0),
+    // "major radius 40, minor radius 10": the ring's and the tube's.
+    let by_radii = match (r.find(e, &[Role::Diameter, Role::Radius], &["major"], &[]), r.find(e, &[Role::Diameter, Role::Radius], &["minor"], &[])) {
+        (Some(_), Some(_)) => Some((r.take_diameter(e, &["major"], &[]), r.take_diameter(e, &["minor"], &[]))),
+        _ => None,
+    };
+    let od = if by_radii.is_none() { r.take_diameter(e, &["outer"], &[]) } else { None };
+    let id = if by_radii.is_none() { r.take_diameter(e, &["inner"], &[]) } else { None };
+    let (major, minor) = match (by_radii, od, id) {
+        (Some((Some(a), Some(b))), ..) => (a, b),
+        (_, Some(o), Some(i)) if i < o => ((o + i) / 2.0, (o - i) / 2.0),
         _ => {
             let tube = r.take_diameter(e, &["tube"], &[]).or_else(|| r.take(e, &[Role::Thickness], &[], &[]));
             let ring = r.take_diameter(e, &[], &[]);

@@ -66,7 +66,7 @@ fn check_cuts_something(r: &Reader<'_>, e: usize, bi: usize) -> Res<()> {
             (0..3).all(|k| b[0][k] >= q[0][k] - 1e-9 && b[1][k] <= q[1][k] + 1e-9)
         }
     });
-    if outside || swallowed {
+    if outside || swallowed || !touches_material(r, bi) {
         return Err(Refusal::new(
             r.quote_element(e),
             "as placed by these words it would cut nothing: it lies in empty space",
@@ -81,6 +81,47 @@ fn check_cuts_something(r: &Reader<'_>, e: usize, bi: usize) -> Res<()> {
         return Err(Refusal::new(r.quote_element(e), format!("it would remove the whole {}", body.label)));
     }
     Ok(())
+}
+
+/// Whether a point of the part is in its material: inside a body added (a prism by its
+/// profile, any other solid by its bounds) and not in a cut made before this one.
+fn in_material(r: &Reader<'_>, p: [f64; 3], before: usize) -> bool {
+    let in_prism = |b: &Body| match &b.shape {
+        Shape::Prism { profile, axis, at, rot, from, to } => {
+            let (u, v) = axis.uv();
+            let w = p[axis.index()];
+            let (du, dv) = (p[u.index()] - at[0], p[v.index()] - at[1]);
+            let (sn, cs) = (-rot).to_radians().sin_cos();
+            w >= from.min(*to) - 1e-9
+                && w <= from.max(*to) + 1e-9
+                && profile.contains([cs * du - sn * dv, sn * du + cs * dv])
+        }
+        _ => {
+            let q = b.bounds();
+            (0..3).all(|k| p[k] >= q[0][k] - 1e-9 && p[k] <= q[1][k] + 1e-9)
+        }
+    };
+    let cut_before = r.model.cuts[..before].iter().any(|c| matches!(c.shape, Shape::Prism { .. }) && in_prism(c));
+    r.model.adds.iter().any(in_prism) && !cut_before
+}
+
+/// Whether a cut reaches any material: points across its section (its centre and near its
+/// outline) at three places along its length, one of them in the part.
+fn touches_material(r: &Reader<'_>, bi: usize) -> bool {
+    let Some(Shape::Prism { profile, axis, at, rot, from, to }) = r.model.cuts.get(bi).map(|c| &c.shape) else {
+        return true;
+    };
+    let mut section = vec![[0.0, 0.0]];
+    section.extend(profile.outline().into_iter().map(|q| [0.9 * q[0], 0.9 * q[1]]));
+    let (sn, cs) = rot.to_radians().sin_cos();
+    let (lo, hi) = (from.min(*to), from.max(*to));
+    [0.1, 0.5, 0.9].iter().any(|f| {
+        let w = lo + f * (hi - lo);
+        section.iter().any(|q| {
+            let uv = [at[0] + cs * q[0] - sn * q[1], at[1] + sn * q[0] + cs * q[1]];
+            in_material(r, super::super::solid::point(*axis, uv, w), bi)
+        })
+    })
 }
 
 /// The bodies a cut goes through or into: the objects of "through", "into", "in", "on"
@@ -287,6 +328,18 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
                 tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
             let full = extent(r, &bodies, axis);
             let floor = tg.iter().find_map(|t| r.model.adds.get(r.built[*t].as_ref()?.bodies[0])?.shell.map(|s| s.t));
+            if let Some(dp) = depth
+                && dp >= full[1] - full[0] - 1e-9
+            {
+                return Err(Refusal::new(
+                    r.quote_element(e),
+                    format!(
+                        "a blind hole {} mm deep in a part {} mm thick would go right through",
+                        super::super::num::n(dp),
+                        super::super::num::n(full[1] - full[0])
+                    ),
+                ));
+            }
             match (depth, floor, r.says(e, "bottom")) {
                 (Some(dp), _, true) => [full[0], full[0] + dp],
                 (Some(dp), _, _) => [full[1] - dp, full[1]],

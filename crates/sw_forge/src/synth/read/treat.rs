@@ -83,6 +83,14 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
         r.model.adds[bi].edges.push(EdgeOp { edges, kind, size });
         let dm = &d.dims[k];
         d.mark_range(dm.phrase.0.min(dm.tok), dm.phrase.1.max(dm.tok + 1));
+        // "1 x 45°": a chamfer's 45 degrees, the only angle one size gives.
+        if kind == EdgeKind::Chamfer
+            && let Some(super::super::text::Tk::Deg(a)) = d.toks.get(dm.tok + 1).map(|t| &t.kind)
+            && (a - 45.0).abs() < 1e-9
+        {
+            r.used_angles.insert(dm.tok + 1);
+            d.mark(dm.tok + 1);
+        }
     }
     shell(r)
 }
