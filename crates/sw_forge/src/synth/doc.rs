@@ -784,8 +784,16 @@ impl Doc {
             if group.len() >= 2 {
                 let len = group.len();
                 // "in a 100mm x 60mm rectangular pattern": the whole list is the pattern's.
-                // "on 120 x 70 centres": a spacing list places copies too.
-                if group.iter().any(|g| dims[*g].has("pattern") || dims[*g].role == Role::Spacing) {
+                // "on 120 x 70 centres", "on a 170 by 120 rectangle", "on 60 x 60": a list
+                // that places copies.
+                let first_tok = dims[group[0]].tok;
+                let last_tok = dims[group[len - 1]].tok;
+                let after = (last_tok + 1..(last_tok + 3).min(n)).find_map(|j| self.word(j));
+                let on = first_tok >= 1
+                    && (self.is(first_tok - 1, "on") || (first_tok >= 2 && self.is(first_tok - 1, "a") && self.is(first_tok - 2, "on")));
+                let places = matches!(after, Some("rectangle" | "square" | "pattern" | "spacing"))
+                    || (on && !after.is_some_and(|w| super::lexicon::noun(w).is_some_and(|k| k != super::lexicon::Noun::Pattern)));
+                if places || group.iter().any(|g| dims[*g].has("pattern") || dims[*g].role == Role::Spacing) {
                     for g in &group {
                         if !dims[*g].has("pattern") {
                             dims[*g].quals.push("pattern".into());

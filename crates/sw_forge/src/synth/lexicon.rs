@@ -96,7 +96,9 @@ pub fn noun(w: &str) -> Option<Noun> {
         "slot" => Noun::Cut(CutKind::Slot),
         "keyway" | "keyseat" => Noun::Cut(CutKind::Keyway),
         "groove" | "v-groove" => Noun::Cut(CutKind::Groove),
-        "pocket" | "recess" | "socket" | "cavity" | "cutout" | "notch" => Noun::Cut(CutKind::Pocket),
+        "pocket" | "recess" | "socket" | "cavity" | "cutout" | "cut-out" | "notch" | "window" | "aperture" => {
+            Noun::Cut(CutKind::Pocket)
+        }
         "counterbore" => Noun::Cut(CutKind::Counterbore),
         "countersink" => Noun::Cut(CutKind::Countersink),
         "fillet" => Noun::Fillet,
@@ -256,6 +258,7 @@ pub fn is_filler(w: &str) -> bool {
         "centerline",
         "typical",
         "typ",
+        "right",
         "how",
         "what",
         "what's",

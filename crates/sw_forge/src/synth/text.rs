@@ -565,20 +565,35 @@ fn notes(toks: &mut Vec<Token>) {
                 let p = x.checked_sub(1)?;
                 if marker(toks, p) { p.checked_sub(1) } else { Some(p) }
             };
-            let left = i >= 2 && toks[i - 1].is_sym('x') && before_x(i - 1).is_some_and(joined);
+            let times = |t: Option<&Token>| t.is_some_and(|t| t.is_sym('x') || t.is_word("by"));
+            let left = i >= 2 && times(toks.get(i - 1)) && before_x(i - 1).is_some_and(joined);
             // "4x Ø6.6", "2 x Ø14 holes": a count of what the Ø names, not a list.
-            let right = toks.get(i + 1).is_some_and(|t| t.is_sym('x')) && joined(i + 2) && !marker(toks, i + 3);
-            // Three numbers in a row joined by x: a box.
-            let triple = toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
+            let right = times(toks.get(i + 1)) && joined(i + 2) && !marker(toks, i + 3);
+            // "80 x 50", "200 by 150": two sizes, unless they count a grid ("3x2 array").
+            let pair = times(toks.get(i + 1))
                 && toks.get(i + 2).is_some_and(unitless)
-                && toks.get(i + 3).is_some_and(|t| t.is_sym('x'))
+                && !(i > 0 && times(toks.get(i - 1)))
+                && !toks.get(i + 3).is_some_and(|t| t.is_sym('x') || t.is_word("by"))
+                && !(i + 3..(i + 6).min(toks.len())).any(|j| {
+                    toks[j].word().is_some_and(|w| {
+                        matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Pattern))
+                    })
+                })
+                && !marker(toks, i + 3);
+            // Three numbers in a row joined by x: a box.
+            let triple = times(toks.get(i + 1))
+                && toks.get(i + 2).is_some_and(unitless)
+                && times(toks.get(i + 3))
                 && toks.get(i + 4).is_some_and(unitless)
                 && !(i > 0 && toks[i - 1].is_sym('x'));
-            if left || right || triple {
+            if left || right || triple || pair {
                 length[i] = true;
                 if triple {
                     length[i + 2] = true;
                     length[i + 4] = true;
+                }
+                if pair {
+                    length[i + 2] = true;
                 }
                 changed = true;
             }

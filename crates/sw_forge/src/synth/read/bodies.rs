@@ -257,16 +257,25 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
             r.used_dims[k] = true;
         }
     }
-    // A list fills X, Y, Z in order of the free axes.
+    // A list fills X, Y, Z in order of the free axes; a list of two ("flat bar 50 x 10,
+    // length 300") fills what the lengths named by their roles leave.
     let list: Vec<usize> =
         dims.iter().copied().filter(|k| !r.used_dims[*k] && r.dim(*k).list.is_some() && !r.dim(*k).paren).collect();
-    if list.len() >= 2 {
-        for k in list {
+    let fill_list = |r: &mut Reader<'_>, s: &mut [Option<f64>; 3]| {
+        for &k in &list {
             if let Some(i) = (0..3).find(|i| s[*i].is_none()) {
                 s[i] = Some(r.dim(k).mm);
                 r.used_dims[k] = true;
             }
         }
+    };
+    let roles_named = dims.iter().any(|k| {
+        !r.used_dims[*k]
+            && r.dim(*k).list.is_none()
+            && matches!(r.dim(*k).role, Role::Length | Role::Width | Role::Height | Role::Thickness | Role::Depth)
+    });
+    if list.len() >= 3 || (list.len() == 2 && !roles_named) {
+        fill_list(r, &mut s);
     }
     let role = |roles: &[Role], axis: usize, r: &mut Reader<'_>, s: &mut [Option<f64>; 3]| {
         if s[axis].is_none()
@@ -280,14 +289,23 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
     role(&[Role::Length], 0, r, &mut s);
     role(&[Role::Width, Role::Depth], 1, r, &mut s);
     role(&[Role::Height], 2, r, &mut s);
-    // A side fills the square ("40mm sides", "80mm on each side").
+    // A side fills the square ("40mm sides", "80mm on each side", "16 mm square and 300
+    // long": the two axes the length leaves).
     if let Some(k) = r.find(e, &[Role::Side], &[], &[]) {
         let v = r.dim(k).mm;
         r.used_dims[k] = true;
         let cube = r.els[e].noun == "cube";
-        for x in s.iter_mut().take(if cube { 3 } else { 2 }) {
-            *x = x.or(Some(v));
+        let n = if cube { 3 } else { 2 };
+        let mut filled = 0;
+        for x in s.iter_mut() {
+            if filled < n && x.is_none() {
+                *x = Some(v);
+                filled += 1;
+            }
         }
+    }
+    if list.len() == 2 && roles_named {
+        fill_list(r, &mut s);
     }
     // A thickness fills Z, else the one free horizontal axis.
     if let Some(k) = r.find(e, &[Role::Thickness], &[], &["wall"]) {

@@ -743,9 +743,15 @@ fn groove(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 /// round or rectangular, to a depth, in the top face of the body named (or of the part).
 fn pocket(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let shape = r.els[e].shape;
-    let depth = r
-        .take(e, &[Role::Depth], &[], &[])
-        .ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
+    // "a window cut right through": as deep as the part.
+    let through = r.says(e, "through") || r.says(e, "thru");
+    let depth = r.take(e, &[Role::Depth], &[], &[]).or_else(|| {
+        through.then(|| {
+            let b = r.model.bounds();
+            b[1][2] - b[0][2]
+        })
+    });
+    let depth = depth.ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
     let profile = match shape {
         Some(ShapeHint::Ngon(n)) => {
             let d = r

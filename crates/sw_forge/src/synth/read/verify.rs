@@ -149,7 +149,11 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
         }
         for i in dm.phrase.0..dm.phrase.1.min(d.len()) {
             if let Some(w) = d.word(i)
-                && (role_of(w).is_some() || QUALS.contains(&w) || is_filler(w) || matches!(w, "x" | "y" | "z"))
+                && (role_of(w).is_some()
+                    || QUALS.contains(&w)
+                    || is_filler(w)
+                    || matches!(w, "x" | "y" | "z")
+                    || (dm.role == super::super::doc::Role::Side && w == "square"))
             {
                 d.mark(i);
             }
