@@ -656,13 +656,21 @@ impl Doc {
                     q += 1;
                 }
                 let from = self.is(q, "from");
-                while matches!(self.word(q + 1), Some("each" | "the" | "both" | "all" | "either" | "its")) {
+                let height = matches!(self.word(q), Some("above" | "below" | "over" | "under" | "up"));
+                while matches!(self.word(q + 1), Some("each" | "the" | "both" | "all" | "either" | "its" | "from")) {
                     q += 1;
                 }
                 if role == Role::Bare
                     && from
                     && matches!(self.word(q + 1), Some("edge" | "end" | "side" | "corner" | "face"))
                 {
+                    Role::Inset
+                } else if matches!(role, Role::Bare | Role::Height)
+                    && (height || from)
+                    && matches!(self.word(q + 1), Some("base" | "bottom" | "underside" | "floor" | "top"))
+                {
+                    // "its centre 30 above the base": a height on the part, from its bottom (or top).
+                    quals.push(if self.is(q + 1, "top") { "from-top".into() } else { "from-bottom".into() });
                     Role::Inset
                 } else {
                     role
@@ -691,8 +699,8 @@ impl Doc {
                     quals.push(to.into());
                 }
             }
-            // "a 3 mm wall", "with 3mm walls": a wall thickness.
-            let (role, wall) = if role == Role::Bare && after.first().is_some_and(|(_, w)| w == "wall") {
+            // "a 3 mm wall", "with 3mm walls", "1 in OD x 16 SWG wall": a wall thickness.
+            let (role, wall) = if after.first().is_some_and(|(_, w)| w == "wall") {
                 (Role::Thickness, true)
             } else {
                 (role, false)

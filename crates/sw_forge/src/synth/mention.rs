@@ -471,7 +471,21 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                     && doc.word(before - 2).is_some_and(|w| {
                         matches!(
                             w,
-                            "array" | "row" | "grid" | "pattern" | "set" | "pair" | "series" | "ring" | "circle"
+                            "array"
+                                | "row"
+                                | "grid"
+                                | "pattern"
+                                | "set"
+                                | "pair"
+                                | "series"
+                                | "ring"
+                                | "circle"
+                                | "length"
+                                | "piece"
+                                | "bit"
+                                | "stick"
+                                | "offcut"
+                                | "blank"
                         )
                     }) =>
             {

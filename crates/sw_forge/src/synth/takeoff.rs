@@ -103,7 +103,32 @@ fn definite(w: &str) -> bool {
 }
 
 fn is_prep(w: &str) -> bool {
-    matches!(w, "through" | "into" | "in" | "of" | "from" | "on" | "onto" | "to" | "at" | "across" | "around" | "thru")
+    matches!(
+        w,
+        "through"
+            | "into"
+            | "in"
+            | "of"
+            | "from"
+            | "on"
+            | "onto"
+            | "to"
+            | "at"
+            | "across"
+            | "around"
+            | "thru"
+            | "above"
+            | "below"
+            | "under"
+            | "over"
+            | "beneath"
+            | "inside"
+            | "within"
+            | "along"
+            | "past"
+            | "beside"
+            | "between"
+    )
 }
 
 /// Whether the clause of token `h` (between colons, semicolons and full stops) states a length.
@@ -540,9 +565,15 @@ impl<'a> Takeoff<'a> {
                         ),
                     });
                 }
-                // Less what every cut and treatment may remove at its largest.
+                // Less what every cut and treatment may remove at its largest (a rounding
+                // or chamfer said as a length of the body: along every edge).
                 let mut least = top;
                 let mut known = true;
+                for k in self.things[*b].dims.iter().map(|k| &d.dims[*k]) {
+                    if matches!(k.role, Role::Fillet | Role::Chamfer) {
+                        least -= k.mm * k.mm * 4.0 * (want[0] + want[1] + want[2]);
+                    }
+                }
                 for t in 0..self.things.len() {
                     if t == *b || self.is_body(t) {
                         continue;

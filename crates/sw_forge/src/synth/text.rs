@@ -514,6 +514,18 @@ fn notes(toks: &mut Vec<Token>) {
             continue;
         }
         let next2 = word(toks, i + 2);
+        let next3 = word(toks, i + 3);
+        // "10 from edges", "35 from ctr", "20 from the end".
+        let from_edge = matches!(next.as_deref(), Some("from" | "above" | "below" | "over" | "under" | "up"))
+            && [next2.as_deref(), next3.as_deref()].iter().any(|w| {
+                matches!(
+                    w,
+                    Some(
+                        "edge" | "end" | "side" | "corner" | "center" | "face" | "centerline" | "top" | "bottom"
+                            | "base" | "underside" | "floor" | "datum" | "origin"
+                    )
+                )
+            });
         let after = next.as_deref().is_some_and(is_role)
             || length_noun
             // "40 base diameter", "30 outside dia", "12 in from each end".
@@ -545,7 +557,7 @@ fn notes(toks: &mut Vec<Token>) {
             });
         // "1 x 45°": a chamfer's size.
         let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x')) && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
-        if after || before || chamfer {
+        if after || before || chamfer || from_edge {
             length[i] = true;
         }
     }
@@ -654,23 +666,26 @@ fn notes(toks: &mut Vec<Token>) {
         let at = if dia_after { i + 2 } else { i + 1 };
         let first = if metric { i - 1 } else { i };
         let counted = first >= 2 && toks[first - 1].is_sym('x') && matches!(toks[first - 2].kind, Tk::Num { unit: None, .. });
-        let mut callout = counted;
+        // Up to the end of its phrase: a callout word, and no noun naming what it is (a
+        // counterbore or countersink is the hole's own).
+        let mut said = counted;
+        let mut named = false;
         let mut j = at;
         while let Some(t) = toks.get(j) {
             match &t.kind {
-                Tk::Word(w) if super::notation::CALLOUT.contains(&w.as_str()) => {
-                    callout = true;
-                    break;
-                }
-                Tk::Word(w) if super::lexicon::noun(w).is_some() => {
-                    callout = false;
-                    break;
+                Tk::Word(w) if super::notation::CALLOUT.contains(&w.as_str()) => said = true,
+                Tk::Word(w)
+                    if super::lexicon::noun(w).is_some()
+                        && !matches!(w.as_str(), "counterbore" | "countersink" | "center" | "face") =>
+                {
+                    named = true;
                 }
                 Tk::Sym(',' | ';' | '.' | ')' | '(') => break,
                 _ => {}
             }
             j += 1;
         }
+        let callout = said && !named;
         if callout {
             let (s, e) = (toks[at - 1].end, toks[at - 1].end);
             toks.insert(at, Token { kind: Tk::Word("hole".into()), start: s, end: e });

@@ -289,9 +289,17 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
     role(&[Role::Length], 0, r, &mut s);
     role(&[Role::Width, Role::Depth], 1, r, &mut s);
     role(&[Role::Height], 2, r, &mut s);
+    // "a 20 mm square bar 100 long": a bare size of a square thing is its side.
+    let square_bare = if r.els[e].has_mod("square") && r.find(e, &[Role::Side], &[], &[]).is_none() {
+        let bare: Vec<usize> =
+            r.free_dims(e).into_iter().filter(|k| r.dim(*k).role == Role::Bare && r.dim(*k).list.is_none()).collect();
+        (bare.len() == 1 && s.iter().filter(|x| x.is_none()).count() == 2).then(|| bare[0])
+    } else {
+        None
+    };
     // A side fills the square ("40mm sides", "80mm on each side", "16 mm square and 300
     // long": the two axes the length leaves).
-    if let Some(k) = r.find(e, &[Role::Side], &[], &[]) {
+    if let Some(k) = r.find(e, &[Role::Side], &[], &[]).or(square_bare) {
         let v = r.dim(k).mm;
         r.used_dims[k] = true;
         let cube = r.els[e].noun == "cube";
@@ -357,6 +365,48 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
     let axis = axis_of(r, e, round);
     let (profile, od, id) = match shape {
         ShapeHint::Round | ShapeHint::Ring => {
+            // "42.4 x 2.6 tube": a tube's size as outside diameter by wall.
+            if shape == ShapeHint::Ring
+                && r.find(e, &[Role::Diameter, Role::Radius], &[], &[]).is_none()
+                && let [a, b] = r
+                    .free_dims(e)
+                    .into_iter()
+                    .filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare)
+                    .collect::<Vec<_>>()
+                    .as_slice()
+                && r.dim(*b).mm < r.dim(*a).mm / 2.0
+            {
+                let (od, w) = (r.dim(*a).mm, r.dim(*b).mm);
+                r.used_dims[*a] = true;
+                r.used_dims[*b] = true;
+                r.known.push(w);
+                let len = r.take(e, ALONG, &[], &["wall"]);
+                let span = span(r, e, axis, len)?;
+                return Ok(add(r, e, Profile::Annulus { od, id: od - 2.0 * w }, axis, span, Some(od), Some(od - 2.0 * w), None));
+            }
+            // "a 50 mm round bar, 80 long": a bare size before it, with its length named.
+            if r.find(e, &[Role::Diameter, Role::Radius], &[], &[]).is_none()
+                && r.find(e, ALONG, &[], &[]).is_some()
+                && let [k] = r
+                    .free_dims(e)
+                    .into_iter()
+                    .filter(|k| r.dim(*k).role == Role::Bare && r.dim(*k).list.is_none() && !r.dim(*k).paren)
+                    .collect::<Vec<_>>()
+                    .as_slice()
+            {
+                let k = *k;
+                r.used_dims[k] = true;
+                let od = r.dim(k).mm;
+                let len = r.take(e, ALONG, &[], &["wall"]);
+                let id = r.take(e, &[Role::Thickness], &["wall"], &[]).map(|w| od - 2.0 * w);
+                let span = span(r, e, axis, len)?;
+                let profile = match id {
+                    Some(i) if i > 0.0 && shape == ShapeHint::Ring => Profile::Annulus { od, id: i },
+                    _ => Profile::Circle { d: od },
+                };
+                let id = matches!(profile, Profile::Annulus { .. }).then_some(id).flatten();
+                return Ok(add(r, e, profile, axis, span, Some(od), id, None));
+            }
             let od = r.take_diameter(e, &["outer"], &[]).or_else(|| r.take_diameter(e, &[], NOT_OUTER));
             // "of the same diameter", "has the same dimensions": as the round body before it.
             let same = if od.is_none() && (r.says(e, "same") || r.says(e, "identical")) {
@@ -677,7 +727,12 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
                 {
                     d.mark(i)
                 }
-                Some("flat") if d.is(i + 1, "face") => d.mark_range(i, i + 2),
+                Some("flat") if d.is(i + 1, "face") || d.is(i + 1, "side") => {
+                    d.mark_range(i, i + 2);
+                    if matches!(d.word(i + 2), Some("down" | "downward" | "up" | "upward")) {
+                        d.mark(i + 2);
+                    }
+                }
                 _ => {}
             }
         }

@@ -196,6 +196,42 @@ fn cut_axis(r: &Reader<'_>, e: usize) -> Option<Axis> {
     None
 }
 
+/// "through the 40 way", "through the 1.5 in way": along the axis on which the part
+/// measures that length (one axis only).
+fn way_axis(r: &mut Reader<'_>, e: usize) -> Res<Option<Axis>> {
+    let d = r.doc;
+    let size = r.model.size();
+    for k in r.els[e].dims.clone() {
+        let dm = d.dims[k].clone();
+        if r.used_dims[k] || !d.is(dm.tok + 1, "way") {
+            continue;
+        }
+        let axes: Vec<Axis> =
+            Axis::ALL.into_iter().filter(|a| (size[a.index()] - dm.mm).abs() <= 1e-6 * dm.mm.max(1.0)).collect();
+        let [a] = axes.as_slice() else {
+            return Err(Refusal::new(
+                d.quote(dm.tok, dm.tok + 1),
+                "the part does not measure this length along exactly one axis",
+            ));
+        };
+        r.used_dims[k] = true;
+        d.mark_range(dm.tok, dm.tok + 2);
+        return Ok(Some(*a));
+    }
+    Ok(None)
+}
+
+/// "its centre 30 above the base": the height of a cut across the part, from its bottom
+/// (or below its top).
+fn height_of(r: &mut Reader<'_>, e: usize) -> Option<f64> {
+    let k = r.find(e, &[Role::Inset], &["from-bottom"], &[]).or_else(|| r.find(e, &[Role::Inset], &["from-top"], &[]))?;
+    r.used_dims[k] = true;
+    let dm = r.doc.dims[k].clone();
+    r.doc.mark_range(dm.phrase.0, dm.phrase.1 + 3);
+    let b = r.model.bounds();
+    Some(if dm.has("from-top") { b[1][2] - dm.mm } else { b[0][2] + dm.mm })
+}
+
 /// Extent of the whole part (or of some bodies) along an axis.
 fn extent(r: &Reader<'_>, bodies: &[usize], axis: Axis) -> [f64; 2] {
     let k = axis.index();
@@ -271,7 +307,11 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         order.sort_by(|a, b| s[*a].total_cmp(&s[*b]));
         (s[order[0]] <= 0.5 * s[order[1]]).then(|| Axis::ALL[order[0]])
     });
-    let axis = cut_axis(r, e).or(by_points).or(thin).unwrap_or(Axis::Z);
+    let axis = match way_axis(r, e)? {
+        Some(a) => Some(a),
+        None => cut_axis(r, e),
+    };
+    let axis = axis.or(by_points).or(thin).unwrap_or(Axis::Z);
     let count = place::count_of(r, e);
     let radial =
         r.says(e, "radial") || r.says(e, "radially") || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
@@ -287,6 +327,7 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     if at.is_empty() && count > 1 {
         at = place::circle(r, e, count)
             .or_else(|| place::rect_pattern(r, e))
+            .or_else(|| if count == 2 { target_size.and_then(|s| place::ends(r, e, s)) } else { None })
             .or_else(|| target_size.and_then(|s| place::corners(r, e, s)))
             .or_else(|| place::row(r, e, count, Axis::X, axis))
             .unwrap_or_default();
@@ -466,7 +507,7 @@ fn radial_hole(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, tg: &[usize]) -
     let bodies: Vec<usize> = host.and_then(|h| r.built[h].as_ref()).map(|b| b.bodies.clone()).unwrap_or_default();
     let full = extent(r, &bodies, axis);
     let zspan = extent(r, &bodies, Axis::Z);
-    let z = r.take_coord(e, Axis::Z).unwrap_or((zspan[0] + zspan[1]) / 2.0);
+    let z = r.take_coord(e, Axis::Z).or_else(|| height_of(r, e)).unwrap_or((zspan[0] + zspan[1]) / 2.0);
     // Through one wall of a ring (a set screw), else right through: "both walls", "a
     // through hole", or a host with no bore.
     let bored =

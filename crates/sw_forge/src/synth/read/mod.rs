@@ -240,6 +240,10 @@ impl Reader<'_> {
         if el.teeth.is_some() {
             return Some(ShapeHint::Star);
         }
+        // "a half ball", "half a sphere": a hemisphere.
+        if from_noun == Some(ShapeHint::Sphere) && el.has_mod("half") {
+            return Some(ShapeHint::Hemisphere);
+        }
         // An angle bracket (or iron) is an L.
         if matches!(el.noun.as_str(), "bracket" | "iron" | "profile") && (el.has_mod("angle") || el.has_mod("l-shaped"))
         {

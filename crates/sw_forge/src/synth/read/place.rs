@@ -274,6 +274,30 @@ pub fn corners(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64;
     Some(vec![[-x, -y], [x, -y], [x, y], [-x, y]])
 }
 
+/// "two holes on the centreline, 15 from each end", "2x Ø8 on CL 20 from ends": two copies
+/// on the long centreline of a part of size (u, v), each inset from an end.
+pub fn ends(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64; 2]>> {
+    let said = r.sentences_of(e).iter().any(|(a, b)| (*a..*b).any(|i| matches!(r.doc.word(i), Some("end" | "centerline"))));
+    if !said {
+        return None;
+    }
+    let k = r.find(e, &[Role::Inset], &[], &[])?;
+    let i = r.doc.dims[k].mm;
+    r.used_dims[k] = true;
+    for (a, b) in r.sentences_of(e) {
+        for j in a..b {
+            if matches!(r.doc.word(j), Some("end" | "centerline" | "long" | "on")) {
+                r.doc.mark(j);
+            }
+        }
+    }
+    Some(if size[0] >= size[1] {
+        vec![[-(size[0] / 2.0 - i), 0.0], [size[0] / 2.0 - i, 0.0]]
+    } else {
+        vec![[0.0, -(size[1] / 2.0 - i)], [0.0, size[1] / 2.0 - i]]
+    })
+}
+
 /// "in a 20mm x 20mm square pattern", "in a rectangular pattern 64mm (X) by 34mm (Y)":
 /// the four corners of a centred rectangle given by a list of two lengths.
 pub fn rect_pattern(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {

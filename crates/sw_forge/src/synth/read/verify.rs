@@ -121,15 +121,40 @@ fn approx_near(r: &Reader<'_>, tok: usize) -> bool {
         .any(|i| matches!(r.doc.word(i), Some("approximately" | "about" | "approx" | "roughly" | "around" | "nearly")))
 }
 
+/// Distances that place things on the finished part: from each side of the part to each
+/// body's and cut's sides and centre, and to each copy's centre.
+fn placements(r: &Reader<'_>) -> Vec<f64> {
+    let b = r.model.bounds();
+    let mut v = Vec::new();
+    for body in r.model.adds.iter().chain(r.model.cuts.iter()) {
+        let q = body.bounds();
+        for k in 0..3 {
+            for x in [q[0][k], q[1][k], (q[0][k] + q[1][k]) / 2.0] {
+                v.extend([(x - b[0][k]).abs(), (b[1][k] - x).abs(), (x - (b[0][k] + b[1][k]) / 2.0).abs()]);
+            }
+        }
+    }
+    for built in r.built.iter().flatten() {
+        for p in &built.at {
+            v.extend([p[0] - b[0][0], b[1][0] - p[0], p[1] - b[0][1], b[1][1] - p[1], p[0].abs(), p[1].abs()]);
+        }
+    }
+    v
+}
+
 pub fn check(r: &mut Reader<'_>) -> Res<()> {
     let d = r.doc;
     let lens = lengths(r);
+    let places = placements(r);
     // Lengths not used.
     for k in 0..d.dims.len() {
         let dm = &d.dims[k];
         if !r.used_dims[k] {
             let tol = if approx_near(r, dm.tok) { 0.02 } else { 0.005 };
-            if !lens.iter().any(|c| close(dm.mm, *c, tol)) {
+            // A length that places something ("30 above the base", "10 from the edges")
+            // restates only a place on the part, not any size it has.
+            let candidates = if dm.role == super::super::doc::Role::Inset { &places } else { &lens };
+            if !candidates.iter().any(|c| close(dm.mm, *c, tol)) {
                 if std::env::var_os("SW_SYNTH_DEBUG").is_some() {
                     eprintln!("unplaced length {} ({:?}); candidates {lens:?}", dm.mm, dm.role);
                 }
@@ -337,15 +362,19 @@ fn is_count(d: &super::super::doc::Doc, i: usize) -> bool {
     if d.sym(i + 1, 'x') || (i > 0 && d.sym(i - 1, '=')) || (i > 0 && d.sym(i - 1, '(') && d.sym(i + 1, ')')) {
         return true;
     }
+    // The counted noun follows, past words of its own phrase only ("6 equally spaced
+    // holes", "4 M6 clearance holes"), never past a preposition ("30 above the base").
     for j in i + 1..(i + 5).min(d.len()) {
-        match d.word(j) {
-            Some(w) if super::super::lexicon::noun(w).is_some() => return true,
-            Some(
-                "tooth" | "vertex" | "point" | "side" | "sided" | "per" | "row" | "time" | "place" | "position" | "way"
-                | "spoke" | "step" | "turn",
-            ) => return true,
-            Some(w) if is_filler(w) || super::super::lexicon::shape_adjective(w).is_some() => {}
-            Some(w) if QUALS.contains(&w) || matches!(w, "m" | "metric" | "equally" | "evenly" | "whole") => {}
+        match (d.word(j), &d.toks[j].kind) {
+            (Some(w), _) if super::super::lexicon::noun(w).is_some() => return true,
+            (Some("tooth" | "vertex" | "point" | "side" | "sided" | "per" | "row" | "time" | "spoke" | "step" | "turn"), _) => {
+                return true;
+            }
+            (Some(w), _)
+                if super::super::lexicon::shape_adjective(w).is_some()
+                    || super::super::mention::LABELS.contains(&w)
+                    || matches!(w, "metric" | "equally" | "evenly" | "spaced" | "whole" | "more" | "identical") => {}
+            (None, Tk::Num { .. } | Tk::Sym('-')) => {}
             _ => return false,
         }
     }
