@@ -73,6 +73,8 @@ struct Outcome {
     refused_with_words: bool,
     /// The writer's own check of the executed part failed (not handed out).
     own_check_failed: bool,
+    /// The suite has a reference for it.
+    has_reference: bool,
     /// The manner the prompt is written in, where the suite says.
     #[serde(skip_serializing_if = "Option::is_none")]
     style: Option<String>,
@@ -113,7 +115,10 @@ impl Outcome {
         if self.refused_with_words {
             return Some(Verdict::Refused);
         }
-        let pass = self.pass?;
+        if !self.has_reference {
+            return None;
+        }
+        let Some(pass) = self.pass else { return Some(Verdict::Failed) };
         Some(match (self.executed, pass, self.own_check_failed) {
             (true, true, false) => Verdict::Exact,
             (true, false, false) => Verdict::Wrong,
@@ -260,6 +265,7 @@ fn blank(p: &Prompt) -> Outcome {
         roundtrip_ms: None,
         refused_with_words: false,
         own_check_failed: false,
+        has_reference: false,
         mesh: None,
     }
 }
@@ -376,6 +382,7 @@ fn compare(
     reference_mesh: Option<&Mesh>,
     plausible: Option<&Plausible>,
 ) {
+    o.has_reference = reference.is_some();
     let Some(mesh) = o.mesh.as_ref() else { return };
     let measured = validate::measure(mesh);
     if let Some(r) = reference {

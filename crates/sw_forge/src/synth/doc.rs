@@ -121,6 +121,7 @@ pub const QUALS: &[&str] = &[
     "tooth",
     "extruded",
     "metric",
+    "tapped",
     "clearance",
     "thread",
     "key",
@@ -657,7 +658,7 @@ impl Doc {
                 }
                 let from = self.is(q, "from");
                 let height = matches!(self.word(q), Some("above" | "below" | "over" | "under" | "up"));
-                while matches!(self.word(q + 1), Some("each" | "the" | "both" | "all" | "either" | "its" | "from")) {
+                while matches!(self.word(q + 1), Some("each" | "the" | "both" | "all" | "either" | "its" | "from" | "one" | "an" | "a")) {
                     q += 1;
                 }
                 if role == Role::Bare
@@ -688,7 +689,9 @@ impl Doc {
             // "M4 clearance holes": the screw's clearance diameter; "a 95 mm bolt circle": the
             // circle's diameter.
             let role =
-                if quals.iter().any(|w| w == "metric") || (role == Role::Bare && quals.iter().any(|w| w == "circle")) {
+                if quals.iter().any(|w| w == "metric" || w == "tapped")
+                    || (role == Role::Bare && quals.iter().any(|w| w == "circle"))
+                {
                     Role::Diameter
                 } else {
                     role

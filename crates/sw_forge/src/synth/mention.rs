@@ -135,6 +135,7 @@ pub const LABELS: &[&str] = &[
     "stepped",
     "flanged",
     "threaded",
+    "tapped",
     "smooth",
     "full",
     "half",
@@ -406,7 +407,7 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                         shape = shape.or(Some(s));
                         mods.push(v.clone());
                         true
-                    } else if noun(v).is_some() || LABELS.contains(&v.as_str()) || v == "metric" {
+                    } else if noun(v).is_some() || LABELS.contains(&v.as_str()) || v == "metric" || v == "tapped" {
                         mods.push(v.clone());
                         true
                     } else {

@@ -97,6 +97,9 @@ pub const SPELLINGS: &[(&str, &[&str])] = &[
     ("o/d", &["od"]),
     ("i/d", &["id"]),
     ("dowel-hole", &["hole"]),
+    ("set-screw", &["radial", "hole"]),
+    ("setscrew", &["radial", "hole"]),
+    ("grub-screw", &["radial", "hole"]),
 ];
 
 /// Names of standards and the number after them ("ISO 7089", "DIN 912", "NEMA 17"): a
@@ -133,6 +136,33 @@ pub fn swg_inch(g: f64) -> Option<f64> {
     TABLE.iter().find(|(n, _)| (n - g).abs() < 1e-9).map(|(_, v)| *v)
 }
 
+/// ISO coarse tap drill of a metric thread (nominal less pitch): a tapped hole is modelled
+/// as a plain hole of this size, as CAD hole tools model cosmetic threads.
+pub fn tap_drill(size: f64) -> Option<f64> {
+    const TABLE: &[(f64, f64)] = &[
+        (2.0, 1.6),
+        (2.5, 2.05),
+        (3.0, 2.5),
+        (4.0, 3.3),
+        (5.0, 4.2),
+        (6.0, 5.0),
+        (8.0, 6.8),
+        (10.0, 8.5),
+        (12.0, 10.2),
+        (14.0, 12.0),
+        (16.0, 14.0),
+        (20.0, 17.5),
+        (24.0, 21.0),
+    ];
+    TABLE.iter().find(|(s, _)| (s - size).abs() < 1e-9).map(|(_, d)| *d)
+}
+
+/// Words that make a metric size a thread ("M6 tapped", "M5 thread through", "M3 female").
+pub const THREAD: &[&str] = &["tapped", "tap", "thread", "threaded", "female", "set", "setscrew", "grub", "radial"];
+
+/// Nouns whose metric size is their thread ("Hex nut M16").
+pub const THREADED_NOUNS: &[&str] = &["nut", "standoff", "insert", "coupler"];
+
 /// The words a spelling stands for, if it is one.
 pub fn spelling(w: &str) -> Option<&'static [&'static str]> {
     SPELLINGS.iter().find(|(s, _)| *s == w).map(|(_, to)| *to)
@@ -154,7 +184,8 @@ pub fn role_prefix(w: &str) -> Option<(&'static str, f64)> {
 
 /// Words after a hole's diameter in a callout that make it a hole when no noun says so
 /// ("4x Ø6.6 thru", "Ø5 x 8 deep", "M4 clearance").
-pub const CALLOUT: &[&str] = &["through", "deep", "clearance", "blind", "drilled", "drill", "counterbore", "countersink"];
+pub const CALLOUT: &[&str] =
+    &["through", "deep", "clearance", "blind", "drilled", "drill", "counterbore", "countersink", "tapped", "thread", "threaded"];
 
 #[cfg(test)]
 mod tests {

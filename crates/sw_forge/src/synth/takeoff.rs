@@ -54,6 +54,8 @@ pub enum Solid {
     Cylinder { d: f64, l: f64 },
     Ring { od: f64, id: f64, l: f64 },
     Ball { d: f64 },
+    /// Half a ball, on its flat.
+    Dome { d: f64 },
 }
 
 impl Solid {
@@ -63,6 +65,7 @@ impl Solid {
             Solid::Cylinder { d, l } => [d, d, l],
             Solid::Ring { od, l, .. } => [od, od, l],
             Solid::Ball { d } => [d, d, d],
+            Solid::Dome { d } => [d, d, d / 2.0],
         };
         e.sort_by(f64::total_cmp);
         e
@@ -74,6 +77,7 @@ impl Solid {
             Solid::Cylinder { d, l } => PI * d * d / 4.0 * l,
             Solid::Ring { od, id, l } => PI * (od * od - id * id) / 4.0 * l,
             Solid::Ball { d } => PI * d.powi(3) / 6.0,
+            Solid::Dome { d } => PI * d.powi(3) / 12.0,
         }
     }
 }
@@ -348,6 +352,7 @@ impl<'a> Takeoff<'a> {
             (ShapeHint::Rect, Some(ShapeHint::Rect) | None) => ShapeHint::Rect,
             (ShapeHint::Rect, Some(ShapeHint::Round)) => ShapeHint::Round,
             (ShapeHint::Sphere, _) => ShapeHint::Sphere,
+            (ShapeHint::Hemisphere, _) => ShapeHint::Hemisphere,
             _ => return None,
         };
         let along = [Role::Length, Role::Height, Role::Thickness, Role::Depth];
@@ -371,10 +376,12 @@ impl<'a> Takeoff<'a> {
                     _ => None,
                 }
             }
-            ShapeHint::Sphere => {
+            ShapeHint::Sphere | ShapeHint::Hemisphere => {
                 let dia = one(&[Role::Diameter, Role::Radius, Role::Bare], &[], &[]).ok()??;
-                (dims.len() == 1 || dims.iter().all(|k| matches!(d(k).role, Role::Diameter | Role::Radius)))
-                    .then_some(Solid::Ball { d: dia })
+                let half = hint == ShapeHint::Hemisphere
+                    || (th.phrase.0..th.phrase.1).any(|i| self.doc.is(i, "half"));
+                let ok = dims.len() == 1 || dims.iter().all(|k| matches!(d(k).role, Role::Diameter | Role::Radius));
+                ok.then_some(if half { Solid::Dome { d: dia } } else { Solid::Ball { d: dia } })
             }
             _ => {
                 // Three lengths: a list ("80 x 60 x 5"), roles, sides — each role once.

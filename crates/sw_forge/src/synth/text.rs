@@ -472,7 +472,7 @@ pub fn tokenize(text: &str) -> Vec<Token> {
         toks.push(Token { kind: Tk::Word(role.into()), start: from, end: e });
     }
     inherit_units(&mut toks);
-    notes(&mut toks);
+    notes(&mut toks, text);
     toks
 }
 
@@ -494,7 +494,7 @@ fn prompt_unit(toks: &[Token]) -> f64 {
 /// lengths ("42 OD x 36 ID x 120 long", "Ø20", "thickness 5", "100 x 60 x 5 plate"), in the
 /// prompt's unit; a chamfer's "1 x 45°"; spacings "on 50 centres"; and holes named by
 /// their callout alone ("4x Ø6.6 thru", "M6 clearance").
-fn notes(toks: &mut Vec<Token>) {
+fn notes(toks: &mut Vec<Token>, text: &str) {
     let unit = prompt_unit(toks);
     let n = toks.len();
     let word = |toks: &[Token], i: usize| toks.get(i).and_then(Token::word).map(str::to_string);
@@ -651,6 +651,45 @@ fn notes(toks: &mut Vec<Token>) {
             toks[i].kind = Tk::Word("spacing".into());
         }
     }
+    // "set screw", "grub screw": a radial hole (its size the screw's thread).
+    for i in 0..toks.len().saturating_sub(1) {
+        if toks[i].word().is_some_and(|w| w == "set" || w == "grub") && toks[i + 1].is_word("screw") {
+            toks[i].kind = Tk::Word("radial".into());
+            toks[i + 1].kind = Tk::Word("hole".into());
+        }
+    }
+    // "M6 tapped", "M5 thread through", "Hex nut M16": a thread, made as its tap drill.
+    for i in 0..toks.len().saturating_sub(1) {
+        if !toks[i].is_word("metric") || toks[i + 1].start != toks[i].start {
+            continue;
+        }
+        let spelt = text.get(toks[i].start..toks[i].end).unwrap_or("").to_lowercase();
+        let nominal = spelt.get(1..).and_then(|v| v.parse::<f64>().ok());
+        let Some(drill) = nominal.and_then(super::notation::tap_drill) else { continue };
+        let sentence_end = (i..toks.len()).find(|j| toks[*j].is_sym('.') || toks[*j].is_sym(';')).unwrap_or(toks.len());
+        let sentence_start = (0..i).rev().find(|j| toks[*j].is_sym('.') || toks[*j].is_sym(';')).map_or(0, |j| j + 1);
+        let near: Vec<&str> = (i + 2..(i + 5).min(toks.len())).filter_map(|j| toks[j].word()).collect();
+        let clearance = near.iter().any(|w| *w == "clearance");
+        let tapped = near.iter().any(|w| super::notation::THREAD.contains(w))
+            || (sentence_start..sentence_end).any(|j| {
+                toks[j].word().is_some_and(|w| super::notation::THREAD.contains(&w) || (j < i && super::notation::THREADED_NOUNS.contains(&w)))
+            });
+        if tapped && !clearance {
+            if let Tk::Num { pm, signed, .. } = toks[i + 1].kind {
+                toks[i + 1].kind = Tk::Num { v: drill, unit: Some(1.0), pm, signed };
+            }
+            toks[i].kind = Tk::Word("tapped".into());
+            // A nut's or standoff's thread with no hole named: its hole.
+            let named = (i + 2..sentence_end).any(|j| {
+                toks[j].word().is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Cut(_))))
+            });
+            let threaded_noun = (sentence_start..i).any(|j| toks[j].word().is_some_and(|w| super::notation::THREADED_NOUNS.contains(&w)));
+            if !named && threaded_noun {
+                let e = toks[i + 1].end;
+                toks.insert(i + 2, Token { kind: Tk::Word("hole".into()), start: e, end: e });
+            }
+        }
+    }
     // A hole named by its callout: a diameter (or a screw's clearance) followed, before any
     // noun or the end of its phrase, by "thru", "deep", "clearance" …, or counted "4x Ø6.6".
     let mut i = 0;
@@ -658,7 +697,10 @@ fn notes(toks: &mut Vec<Token>) {
         let dia_after = matches!(toks[i].kind, Tk::Num { unit: Some(_), .. })
             && toks.get(i + 1).is_some_and(|t| t.is_word("diameter"))
             && toks.get(i + 1).is_some_and(|t| t.start == toks[i].start);
-        let metric = i > 0 && toks[i - 1].is_word("metric") && matches!(toks[i].kind, Tk::Num { unit: Some(_), .. });
+        let metric = i > 0
+            && (toks[i - 1].is_word("metric") || toks[i - 1].is_word("tapped"))
+            && toks[i - 1].start == toks[i].start
+            && matches!(toks[i].kind, Tk::Num { unit: Some(_), .. });
         if !(dia_after || metric) {
             i += 1;
             continue;

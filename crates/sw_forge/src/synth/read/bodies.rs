@@ -435,10 +435,14 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                 Some(i) if i > 0.0 && i < od && half => return half_pipe(r, e, od, i),
                 Some(i) if i > 0.0 && i < od => (Profile::Annulus { od, id: i }, od, Some(i)),
                 Some(i) => {
-                    return Err(Refusal::new(
-                        r.quote_element(e),
-                        format!("its inner diameter {i} mm does not fit inside {od} mm"),
-                    ));
+                    // Quote the sizes that disagree with the thing they size.
+                    let last = r.els[e].dims.iter().map(|k| r.dim(*k).tok).max();
+                    let first = r.els[e].mentions.first().map(|m| r.mentions[*m].start);
+                    let phrase = match (first, last) {
+                        (Some(a), Some(b)) if b >= a && b < a + 12 => r.doc.quote(a, b + 1),
+                        _ => r.quote_element(e),
+                    };
+                    return Err(Refusal::new(phrase, format!("its inner diameter {i} mm does not fit inside {od} mm")));
                 }
                 None => (Profile::Circle { d: od }, od, None),
             }

@@ -274,11 +274,12 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     }
     // A square hole is cut square; other shapes of hole are not made.
     let square = r.els[e].has_mod("square");
+    // A thread given by its metric size is made as its tap drill ("M6 tapped"); other
+    // threads, and holes of other shapes, are not made.
+    let by_size = r.els[e].dims.iter().any(|k| r.dim(*k).has("tapped"));
     if let Some(m) = r.els[e].mods.iter().find(|m| {
-        matches!(
-            m.as_str(),
-            "rectangular" | "hexagonal" | "triangular" | "oval" | "elliptical" | "slotted" | "tapped" | "threaded"
-        )
+        matches!(m.as_str(), "rectangular" | "hexagonal" | "triangular" | "oval" | "elliptical" | "slotted")
+            || (!by_size && matches!(m.as_str(), "tapped" | "threaded"))
     }) {
         return Err(Refusal::new(r.quote_element(e), format!("a {m} hole is not made")));
     }
@@ -311,10 +312,19 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         Some(a) => Some(a),
         None => cut_axis(r, e),
     };
+    // Across a round body standing on Z, unless its axis is said: a radial or cross hole.
+    let named_radial = r.els[e].has_mod("radial") || r.els[e].has_mod("cross");
+    let round_host = r.built.iter().flatten().any(|b| !b.cut && b.axis == Axis::Z && b.od.is_some());
+    let axis = match axis {
+        None if named_radial && round_host && by_points.is_none() => Some(Axis::X),
+        a => a,
+    };
     let axis = axis.or(by_points).or(thin).unwrap_or(Axis::Z);
     let count = place::count_of(r, e);
-    let radial =
-        r.says(e, "radial") || r.says(e, "radially") || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
+    let radial = r.says(e, "radial")
+        || r.says(e, "radially")
+        || named_radial
+        || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
     if radial && axis != Axis::Z {
         return radial_hole(r, e, d, axis, &tg);
     }
@@ -507,7 +517,27 @@ fn radial_hole(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, tg: &[usize]) -
     let bodies: Vec<usize> = host.and_then(|h| r.built[h].as_ref()).map(|b| b.bodies.clone()).unwrap_or_default();
     let full = extent(r, &bodies, axis);
     let zspan = extent(r, &bodies, Axis::Z);
-    let z = r.take_coord(e, Axis::Z).or_else(|| height_of(r, e)).unwrap_or((zspan[0] + zspan[1]) / 2.0);
+    // A hole across a body as wide as it (or wider) would cut it in two.
+    if d >= full[1] - full[0] - 1e-9 {
+        return Err(Refusal::new(
+            r.quote_element(e),
+            format!("a {} mm hole across a body {} mm wide would cut it in two", super::super::num::n(d), super::super::num::n(full[1] - full[0])),
+        ));
+    }
+    // "8 from one end", "at 20 from one end": from the bottom end (either end makes the same part).
+    let end_inset = r.find(e, &[Role::Inset], &[], &[]);
+    let z = match r.take_coord(e, Axis::Z).or_else(|| height_of(r, e)) {
+        Some(z) => z,
+        None => match end_inset {
+            Some(k) => {
+                r.used_dims[k] = true;
+                let dm = r.doc.dims[k].clone();
+                r.doc.mark_range(dm.phrase.0, dm.phrase.1 + 3);
+                zspan[0] + dm.mm
+            }
+            None => (zspan[0] + zspan[1]) / 2.0,
+        },
+    };
     // Through one wall of a ring (a set screw), else right through: "both walls", "a
     // through hole", or a host with no bore.
     let bored =

@@ -80,7 +80,18 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
                 format!("an edge treatment of {size} mm does not fit a body {thin} mm thin"),
             ));
         }
-        r.model.adds[bi].edges.push(EdgeOp { edges, kind, size });
+        // Said again ("both ends chamfered, same size, 1 mm"): the same treatment, once; a
+        // different size on the same edges contradicts it.
+        if let Some(prev) = r.model.adds[bi].edges.iter().find(|o| o.kind == kind && o.edges == edges) {
+            if (prev.size - size).abs() > 1e-9 {
+                return Err(Refusal::new(
+                    r.quote_dim(k),
+                    format!("these edges are already treated with {} mm, not {size} mm", prev.size),
+                ));
+            }
+        } else {
+            r.model.adds[bi].edges.push(EdgeOp { edges, kind, size });
+        }
         let dm = &d.dims[k];
         d.mark_range(dm.phrase.0.min(dm.tok), dm.phrase.1.max(dm.tok + 1));
         // "1 x 45°": a chamfer's 45 degrees, the only angle one size gives.
