@@ -562,6 +562,15 @@ impl Doc {
                 }
                 match &self.toks[j].kind {
                     Tk::Word(w) if w == "and" || w == "with" || w == "has" || w == "have" => break,
+                    // "a 100 mm length of 20 mm bar": the role before "of" is the earlier number's.
+                    Tk::Word(w)
+                        if w == "of"
+                            && j >= 2
+                            && self.word(j - 1).is_some_and(|r| role_of(r).is_some())
+                            && matches!(self.toks[j - 2].kind, Tk::Num { .. }) =>
+                    {
+                        break;
+                    }
                     Tk::Word(w) => before.push((j, w.clone())),
                     Tk::Sym('x') => {}
                     _ => break,

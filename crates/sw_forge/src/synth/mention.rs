@@ -674,8 +674,9 @@ fn fits(kind: Noun, dim: Option<&super::doc::Dim>) -> bool {
     let role = dim.role;
     match kind {
         Noun::Cut(CutKind::Hole | CutKind::Bore | CutKind::Counterbore | CutKind::Countersink) => {
+            let polygon = dim.has("across") && (dim.has("flat") || dim.has("corner"));
             matches!(role, Diameter | Radius | Depth | Inset | Spacing)
-                || (role == Bare && dim.axis.is_none() && (dim.list.is_none() || dim.has("pattern")))
+                || (role == Bare && !polygon && dim.axis.is_none() && (dim.list.is_none() || dim.has("pattern")))
                 || (role == Bare && dim.has("pattern"))
         }
         Noun::Fillet | Noun::Chamfer => matches!(role, Bare | Fillet | Chamfer | Radius),

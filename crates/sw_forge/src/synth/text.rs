@@ -500,13 +500,30 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
     let word = |toks: &[Token], i: usize| toks.get(i).and_then(Token::word).map(str::to_string);
     let is_role = |w: &str| super::doc::role_of(w).is_some() && !matches!(w, "side" | "sided" | "extruded" | "extrude");
     let unitless = |t: &Token| matches!(t.kind, Tk::Num { unit: None, .. });
+    // "0.5x45 chfr": a chamfer's angle written without its degree sign.
+    for i in 2..toks.len() {
+        let angle = matches!(toks[i].kind, Tk::Num { v, unit: None, .. } if v == 45.0)
+            && toks[i - 1].is_sym('x')
+            && matches!(toks[i - 2].kind, Tk::Num { v, .. } if v < 45.0)
+            && !toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
+            && !toks.get(i + 1).and_then(Token::word).is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Body(_))));
+        if angle {
+            toks[i].kind = Tk::Deg(45.0);
+            if let Tk::Num { v, unit: None, pm, signed } = toks[i - 2].kind {
+                toks[i - 2].kind = Tk::Num { v, unit: Some(unit), pm, signed };
+            }
+        }
+    }
     let mut length = vec![false; n];
     for i in 0..n {
         if !unitless(&toks[i]) || (i > 0 && toks[i - 1].is_sym('=')) {
             continue;
         }
         let next = word(toks, i + 1);
-        let length_noun = next.as_deref().is_some_and(|w| super::notation::LENGTH_NOUNS.contains(&w));
+        let length_noun = next.as_deref().is_some_and(|w| super::notation::LENGTH_NOUNS.contains(&w))
+            // "40 base diameter": a qualifier noun before the role.
+            || (next.as_deref().is_some_and(|w| super::doc::QUALS.contains(&w))
+                && word(toks, i + 2).as_deref().is_some_and(is_role));
         // A count: "6 holes", "4x Ø6.6", "16 teeth", "4 x M6".
         if !length_noun
             && next.as_deref().is_some_and(|w| super::lexicon::noun(w).is_some() || matches!(w, "tooth" | "vertex" | "point"))
@@ -617,20 +634,6 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
     for (i, t) in toks.iter_mut().enumerate() {
         if let (true, Tk::Num { v, unit: None, pm, signed }) = (length[i], &t.kind) {
             t.kind = Tk::Num { v: *v, unit: Some(unit), pm: *pm, signed: *signed };
-        }
-    }
-    // "0.5x45 chfr": a chamfer's angle written without its degree sign.
-    for i in 2..toks.len() {
-        let angle = matches!(toks[i].kind, Tk::Num { v, unit: None, .. } if v == 45.0)
-            && toks[i - 1].is_sym('x')
-            && matches!(toks[i - 2].kind, Tk::Num { v, .. } if v < 45.0)
-            && !toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
-            && !toks.get(i + 1).and_then(Token::word).is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Body(_))));
-        if angle {
-            toks[i].kind = Tk::Deg(45.0);
-            if let Tk::Num { v, unit: None, pm, signed } = toks[i - 2].kind {
-                toks[i - 2].kind = Tk::Num { v, unit: Some(unit), pm, signed };
-            }
         }
     }
     // "1 x 45°", "45° x 1": the times sign between a chamfer's size and angle is no list.
