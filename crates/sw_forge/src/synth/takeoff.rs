@@ -232,7 +232,9 @@ impl<'a> Takeoff<'a> {
             // A thing announced without its sizes ("a shaft with a keyway: … A rectangular
             // keyway runs …") is the same when named again with them.
             let announced = same.is_some_and(|t| !clause_sized(doc, things[t].phrase.1) && things[t].count.is_none_or(|c| c <= 1));
-            let refers = det.is_some_and(definite) || det.is_none() || prep || announced;
+            // Named again with no size of its own ("…; a single through hole", "one block").
+            let again = same.is_some() && !clause_sized(doc, h);
+            let refers = det.is_some_and(definite) || det.is_none() || prep || announced || again;
             let id = match (same, refers) {
                 (Some(t), true) => t,
                 _ if kind == Noun::Whole && !things.is_empty() => 0,

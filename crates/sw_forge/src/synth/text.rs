@@ -485,9 +485,12 @@ fn marker(toks: &[Token], i: usize) -> bool {
         && matches!(toks[i - 1].kind, Tk::Num { .. })
 }
 
-/// The factor of the prompt's own unit: that of its first length with a unit, else mm.
+/// The unit of a prompt's numbers written without one: inches when every unit it writes is
+/// the inch, else millimetres (a drawing's default; "50 x 50 x 6, 1 m length" is in mm).
 fn prompt_unit(toks: &[Token]) -> f64 {
-    toks.iter().find_map(|t| if let Tk::Num { unit: Some(f), .. } = t.kind { Some(f) } else { None }).unwrap_or(1.0)
+    let units: Vec<f64> =
+        toks.iter().filter_map(|t| if let Tk::Num { unit: Some(f), .. } = t.kind { Some(f) } else { None }).collect();
+    if !units.is_empty() && units.iter().all(|f| (f - 25.4).abs() < 1e-9) { 25.4 } else { 1.0 }
 }
 
 /// Drawing-note lengths: numbers written without a unit that the words around them make
@@ -550,7 +553,16 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
                 && next2.as_deref().is_some_and(|w| is_role(w) || w == "from"))
             || next.as_deref().is_some_and(|w| super::notation::SPACING_AFTER.contains(&w))
             || next.as_deref().is_some_and(|w| super::notation::LENGTH_AFTER.contains(&w));
-        let prev = if i >= 2 && (toks[i - 1].is_word("of") || toks[i - 1].is_sym(':') || toks[i - 1].is_sym('=')) {
+        // "diameter 20", "thickness: 5", "its diameter is 30", "length of 120".
+        let prev = if i >= 2
+            && (toks[i - 1].is_word("of")
+                || toks[i - 1].is_word("is")
+                || toks[i - 1].is_word("are")
+                || toks[i - 1].is_word("measures")
+                || toks[i - 1].is_word("being")
+                || toks[i - 1].is_sym(':')
+                || toks[i - 1].is_sym('='))
+        {
             word(toks, i - 2)
         } else {
             i.checked_sub(1).and_then(|p| word(toks, p))

@@ -264,8 +264,17 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                         x.prep.as_deref().is_some_and(|p| p != "with")
                             || (x.definite && x.prep.as_deref() != Some("with"))
                     });
+                    // Or the shape of a thing made ("what a hexagon gives" of a hex bar).
+                    let shape = match r.els[e].kind {
+                        Noun::Body(h) if r.els[e].dims.is_empty() => Some(h),
+                        _ => None,
+                    };
                     let same_noun_made = (0..r.els.len()).any(|o| {
-                        o != e && r.done[o] && (r.els[o].noun == r.els[e].noun || r.els[o].has_mod(&r.els[e].noun))
+                        o != e
+                            && r.done[o]
+                            && (r.els[o].noun == r.els[e].noun
+                                || r.els[o].has_mod(&r.els[e].noun)
+                                || (shape.is_some() && r.built[o].is_some() && r.shape_of(o) == shape))
                     });
                     if referenced
                         || same_noun_made
