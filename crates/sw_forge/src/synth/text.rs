@@ -111,6 +111,12 @@ pub fn fold(w: &str) -> String {
     if let Some((_, to)) = SAME.iter().find(|(from, _)| *from == w) {
         return (*to).to_string();
     }
+    // "that's", "bar's": the word itself.
+    if let Some(base) = w.strip_suffix("'s").or_else(|| w.strip_suffix("’s"))
+        && !base.is_empty()
+    {
+        return fold(base);
+    }
     for (suffix, keep) in [("sses", 2), ("oes", 1), ("ches", 2), ("shes", 2), ("xes", 1)] {
         if w.len() > suffix.len() && w.ends_with(suffix) {
             return w[..w.len() - suffix.len() + keep].to_string();

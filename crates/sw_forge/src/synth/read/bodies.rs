@@ -37,6 +37,13 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
             r.mark_element(e);
             continue;
         }
+        // The walls and floor of a hollowed part are its shell's, read with it.
+        if !r.els[e].title
+            && matches!(r.els[e].noun.as_str(), "wall" | "floor")
+            && super::treat::hollow_box(r).is_some()
+        {
+            continue;
+        }
         // A body with no quantity of its own is a name or a reference ("through the wall",
         // "(bottom flange)"), not a new body; what it asks is checked when all is read.
         let el = &r.els[e];

@@ -4,7 +4,7 @@
 //! and the body is shelled inward with 2mm wall thickness").
 
 use super::super::doc::Role;
-use super::super::lexicon::Noun;
+use super::super::lexicon::{Noun, ShapeHint};
 use super::super::solid::{Axis, EdgeKind, EdgeOp, Edges, Shape, Shell};
 use super::{Reader, Refusal, Res};
 
@@ -183,16 +183,39 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
 
 /// "shelled inward with 2mm wall thickness", with the face removed ("the top face (+Z)
 /// is removed", "open on top").
+/// Whether the words hollow the part: "shelled", "hollowed", or a box "open at the top" with
+/// its walls' thickness ("3 mm walls and floor").
+pub fn hollowed(d: &super::super::doc::Doc) -> Option<usize> {
+    (0..d.len()).find(|i| matches!(d.word(*i), Some("shelled" | "shell" | "hollowed"))).or_else(|| {
+        let walls = d.dims.iter().any(|x| x.has("wall") && x.role == Role::Thickness);
+        (0..d.len()).find(|i| walls && matches!(d.word(*i), Some("open" | "open-top" | "open-topped")))
+    })
+}
+
+/// Whether the part is a box the words hollow (not a channel or tube, open by its section).
+pub fn hollow_box(r: &Reader<'_>) -> Option<usize> {
+    let at = hollowed(r.doc)?;
+    let named = matches!(r.doc.word(at), Some("shelled" | "shell" | "hollowed"));
+    let t = r.els.iter().position(|e| e.title)?;
+    (named || matches!(r.shape_of(t), Some(ShapeHint::Rect) | None)).then_some(at)
+}
+
 fn shell(r: &mut Reader<'_>) -> Res<()> {
     let d = r.doc;
-    let Some(at) = (0..d.len()).find(|i| matches!(d.word(*i), Some("shelled" | "shell" | "hollowed"))) else {
+    let Some(at) = hollow_box(r) else {
         return Ok(());
     };
     let s = d.sent[at];
     let (a, b) = d.sentence(s);
-    let k = (0..d.dims.len()).find(|k| {
-        !r.used_dims[*k] && d.sent[d.dims[*k].tok] == s && matches!(d.dims[*k].role, Role::Thickness | Role::Bare)
-    });
+    let k = (0..d.dims.len())
+        .find(|k| !r.used_dims[*k] && d.dims[*k].has("wall") && d.dims[*k].role == Role::Thickness)
+        .or_else(|| {
+            (0..d.dims.len()).find(|k| {
+                !r.used_dims[*k]
+                    && d.sent[d.dims[*k].tok] == s
+                    && matches!(d.dims[*k].role, Role::Thickness | Role::Bare)
+            })
+        });
     let Some(k) = k else { return Err(Refusal::new(d.quote(at, at), "the shell's wall thickness is not given")) };
     let t = d.dims[k].mm;
     r.used_dims[k] = true;
@@ -204,6 +227,28 @@ fn shell(r: &mut Reader<'_>) -> Res<()> {
     let thin = (0..3).map(|i| bb[1][i] - bb[0][i]).fold(f64::INFINITY, f64::min);
     if t <= 0.0 || 2.0 * t >= thin {
         return Err(Refusal::new(d.quote(at, at), format!("a {t} mm wall does not fit a body {thin} mm thin")));
+    }
+    // The walls and the floor are the shell's; a floor of another thickness is not made.
+    for name in ["wall", "floor", "side", "base"] {
+        for e in r.elements_named(name) {
+            if r.built[e].is_some() || r.els[e].title {
+                continue;
+            }
+            for k in r.els[e].dims.clone() {
+                let x = &d.dims[k];
+                if r.used_dims[k] || !(x.role == Role::Thickness || (x.role == Role::Bare && x.list.is_none())) {
+                    continue;
+                }
+                if (x.mm - t).abs() > 1e-9 {
+                    return Err(Refusal::new(
+                        r.quote_dim(k),
+                        format!("a {name} of {} mm in a shell of {t} mm walls is not made", x.mm),
+                    ));
+                }
+                r.used_dims[k] = true;
+            }
+            r.mark_element(e);
+        }
     }
     r.model.adds[bi].shell = Some(Shell { axis: Axis::Z, max: open_top, t });
     d.mark(at);
