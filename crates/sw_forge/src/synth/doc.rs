@@ -689,7 +689,12 @@ impl Doc {
             // "120 across", "45 inside", "50 outside": a diameter; "16 square": a side.
             let role = match (role, after.first().map(|(_, w)| w.as_str()), after.get(1).map(|(_, w)| w.as_str())) {
                 (Role::Bare, Some("across"), next) if !matches!(next, Some("flat" | "corner")) => Role::Diameter,
-                (Role::Bare, Some("inside" | "outside"), _) => Role::Diameter,
+                // Not the last of a list ("60 x 40 outside": the box's outside).
+                (Role::Bare, Some("inside" | "outside"), _)
+                    if !(i > 0 && (self.sym(i - 1, 'x') || self.is(i - 1, "by"))) =>
+                {
+                    Role::Diameter
+                }
                 (Role::Bare, Some("square"), next) if !next.is_some_and(|w| super::lexicon::noun(w).is_some()) => {
                     Role::Side
                 }

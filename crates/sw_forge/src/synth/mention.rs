@@ -656,6 +656,7 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
         mentions[mi].elem = id;
     }
     attach(doc, mentions, &mut elements);
+    bare_lengths_to_the_part(doc, &mut elements);
     elements
 }
 
@@ -675,6 +676,10 @@ fn fits(kind: Noun, dim: Option<&super::doc::Dim>) -> bool {
     match kind {
         Noun::Cut(CutKind::Hole | CutKind::Bore | CutKind::Counterbore | CutKind::Countersink) => {
             let polygon = dim.has("across") && (dim.has("flat") || dim.has("corner"));
+            // An outside size is never a hole's ("bore 12, OD 25").
+            if dim.has("outer") {
+                return false;
+            }
             matches!(role, Diameter | Radius | Depth | Inset | Spacing)
                 || (role == Bare && !polygon && dim.axis.is_none() && (dim.list.is_none() || dim.has("pattern")))
                 || (role == Bare && dim.has("pattern"))
@@ -720,6 +725,49 @@ fn owner_fit(
         return Some(m.elem);
     }
     mentions.iter().rev().find(|m| m.sent < s && m.prep.is_none()).map(|m| m.elem)
+}
+
+/// A hole whose diameter is given takes no bare length of no kind ("Hex standoff, M3, 5.5
+/// A/F, 30 mm, threaded through": the 30 is the part's): it goes to the part.
+fn bare_lengths_to_the_part(doc: &Doc, elements: &mut [Element]) {
+    let Some(t) = elements.iter().position(|e| e.title && matches!(e.kind, Noun::Body(_))) else { return };
+    for c in 0..elements.len() {
+        if c == t || !matches!(elements[c].kind, Noun::Cut(_)) {
+            continue;
+        }
+        let first_d = elements[c]
+            .dims
+            .iter()
+            .filter(|k| {
+                let d = &doc.dims[**k];
+                matches!(d.role, super::doc::Role::Diameter | super::doc::Role::Radius)
+                    && !d.has("counterbore")
+                    && !d.has("countersink")
+            })
+            .map(|k| doc.dims[*k].tok)
+            .min();
+        let Some(first_d) = first_d else { continue };
+        let moved: Vec<usize> = elements[c]
+            .dims
+            .iter()
+            .copied()
+            .filter(|k| {
+                let d = &doc.dims[*k];
+                d.role == super::doc::Role::Bare
+                    && d.quals.is_empty()
+                    && d.list.is_none()
+                    && d.axis.is_none()
+                    && !d.paren
+                    && d.tok > first_d
+            })
+            .collect();
+        if moved.is_empty() {
+            continue;
+        }
+        elements[c].dims.retain(|k| !moved.contains(k));
+        elements[t].dims.extend(moved);
+        elements[t].dims.sort_unstable();
+    }
 }
 
 fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {

@@ -846,6 +846,32 @@ fn inherit_units(toks: &mut [Token]) {
             }
         }
     }
+    // "legs of 50 and 20 mm", "30, 40 and 50 mm": a run of numbers ending in one with a unit.
+    for i in (2..n).rev() {
+        let Tk::Num { unit: Some(f), .. } = toks[i].kind else { continue };
+        let mut run = Vec::new();
+        let mut j = i;
+        while j >= 2 && (toks[j - 1].is_word("and") || toks[j - 1].is_sym(',')) {
+            match toks[j - 2].kind {
+                Tk::Num { unit: None, .. } => {
+                    run.push(j - 2);
+                    j -= 2;
+                }
+                _ => break,
+            }
+        }
+        // Not coordinates ("X = -24, -12, 0, 12, 24mm"), which are read as such.
+        let coordinates = run.iter().chain([&i]).any(|k| {
+            matches!(toks[*k].kind, Tk::Num { signed: true, .. }) || (*k >= 1 && toks[*k - 1].is_sym('='))
+        });
+        if !coordinates {
+            for k in run {
+                if let Tk::Num { v, unit: None, pm, signed } = toks[k].kind {
+                    toks[k].kind = Tk::Num { v, unit: Some(f), pm, signed };
+                }
+            }
+        }
+    }
     // "at 0, 60, 120, 180, 240, and 300 degrees": the run before an angle.
     let mut i = n;
     while i > 0 {

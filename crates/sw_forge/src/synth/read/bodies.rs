@@ -357,6 +357,8 @@ fn build(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         ShapeHint::Torus => torus(r, e),
         ShapeHint::Capsule => capsule(r, e),
         ShapeHint::Pyramid => pyramid(r, e),
+        // "a wedge with legs of 50 and 20": a right triangle extruded.
+        ShapeHint::Wedge if r.els[e].dims.iter().any(|k| r.dim(*k).has("leg")) => right_triangle(r, e),
         ShapeHint::Wedge => wedge(r, e),
         ShapeHint::Section(_) => Err(Refusal::new(r.quote_element(e), "a named cross-section it could not size")),
     }
@@ -470,7 +472,9 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                     r.take(e, &[Role::Bare, Role::Diameter, Role::Width], &["across", "flat"], &[])
                         .map(|af| af / (std::f64::consts::PI / n as f64).cos())
                 })
-                .or_else(|| r.take_diameter(e, &[], NOT_OUTER));
+                .or_else(|| r.take_diameter(e, &[], NOT_OUTER))
+                // "an equilateral triangle of 40 mm sides": a regular polygon by its side.
+                .or_else(|| r.take(e, &[Role::Side], &[], &[]).map(|s| s / (std::f64::consts::PI / n as f64).sin()));
             let d = need(d, "circumscribed diameter", r, e)?;
             // A triangle stands on its base (a corner on +v); other polygons have a corner on
             // +u, but one given across its flats lies on a flat (an octagon's flats on both axes).
@@ -528,6 +532,10 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
         });
         if len.is_none() && shape == ShapeHint::Star {
             len = r.take(e, &[Role::Width], &["face"], &[]);
+        }
+        // A collar's or pulley's width is its length along its axis.
+        if len.is_none() && matches!(shape, ShapeHint::Round | ShapeHint::Ring) {
+            len = r.take(e, &[Role::Width], &[], &["face", "wall"]);
         }
         // "Ø20 x 50 pin", "Ø100 x 6 disc": the one length written after its diameter.
         if len.is_none() {
@@ -843,11 +851,28 @@ pub fn cylinder_with_caps(r: &mut Reader<'_>, e: usize, d: f64, l: f64) -> Res<B
 }
 
 fn pyramid(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    // A rectangular frustum: two X-by-Y pairs, the base's and the top's.
+    // A rectangular frustum: two X-by-Y pairs, the base's and the top's; or two squares
+    // ("60 square at the bottom and 30 square at the top"), or two lists ("60 x 40 base,
+    // 30 x 20 top"), the bottom's first unless the words say which is the top.
     let pairs: Vec<usize> =
         r.free_dims(e).into_iter().filter(|k| matches!(r.dim(*k).axis, Some(Axis::X | Axis::Y))).collect();
+    let sides: Vec<usize> = r.free_dims(e).into_iter().filter(|k| r.dim(*k).role == Role::Side).collect();
+    let lists: Vec<usize> = r.free_dims(e).into_iter().filter(|k| r.dim(*k).list.is_some()).collect();
+    let pairs = if pairs.len() == 4 {
+        pairs
+    } else if sides.len() == 2 {
+        vec![sides[0], sides[0], sides[1], sides[1]]
+    } else if lists.len() == 4 {
+        lists
+    } else {
+        pairs
+    };
     if pairs.len() == 4 {
-        let v: Vec<f64> = pairs.iter().map(|k| r.dim(*k).mm).collect();
+        let mut v: Vec<f64> = pairs.iter().map(|k| r.dim(*k).mm).collect();
+        let top_first = r.dim(pairs[0]).has("top") && !r.dim(pairs[2]).has("top");
+        if top_first {
+            v = vec![v[2], v[3], v[0], v[1]];
+        }
         for k in &pairs {
             r.used_dims[*k] = true;
         }
@@ -943,11 +968,23 @@ fn right_triangle(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             r.used_dims[k] = true;
         }
     }
+    // "legs of 50 and 20 mm": the second leg listed with the first.
+    if legs.len() == 1 {
+        let more: Vec<usize> = r
+            .free_dims(e)
+            .into_iter()
+            .filter(|k| r.dim(*k).role == Role::Bare && r.dim(*k).quals.is_empty() && r.dim(*k).axis.is_none())
+            .collect();
+        if let [k] = more.as_slice() {
+            r.used_dims[*k] = true;
+            legs.push((Axis::Y, r.dim(*k).mm));
+        }
+    }
     let [(a1, l1), (a2, l2)] = legs.as_slice() else {
         return Err(Refusal::new(r.quote_element(e), "a right triangle needs its two legs"));
     };
     let along = Axis::ALL.into_iter().find(|a| a != a1 && a != a2).unwrap_or(Axis::Z);
-    let h = need(r.take(e, &[Role::Length, Role::Height, Role::Bare], &[], &[]), "extrusion", r, e)?;
+    let h = need(r.take(e, &[Role::Length, Role::Height, Role::Thickness, Role::Bare], &[], &[]), "extrusion", r, e)?;
     let (u, _) = along.uv();
     // In (u, v): the leg along u, the other along v.
     let (lu, lv) = if *a1 == u { (*l1, *l2) } else { (*l2, *l1) };
@@ -964,7 +1001,7 @@ fn right_triangle(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         },
     ));
     for i in 0..r.doc.len() {
-        if matches!(r.doc.word(i), Some("right" | "angle" | "right-angle" | "triangle" | "leg")) {
+        if matches!(r.doc.word(i), Some("right" | "angle" | "right-angle" | "right-angled" | "triangle" | "leg" | "extruded")) {
             r.doc.mark(i);
         }
     }

@@ -249,8 +249,9 @@ impl Reader<'_> {
         {
             return Some(ShapeHint::Section(super::lexicon::Section::L));
         }
-        // A tapered or truncated rectangular block is a rectangular frustum.
-        if (el.has_mod("tapered") || el.has_mod("truncated")) && (el.has_mod("rectangular") || el.has_mod("square")) {
+        // A tapered or truncated rectangular block, or a square frustum, is a rectangular frustum.
+        let squared = el.has_mod("rectangular") || el.has_mod("square");
+        if squared && (el.has_mod("tapered") || el.has_mod("truncated") || el.noun == "frustum") {
             return Some(ShapeHint::Pyramid);
         }
         // A rectangular or square tube or pipe is a hollow box section.
