@@ -653,6 +653,15 @@ impl Doc {
                     quals.push("from-center".into());
                 }
             }
+            // "R5", "R2 on OD": a radius called out on a drawing rounds edges.
+            let role = if role == Role::Radius
+                && self.toks.get(i + 1).is_some_and(|t| t.is_word("radius") && t.start == self.toks[i].start)
+                && !after.iter().any(|(_, w)| super::lexicon::noun(w).is_some_and(|n| !matches!(n, super::lexicon::Noun::Body(_)) ) && w != "corner" && w != "edge")
+            {
+                Role::Fillet
+            } else {
+                role
+            };
             // "1 x 45°", "1 mm 45° chamfer": a chamfer's size before its angle.
             let role = if matches!(self.toks.get(i + 1).map(|t| &t.kind), Some(Tk::Deg(_))) && role == Role::Bare {
                 Role::Chamfer
@@ -687,7 +696,8 @@ impl Doc {
                 }
             };
             // "120 across", "45 inside", "50 outside": a diameter; "16 square": a side.
-            let role = match (role, after.first().map(|(_, w)| w.as_str()), after.get(1).map(|(_, w)| w.as_str())) {
+            let past_the = |k: usize| after.iter().map(|(_, w)| w.as_str()).filter(|w| *w != "the").nth(k);
+            let role = match (role, after.first().map(|(_, w)| w.as_str()), past_the(1)) {
                 (Role::Bare, Some("across"), next) if !matches!(next, Some("flat" | "corner")) => Role::Diameter,
                 // Not the last of a list ("60 x 40 outside": the box's outside).
                 (Role::Bare, Some("inside" | "outside"), _)

@@ -785,7 +785,9 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
                 owner_fit(doc, mentions, d.tok, Some(d), &kinds)
             };
         // "Total height 35mm", "40mm overall length": the part's own.
-        let o = if d.has("total") || d.has("overall") { elements.iter().position(|e| e.title).or(o) } else { o };
+        // (Not a cut's own: "a slot, 40 long overall".)
+        let of_cut = o.is_some_and(|o| matches!(elements[o].kind, Noun::Cut(_)));
+        let o = if (d.has("total") || d.has("overall")) && !of_cut { elements.iter().position(|e| e.title).or(o) } else { o };
         if let Some(o) = o.and_then(|o| elements.get_mut(o)) {
             o.dims.push(k);
         }

@@ -98,6 +98,18 @@ pub const SPELLINGS: &[(&str, &[&str])] = &[
     ("i/d", &["id"]),
     ("dowel-hole", &["hole"]),
     ("set-screw", &["radial", "hole"]),
+    // Contractions: the copula is read ("that's a ring": the ring is the washer).
+    ("that's", &["that", "is"]),
+    ("it's", &["it", "is"]),
+    ("what's", &["what", "is"]),
+    ("there's", &["there", "is"]),
+    ("here's", &["here", "is"]),
+    ("female-female", &["female"]),
+    ("male-female", &["female"]),
+    ("l-angle", &["angle"]),
+    ("unequal-angle", &["angle"]),
+    ("equal-angle", &["angle"]),
+    ("angle-iron", &["angle"]),
     ("setscrew", &["radial", "hole"]),
     ("grub-screw", &["radial", "hole"]),
 ];

@@ -536,6 +536,22 @@ impl<'a> Takeoff<'a> {
                 reason: format!("the words name {named} cuts, but {made} were made"),
             });
         }
+        // A polygon said of a body is one of the part's bodies ("a hexagonal spacer" is no
+        // round one).
+        for th in self.things.iter().filter(|t| matches!(t.kind, Noun::Body(_)) && !t.place) {
+            if let Some(ShapeHint::Ngon(n)) = th.shape {
+                let has = model.adds.iter().chain(model.cuts.iter()).any(|b| {
+                    matches!(&b.shape, super::solid::Shape::Prism { profile: super::profile::Profile::Ngon { n: m, .. }, .. } if *m == n)
+                        || matches!(&b.shape, super::solid::Shape::Prism { profile: super::profile::Profile::Poly(p), .. } if p.len() == n)
+                });
+                if !has {
+                    return Err(Disagreement {
+                        phrase: d.quote(th.phrase.0, th.phrase.1),
+                        reason: format!("the words make it a {n}-sided prism, but no such body was read"),
+                    });
+                }
+            }
+        }
         // Counted things: the largest count said, for cuts whose count is not.
         let count_max = self.things.iter().filter_map(|t| t.count).max().unwrap_or(1);
         let fmt = |e: [f64; 3]| format!("{} x {} x {} mm", super::num::n(e[0]), super::num::n(e[1]), super::num::n(e[2]));

@@ -589,6 +589,8 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
                             | super::doc::Role::Chamfer
                     )
                 ) && !matches!(w, "long" | "wide" | "thick" | "tall" | "high" | "deep")
+                    // "bore 25", "hole 6": a hole's diameter after its noun.
+                    || (i >= 1 && matches!(w, "bore" | "hole") && toks[i - 1].word() == Some(w))
             });
         // "1 x 45°": a chamfer's size.
         let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x')) && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
@@ -659,7 +661,8 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
     while i + 1 < toks.len() {
         let num = |t: &Token| matches!(t.kind, Tk::Num { unit: Some(_), .. });
         let deg = |t: &Token| matches!(t.kind, Tk::Deg(_));
-        if toks[i].is_sym('x') && ((num(&toks[i - 1]) && deg(&toks[i + 1])) || (deg(&toks[i - 1]) && num(&toks[i + 1]))) {
+        let times = toks[i].is_sym('x') || toks[i].is_word("by");
+        if times && ((num(&toks[i - 1]) && deg(&toks[i + 1])) || (deg(&toks[i - 1]) && num(&toks[i + 1]))) {
             toks.remove(i);
         }
         i += 1;
@@ -715,9 +718,13 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
     // noun or the end of its phrase, by "thru", "deep", "clearance" …, or counted "4x Ø6.6".
     let mut i = 0;
     while i < toks.len() {
-        let dia_after = matches!(toks[i].kind, Tk::Num { unit: Some(_), .. })
-            && toks.get(i + 1).is_some_and(|t| t.is_word("diameter"))
-            && toks.get(i + 1).is_some_and(|t| t.start == toks[i].start);
+        let bored = i >= 1
+            && matches!(toks[i].kind, Tk::Num { unit: Some(_), .. })
+            && toks[i - 1].word().is_some_and(|w| matches!(w, "bored" | "drilled"));
+        let dia_after = bored
+            || (matches!(toks[i].kind, Tk::Num { unit: Some(_), .. })
+                && toks.get(i + 1).is_some_and(|t| t.is_word("diameter"))
+                && toks.get(i + 1).is_some_and(|t| t.start == toks[i].start));
         let metric = i > 0
             && (toks[i - 1].is_word("metric") || toks[i - 1].is_word("tapped"))
             && toks[i - 1].start == toks[i].start
@@ -726,9 +733,12 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             i += 1;
             continue;
         }
-        let at = if dia_after { i + 2 } else { i + 1 };
+        let marked = toks.get(i + 1).is_some_and(|t| t.is_word("diameter") && t.start == toks[i].start);
+        let at = if dia_after && marked { i + 2 } else { i + 1 };
         let first = if metric { i - 1 } else { i };
-        let counted = first >= 2 && toks[first - 1].is_sym('x') && matches!(toks[first - 2].kind, Tk::Num { unit: None, .. });
+        let counted = (first >= 2 && toks[first - 1].is_sym('x') && matches!(toks[first - 2].kind, Tk::Num { unit: None, .. }))
+            // "bored 22 mm through", "drilled 6 mm".
+            || (first >= 1 && toks[first - 1].word().is_some_and(|w| matches!(w, "bored" | "drilled")));
         // Up to the end of its phrase: a callout word, and no noun naming what it is (a
         // counterbore or countersink is the hole's own).
         let mut said = counted;

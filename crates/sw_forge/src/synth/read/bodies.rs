@@ -476,6 +476,7 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                 // "an equilateral triangle of 40 mm sides": a regular polygon by its side.
                 .or_else(|| r.take(e, &[Role::Side], &[], &[]).map(|s| s / (std::f64::consts::PI / n as f64).sin()));
             let d = need(d, "circumscribed diameter", r, e)?;
+            mark_words(r, &["triangle", "equilateral", "hexagon", "octagon", "regular", "polygon"]);
             // A triangle stands on its base (a corner on +v); other polygons have a corner on
             // +u, but one given across its flats lies on a flat (an octagon's flats on both axes).
             let phase = if n == 3 {

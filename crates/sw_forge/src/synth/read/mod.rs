@@ -262,6 +262,11 @@ impl Reader<'_> {
         // A named solid ("cone", "sphere", "gear") keeps its kind; "hollow cylinder" is a ring.
         match (el.shape, from_noun) {
             (Some(ShapeHint::Ring), Some(ShapeHint::Round | ShapeHint::Ring)) => Some(ShapeHint::Ring),
+            // "a hexagonal spacer": the polygon, its bore a hole.
+            (
+                Some(a @ (ShapeHint::Ngon(_) | ShapeHint::Ellipse | ShapeHint::Stadium | ShapeHint::Star)),
+                Some(ShapeHint::Ring),
+            ) => Some(a),
             (Some(ShapeHint::Round), Some(ShapeHint::Ring)) => Some(ShapeHint::Ring),
             (Some(a), Some(ShapeHint::Round | ShapeHint::Rect)) => Some(a),
             (_, Some(n)) => Some(n),

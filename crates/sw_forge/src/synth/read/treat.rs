@@ -56,7 +56,9 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
         let kind = match dm.role {
             Role::Fillet => Some(EdgeKind::Fillet),
             Role::Chamfer => Some(EdgeKind::Chamfer),
-            Role::Radius if rounding && (a..b).any(|i| d.is(i, "edge")) => Some(EdgeKind::Fillet),
+            Role::Radius if (a..b).any(|i| matches!(d.word(i), Some("edge" | "corner"))) && (rounding || role_on_edges(d, dm)) => {
+                Some(EdgeKind::Fillet)
+            }
             _ => None,
         };
         if let Some(kind) = kind {
@@ -106,6 +108,11 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
     shell(r)
 }
 
+/// "a 2 mm radius on both outside edges": a radius said on edges rounds them.
+fn role_on_edges(d: &super::super::doc::Doc, dm: &super::super::doc::Dim) -> bool {
+    (dm.phrase.1..(dm.phrase.1 + 5).min(d.len())).any(|i| matches!(d.word(i), Some("edge" | "corner")))
+}
+
 /// The edges a sentence selects on a body.
 fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
     let d = r.doc;
@@ -121,7 +128,10 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
             let named = (a..i).any(|j| {
                 matches!(
                     d.word(j),
-                    Some("top" | "bottom" | "vertical" | "long" | "circular" | "all" | "four" | "each" | "every")
+                    Some(
+                        "top" | "bottom" | "vertical" | "long" | "circular" | "all" | "four" | "each" | "every"
+                            | "outside" | "outer" | "od" | "both"
+                    )
                 )
             });
             if counted || (raw == "edge" && !named) {
@@ -141,8 +151,11 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
     }
     let round =
         matches!(&r.model.adds[bi].shape, Shape::Prism { profile: super::super::profile::Profile::Circle { .. }, .. });
-    if has("vertical") {
+    // "R10 corners" on a plate: its vertical corners.
+    let corners = has("corner") && !round;
+    if has("vertical") || corners {
         mark("vertical");
+        mark("corner");
         // "with rounded vertical corners" anywhere.
         for i in 0..d.len() {
             if d.is(i, "corner") && d.word(i.wrapping_sub(1)).is_some_and(|w| w == "vertical" || w == "rounded") {
@@ -164,8 +177,8 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
         };
         return Ok(Edges::Parallel(k));
     }
-    if has("circular") || has("end") || (has("top") && has("bottom")) {
-        for w in ["circular", "end", "top", "bottom", "and"] {
+    if has("circular") || has("end") || (has("top") && has("bottom")) || (round && (has("od") || has("outside") || has("outer") || has("side"))) {
+        for w in ["circular", "end", "top", "bottom", "and", "od", "outside", "outer", "side"] {
             mark(w);
         }
         return Ok(Edges::Circular);
