@@ -14,7 +14,11 @@ const EXTRA: f64 = 1.0;
 
 /// Cuts every cut element, in the prompt's order.
 pub fn read(r: &mut Reader<'_>) -> Res<()> {
-    for e in 0..r.els.len() {
+    // Bores first: the holes through a part's middle that other features are placed by
+    // ("a set screw into the bore", "a keyway in the bore").
+    let mut order: Vec<usize> = (0..r.els.len()).collect();
+    order.sort_by_key(|e| !matches!(r.els[*e].kind, Noun::Cut(CutKind::Bore)));
+    for e in order {
         if r.done[e] {
             continue;
         }

@@ -177,6 +177,20 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
         };
         return Ok(Edges::Parallel(k));
     }
+    // A bar's end edges: both end faces, across its longest extent.
+    if !round && (has("end") || (has("top") && has("bottom"))) {
+        for w in ["end", "top", "bottom", "and", "both"] {
+            mark(w);
+        }
+        let bb = r.model.adds[bi].bounds();
+        let s = [bb[1][0] - bb[0][0], bb[1][1] - bb[0][1], bb[1][2] - bb[0][2]];
+        let k = if has("end") && !(has("top") && has("bottom")) {
+            (0..3).max_by(|a, b| s[*a].total_cmp(&s[*b])).unwrap_or(2)
+        } else {
+            2
+        };
+        return Ok(Edges::Ends(Axis::ALL[k]));
+    }
     if has("circular") || has("end") || (has("top") && has("bottom")) || (round && (has("od") || has("outside") || has("outer") || has("side"))) {
         for w in ["circular", "end", "top", "bottom", "and", "od", "outside", "outer", "side"] {
             mark(w);
