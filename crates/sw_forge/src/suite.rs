@@ -231,9 +231,24 @@ mod tests {
         assert_eq!(p.len(), 2);
         assert!(p["A"].starts_with("import cadquery as cq\n") && p["A"].ends_with("result = 1\n"));
         let s = parse_suite("# c\nX_1\tT1\tA block 1mm long.\n");
-        assert_eq!(s, vec![Prompt { id: "X_1".into(), tier: "T1".into(), text: "A block 1mm long.".into() }]);
+        assert_eq!(
+            s,
+            vec![Prompt { id: "X_1".into(), tier: "T1".into(), text: "A block 1mm long.".into(), ..Prompt::default() }]
+        );
         let r = parse_refs("X_1\t1\t2\t3\t6.5\t-\n");
         assert_eq!(r["X_1"], Reference { size: [1.0, 2.0, 3.0], volume: Some(6.5) });
+        // A corpus with a header: its columns by name, refusals with their words; references
+        // with packed extents, and none for a refusal.
+        let s = parse_suite(
+            "# c\nid\tlevel\tstyle\texpected\tdescription\trefuse_words\nW_1\tT1\tdrawing\tmake\tTUBE 50 OD\t\n\
+             W_2\tT2\tcontradict\trefuse\tA 50 mm cube, 50 x 40\t50 x 40\n",
+        );
+        assert_eq!(s.len(), 2);
+        assert_eq!((s[0].tier.as_str(), s[0].style.as_deref(), s[0].refuse_words.as_deref()), ("T1", Some("drawing"), None));
+        assert_eq!((s[1].text.as_str(), s[1].refuse_words.as_deref()), ("A 50 mm cube, 50 x 40", Some("50 x 40")));
+        let r = parse_refs("id\tbbox_mm\tvolume_mm3\nW_1\t100.0,50.0,50.0\t7.5\nW_2\trefuse\trefuse\n");
+        assert_eq!(r.len(), 1);
+        assert_eq!(r["W_1"], Reference { size: [100.0, 50.0, 50.0], volume: Some(7.5) });
     }
 
     #[test]
