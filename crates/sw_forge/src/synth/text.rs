@@ -748,7 +748,7 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             match &t.kind {
                 Tk::Word(w) if super::notation::CALLOUT.contains(&w.as_str()) => said = true,
                 Tk::Word(w)
-                    if super::lexicon::noun(w).is_some()
+                    if super::lexicon::noun(w).is_some_and(|k| k != super::lexicon::Noun::Pattern)
                         && !matches!(w.as_str(), "counterbore" | "countersink" | "center" | "face") =>
                 {
                     named = true;
@@ -872,7 +872,8 @@ fn inherit_units(toks: &mut [Token]) {
         }
         // Not coordinates ("X = -24, -12, 0, 12, 24mm"), which are read as such.
         let coordinates = run.iter().chain([&i]).any(|k| {
-            matches!(toks[*k].kind, Tk::Num { signed: true, .. }) || (*k >= 1 && toks[*k - 1].is_sym('='))
+            matches!(toks[*k].kind, Tk::Num { signed: true, .. })
+                || (*k >= 1 && (toks[*k - 1].is_sym('=') || toks[*k - 1].is_sym('x') || toks[*k - 1].is_word("by")))
         });
         if !coordinates {
             for k in run {

@@ -23,7 +23,6 @@ fn need(v: Option<f64>, what: &str, r: &Reader<'_>, e: usize) -> Res<f64> {
 
 /// Builds every body element not built yet, in the order the prompt gives them.
 pub fn read(r: &mut Reader<'_>) -> Res<()> {
-    merge_faces(r);
     for e in 0..r.els.len() {
         if r.done[e] || !matches!(r.els[e].kind, Noun::Body(_)) {
             continue;
@@ -69,12 +68,15 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
 /// "A pyramid with a square base of 40mm sides", "the rectangular base is 60mm (X) by
 /// 30mm (Y)" of a wedge, "the right triangle has a 20mm leg along X": a face or edge of
 /// the part named as a noun — its lengths are the part's.
-fn merge_faces(r: &mut Reader<'_>) {
+pub fn merge_faces(r: &mut Reader<'_>) {
     let Some(t) = r.els.iter().position(|e| e.title) else { return };
     let shape = r.shape_of(t);
     let faces: &[&str] = match shape {
-        Some(ShapeHint::Cone | ShapeHint::Pyramid | ShapeHint::Wedge) => &["base"],
+        Some(ShapeHint::Cone | ShapeHint::Pyramid) => &["base"],
+        Some(ShapeHint::Wedge) => &["base", "leg"],
         Some(ShapeHint::Ngon(3)) => &["leg", "base"],
+        // An angle's legs ("60 by 40 legs").
+        Some(ShapeHint::Section(super::super::lexicon::Section::L)) => &["leg"],
         _ => return,
     };
     for f in faces {
@@ -526,7 +528,23 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
     };
     let has_range = r.els[e].ranges.iter().any(|k| !r.used_ranges[*k] && r.doc.ranges[*k].axis == axis);
     let mut len = None;
-    if !has_range {
+    // "Ø16 x 100 shaft": the length written with its diameter comes first.
+    if !has_range && matches!(shape, ShapeHint::Round | ShapeHint::Ring) {
+        let d = r.doc;
+        let paired = r.free_dims(e).into_iter().find(|k| {
+            let t = d.dims[*k].tok;
+            d.dims[*k].role == Role::Bare
+                && d.dims[*k].list.is_none()
+                && t >= 2
+                && (d.sym(t - 1, 'x') || d.is(t - 1, "by"))
+                && d.dims.iter().any(|x| x.role == Role::Diameter && (x.tok + 2 == t || x.tok + 3 == t))
+        });
+        if let Some(k) = paired {
+            r.used_dims[k] = true;
+            len = Some(r.dim(k).mm);
+        }
+    }
+    if !has_range && len.is_none() {
         len = r.find(e, ALONG, &[], &["wall", "counterbore", "face", "total", "overall"]).map(|k| {
             r.used_dims[k] = true;
             r.dim(k).mm

@@ -101,6 +101,7 @@ pub fn read(doc: &Doc) -> Res<Model> {
         return Err(Refusal::new(doc.quote(0, doc.len().saturating_sub(1)), "it names no body the synthesizer makes"));
     }
     place::read_frame(&mut r);
+    bodies::merge_faces(&mut r);
     sections::read(&mut r)?;
     paths::read(&mut r)?;
     bodies::read(&mut r)?;
@@ -245,7 +246,8 @@ impl Reader<'_> {
             return Some(ShapeHint::Hemisphere);
         }
         // An angle bracket (or iron) is an L.
-        if matches!(el.noun.as_str(), "bracket" | "iron" | "profile") && (el.has_mod("angle") || el.has_mod("l-shaped"))
+        if matches!(el.noun.as_str(), "bracket" | "iron" | "profile" | "section" | "bar")
+            && (el.has_mod("angle") || el.has_mod("l-shaped"))
         {
             return Some(ShapeHint::Section(super::lexicon::Section::L));
         }
