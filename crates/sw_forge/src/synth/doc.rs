@@ -264,7 +264,8 @@ impl Doc {
             if t.is_sym(')') {
                 d = d.saturating_sub(1);
             }
-            if t.is_sym('.') && d == 0 {
+            // A full stop, or a question or an exclamation ("… a lamp base? Round, 120 across").
+            if (t.is_sym('.') || t.is_sym('?') || t.is_sym('!')) && d == 0 {
                 s += 1;
             }
         }
@@ -587,11 +588,14 @@ impl Doc {
             };
             let cut = (0..after.len()).find(|k| heads(*k)).unwrap_or(after.len());
             let upto_noun: Vec<&(usize, String)> = after[..cut].iter().collect();
+            // "10 on one side": which side, not a square's side.
+            let one_side = after.windows(2).any(|p| matches!(p[0].1.as_str(), "one" | "either" | "the") && p[1].1 == "side");
             let role = after
                 .first()
                 .and_then(|(_, w)| role_of(w))
+                .filter(|r| !(one_side && *r == Role::Side))
                 .or_else(|| before.last().and_then(|(_, w)| role_of(w)))
-                .or_else(|| upto_noun.iter().find_map(|(_, w)| role_of(w)))
+                .or_else(|| upto_noun.iter().find_map(|(_, w)| role_of(w)).filter(|r| !(one_side && *r == Role::Side)))
                 // Before it, back to a noun ("10 mm deep pocket 50 mm": not the pocket's depth).
                 .or_else(|| {
                     before
@@ -765,15 +769,21 @@ impl Doc {
                 dims[k].restates = Some(k - 1);
             }
         }
-        // "Four M4 clearance holes (4.2mm diameter)": the stated diameter wins over the table's.
+        // "Four M4 clearance holes (4.2mm diameter)", "M8: inside dia 8.4": a diameter stated
+        // right after the screw size wins over the table's.
         let mut k = 0;
         while k < dims.len() {
+            let at = dims[k].tok;
             let stated = dims[k].has("metric")
                 && dims.iter().any(|d| {
-                    !d.has("metric")
-                        && d.role == Role::Diameter
-                        && d.tok + 10 >= dims[k].tok
-                        && d.tok <= dims[k].tok + 10
+                    let after = d.tok > at
+                        && d.tok <= at + 8
+                        && (at + 1..d.tok).all(|j| {
+                            self.word(j).is_none_or(|w| super::lexicon::noun(w).is_none() || w == "hole")
+                        });
+                    // "a 3.2mm diameter pilot hole (M3 clearance)".
+                    let before = self.depth[at] > 0 && d.tok < at && d.tok + 8 >= at;
+                    !d.has("metric") && d.role == Role::Diameter && !d.has("pitch") && !d.has("circle") && (after || before)
                 });
             if stated {
                 let t = dims[k].tok;

@@ -657,7 +657,49 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
     }
     attach(doc, mentions, &mut elements);
     bare_lengths_to_the_part(doc, &mut elements);
+    callout_places_to_the_hole(doc, &mut elements);
+    sentence_adjectives(doc, mentions, &mut elements);
     elements
+}
+
+/// "4x Ø9 thru, c'bore Ø15 x 9 dp on 60 x 60": where a counterbored hole is placed is said
+/// after its counterbore; the places are the holes'.
+fn callout_places_to_the_hole(doc: &Doc, elements: &mut [Element]) {
+    use super::lexicon::CutKind;
+    for c in 0..elements.len() {
+        if !matches!(elements[c].kind, Noun::Cut(CutKind::Counterbore | CutKind::Countersink)) {
+            continue;
+        }
+        let Some(h) = (0..c).rev().find(|h| matches!(elements[*h].kind, Noun::Cut(CutKind::Hole))) else { continue };
+        let moved: Vec<usize> = elements[c].dims.iter().copied().filter(|k| doc.dims[*k].has("pattern")).collect();
+        if moved.is_empty() {
+            continue;
+        }
+        elements[c].dims.retain(|k| !moved.contains(k));
+        elements[h].dims.extend(moved);
+        elements[h].dims.sort_unstable();
+    }
+}
+
+/// "… a lamp base? Round, 120 across": a shape said on its own at the start of a sentence
+/// is the shape of the thing the sentences are about.
+fn sentence_adjectives(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
+    for s in 1..doc.sentences() {
+        let (a, _) = doc.sentence(s);
+        let Some(shape) = doc.word(a).and_then(shape_adjective) else { continue };
+        if !doc.sym(a + 1, ',') || mentions.iter().any(|m| m.sent == s && m.start <= a + 1) {
+            continue;
+        }
+        let Some(m) = mentions.iter().rev().find(|m| m.sent < s && m.prep.is_none()) else { continue };
+        let e = &mut elements[m.elem];
+        if e.shape.is_none() {
+            e.shape = Some(shape);
+            if let Some(w) = doc.word(a) {
+                e.mods.push(w.to_string());
+            }
+            doc.mark(a);
+        }
+    }
 }
 
 /// "lying flat on the XY plane (Z=0 to Z=3)": the whole part's span, nobody's own.

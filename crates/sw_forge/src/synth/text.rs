@@ -589,8 +589,10 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
                             | super::doc::Role::Chamfer
                     )
                 ) && !matches!(w, "long" | "wide" | "thick" | "tall" | "high" | "deep")
-                    // "bore 25", "hole 6": a hole's diameter after its noun.
-                    || (i >= 1 && matches!(w, "bore" | "hole") && toks[i - 1].word() == Some(w))
+                    // "bore 25", "hole 6": a hole's diameter after its noun; "projecting 10".
+                    || (i >= 1
+                        && matches!(w, "bore" | "hole" | "projecting" | "protruding" | "extending" | "proud" | "rising")
+                        && toks[i - 1].word() == Some(w))
             });
         // "1 x 45°": a chamfer's size.
         let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x')) && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
@@ -733,6 +735,11 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             i += 1;
             continue;
         }
+        // A counterbore's or countersink's own diameter ("c'bore Ø15 x 9 dp") is no hole.
+        if i >= 1 && toks[i - 1].word().is_some_and(|w| matches!(w, "counterbore" | "countersink" | "counterbored" | "countersunk")) {
+            i += 1;
+            continue;
+        }
         let marked = toks.get(i + 1).is_some_and(|t| t.is_word("diameter") && t.start == toks[i].start);
         let at = if dia_after && marked { i + 2 } else { i + 1 };
         let first = if metric { i - 1 } else { i };
@@ -747,9 +754,13 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
         while let Some(t) = toks.get(j) {
             match &t.kind {
                 Tk::Word(w) if super::notation::CALLOUT.contains(&w.as_str()) => said = true,
+                // A body it goes through ("THRU FLANGE") is where it is, not what it is.
                 Tk::Word(w)
                     if super::lexicon::noun(w).is_some_and(|k| k != super::lexicon::Noun::Pattern)
-                        && !matches!(w.as_str(), "counterbore" | "countersink" | "center" | "face") =>
+                        && !matches!(w.as_str(), "counterbore" | "countersink" | "center" | "face")
+                        && !(j >= 1
+                            && toks[j - 1].word().is_some_and(|p| matches!(p, "through" | "into" | "in" | "the"))
+                            && matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Body(_)))) =>
                 {
                     named = true;
                 }

@@ -24,6 +24,16 @@ fn need(v: Option<f64>, what: &str, r: &Reader<'_>, e: usize) -> Res<f64> {
 /// Builds every body element not built yet, in the order the prompt gives them.
 pub fn read(r: &mut Reader<'_>) -> Res<()> {
     for e in 0..r.els.len() {
+        // A round part named as a whole ("a flat belt pulley, Ø100 x 40 face", "a flywheel
+        // 300 dia x 60") with nothing else made of it: its own round body.
+        let round_whole = r.els[e].kind == Noun::Whole
+            && r.els[e].title
+            && r.model.adds.is_empty()
+            && matches!(r.els[e].noun.as_str(), "pulley" | "flywheel" | "handwheel" | "coupling" | "idler")
+            && r.els[e].dims.iter().any(|k| !r.used_dims[*k] && r.dim(*k).role == Role::Diameter);
+        if round_whole {
+            r.els[e].kind = Noun::Body(ShapeHint::Round);
+        }
         if r.done[e] || !matches!(r.els[e].kind, Noun::Body(_)) {
             continue;
         }
@@ -552,9 +562,32 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
         if len.is_none() && shape == ShapeHint::Star {
             len = r.take(e, &[Role::Width], &["face"], &[]);
         }
-        // A collar's or pulley's width is its length along its axis.
+        // A collar's or pulley's width (its face) is its length along its axis.
         if len.is_none() && matches!(shape, ShapeHint::Round | ShapeHint::Ring) {
-            len = r.take(e, &[Role::Width], &[], &["face", "wall"]);
+            len = r.take(e, &[Role::Width], &[], &["wall"]).or_else(|| r.take(e, &[Role::Bare], &["face"], &[]));
+        }
+        // "a Ø40 hub projecting 10 on one side": as long as the body before it, and that much more.
+        if len.is_none()
+            && (r.says(e, "projecting") || r.says(e, "protruding") || r.says(e, "proud"))
+            && let Some(prev) = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.axis == axis).map(|b| b.span))
+            && let Some(k) = r.find(e, &[Role::Bare, Role::Length], &[], &[])
+        {
+            r.used_dims[k] = true;
+            let more = r.dim(k).mm;
+            mark_words(r, &["projecting", "protruding", "proud", "one", "side"]);
+            let span = [prev[0], prev[1] + more];
+            r.known.push(more);
+            return Ok(add(r, e, profile, axis, span, Some(od), id, None));
+        }
+        // "HUB Ø50 …, 30 OVERALL": a body with no length of its own spans the part's overall length.
+        if len.is_none() {
+            let overall = (0..r.doc.dims.len()).find(|k| {
+                !r.used_dims[*k] && (r.doc.dims[*k].has("overall") || r.doc.dims[*k].has("total")) && r.doc.dims[*k].role != Role::Diameter
+            });
+            if let Some(k) = overall {
+                r.used_dims[k] = true;
+                len = Some(r.doc.dims[k].mm);
+            }
         }
         // "Ø20 x 50 pin", "Ø100 x 6 disc": the one length written after its diameter.
         if len.is_none() {

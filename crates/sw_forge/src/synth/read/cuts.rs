@@ -426,7 +426,7 @@ fn part_size(r: &Reader<'_>) -> Option<[f64; 2]> {
 /// counterbore 10mm diameter, 3mm deep"; countersinks with their angle (90° unless said).
 fn counterbore(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]], span: [f64; 2]) -> Res<()> {
     let own = r.take_diameter(e, &["counterbore"], &[]).map(|v| (e, v));
-    let cb_el = (0..r.els.len()).find(|k| matches!(r.els[*k].kind, Noun::Cut(CutKind::Counterbore)) && !r.done[*k]);
+    let cb_el = partner(r, e, CutKind::Counterbore);
     let (holder, dia) = match (own, cb_el) {
         (Some(x), _) => x,
         (None, Some(k)) => match r.take_diameter(k, &[], &[]) {
@@ -472,7 +472,7 @@ fn counterbore(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]]
 
 fn countersink(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]], span: [f64; 2]) -> Res<()> {
     let own = r.take_diameter(e, &["countersink"], &[]).map(|v| (e, v));
-    let cs_el = (0..r.els.len()).find(|k| matches!(r.els[*k].kind, Noun::Cut(CutKind::Countersink)) && !r.done[*k]);
+    let cs_el = partner(r, e, CutKind::Countersink);
     let (holder, dia) = match (own, cs_el) {
         (Some(x), _) => x,
         (None, Some(k)) => match r.take_diameter(k, &[], &[]) {
@@ -512,6 +512,27 @@ fn countersink(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]]
         r.mark_element(holder);
     }
     Ok(())
+}
+
+/// The counterbore (or countersink) element of hole `e`: one named after it and before the
+/// next hole ("Ø30 thru ctr, 4x Ø9 thru c'bore Ø15": the c'bore is the Ø9 holes').
+fn partner(r: &Reader<'_>, e: usize, kind: CutKind) -> Option<usize> {
+    let first = |k: usize| r.els[k].mentions.first().map_or(usize::MAX, |m| r.mentions[*m].head);
+    let here = first(e);
+    let next_hole = (0..r.els.len())
+        .filter(|k| *k != e && matches!(r.els[*k].kind, Noun::Cut(CutKind::Hole | CutKind::Bore)) && first(*k) > here)
+        .map(first)
+        .min()
+        .unwrap_or(usize::MAX);
+    let undone = |k: &usize| matches!(r.els[*k].kind, Noun::Cut(c) if c == kind) && !r.done[*k];
+    (0..r.els.len())
+        .filter(undone)
+        .find(|k| first(*k) > here && first(*k) < next_hole)
+        .or_else(|| {
+            // Said before the holes ("counterbored holes … counterbore 10 mm") when only one hole is named.
+            let holes = (0..r.els.len()).filter(|k| matches!(r.els[*k].kind, Noun::Cut(CutKind::Hole))).count();
+            if holes == 1 { (0..r.els.len()).find(undone) } else { None }
+        })
 }
 
 /// A hole across a round body ("drilled radially through the hub at Z=20mm, oriented along

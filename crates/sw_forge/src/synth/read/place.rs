@@ -281,16 +281,19 @@ pub fn ends(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64; 2]
     if !said {
         return None;
     }
-    let k = r.find(e, &[Role::Inset], &[], &[])?;
+    // From each end, or "35 from ctr" either side of the centre.
+    let centred = r.find(e, &[Role::Bare], &["from-center"], &[]);
+    let k = r.find(e, &[Role::Inset], &[], &[]).or(centred)?;
     let i = r.doc.dims[k].mm;
     r.used_dims[k] = true;
     for (a, b) in r.sentences_of(e) {
         for j in a..b {
-            if matches!(r.doc.word(j), Some("end" | "centerline" | "long" | "on")) {
+            if matches!(r.doc.word(j), Some("end" | "centerline" | "long" | "on" | "center")) {
                 r.doc.mark(j);
             }
         }
     }
+    let i = if centred == Some(k) { size[0].max(size[1]) / 2.0 - i } else { i };
     Some(if size[0] >= size[1] {
         vec![[-(size[0] / 2.0 - i), 0.0], [size[0] / 2.0 - i, 0.0]]
     } else {
