@@ -601,7 +601,9 @@ impl Doc {
                     before
                         .iter()
                         .rev()
-                        .take_while(|(_, w)| super::lexicon::noun(w).is_none())
+                        .take_while(|(_, w)| {
+                            super::lexicon::noun(w).is_none() && !matches!(w.as_str(), "on" | "at" | "from" | "in" | "to")
+                        })
                         .find_map(|(_, w)| role_of(w))
                 })
                 .unwrap_or(Role::Bare);

@@ -691,13 +691,28 @@ fn sentence_adjectives(doc: &Doc, mentions: &[Mention], elements: &mut [Element]
             continue;
         }
         let Some(m) = mentions.iter().rev().find(|m| m.sent < s && m.prep.is_none()) else { continue };
-        let e = &mut elements[m.elem];
-        if e.shape.is_none() {
-            e.shape = Some(shape);
-            if let Some(w) = doc.word(a) {
-                e.mods.push(w.to_string());
+        let target = m.elem;
+        if elements[target].shape.is_some() {
+            continue;
+        }
+        elements[target].shape = Some(shape);
+        if let Some(w) = doc.word(a) {
+            elements[target].mods.push(w.to_string());
+        }
+        doc.mark(a);
+        // Its sizes, said before anything else is named in the sentence, are its too.
+        let first = mentions.iter().filter(|m| m.sent == s).map(|m| m.start).min().unwrap_or(usize::MAX);
+        for e in 0..elements.len() {
+            if e == target {
+                continue;
             }
-            doc.mark(a);
+            let moved: Vec<usize> =
+                elements[e].dims.iter().copied().filter(|k| doc.sent[doc.dims[*k].tok] == s && doc.dims[*k].tok < first).collect();
+            if !moved.is_empty() {
+                elements[e].dims.retain(|k| !moved.contains(k));
+                elements[target].dims.extend(moved);
+                elements[target].dims.sort_unstable();
+            }
         }
     }
 }
