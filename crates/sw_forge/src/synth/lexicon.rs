@@ -259,6 +259,7 @@ pub fn is_filler(w: &str) -> bool {
         "typical",
         "typ",
         "right",
+        "half",
         "female",
         "male",
         "tip",

@@ -123,7 +123,7 @@ pub const LENGTH_NOUNS: &[&str] = &["wall", "walls", "floor", "face", "web"];
 
 /// Words after a number that make it a length when it has no unit ("120 across").
 pub const LENGTH_AFTER: &[&str] =
-    &["across", "outside", "inside", "square", "sq", "swg", "gauge", "by", "way", "overall", "total", "projecting", "proud"];
+    &["across", "outside", "inside", "square", "sq", "swg", "gauge", "by", "way", "overall", "total", "projecting", "proud", "each"];
 
 /// Words that, right after a length, say it is a spacing ("on 50 mm centres").
 pub const SPACING_AFTER: &[&str] = &["centres", "centers", "ctrs", "crs", "ctr", "centre", "center", "pitch"];

@@ -467,6 +467,20 @@ impl<'a> Takeoff<'a> {
             let first = th.dims.iter().map(|k| d.dims[*k].tok).min().unwrap_or(th.phrase.0).min(th.phrase.0);
             d.quote(first, last)
         };
+        let fmt = |e: [f64; 3]| format!("{} x {} x {} mm", super::num::n(e[0]), super::num::n(e[1]), super::num::n(e[2]));
+        // "30 overall", "overall length 40", "total height 35": the part measures that.
+        for x in d.dims.iter().filter(|x| {
+            (x.has("overall") || x.has("total"))
+                && matches!(x.role, Role::Length | Role::Height | Role::Width | Role::Bare | Role::Thickness)
+                && x.restates.is_none()
+        }) {
+            if !got.iter().any(|g| close(*g, x.mm)) {
+                return Err(Disagreement {
+                    phrase: d.quote(x.phrase.0.min(x.tok), x.phrase.1.max(x.tok + 1).saturating_sub(1)),
+                    reason: format!("the words make the part {} mm overall, but it was read as {}", super::num::n(x.mm), fmt(got)),
+                });
+            }
+        }
         // Words that contradict themselves: a cube of unequal sides, a ring whose wall and
         // diameters disagree.
         for t in bodies.iter().copied() {
@@ -554,7 +568,6 @@ impl<'a> Takeoff<'a> {
         }
         // Counted things: the largest count said, for cuts whose count is not.
         let count_max = self.things.iter().filter_map(|t| t.count).max().unwrap_or(1);
-        let fmt = |e: [f64; 3]| format!("{} x {} x {} mm", super::num::n(e[0]), super::num::n(e[1]), super::num::n(e[2]));
         // One body: the only body the words name (other than as a place), and the part's own.
         let others = (0..self.things.len())
             .filter(|t| matches!(self.things[*t].kind, Noun::Body(_)) && !self.things[*t].place)

@@ -591,8 +591,7 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
                 ) && !matches!(w, "long" | "wide" | "thick" | "tall" | "high" | "deep")
                     // "bore 25", "hole 6": a hole's diameter after its noun; "projecting 10".
                     || (i >= 1
-                        && matches!(w, "bore" | "hole" | "projecting" | "protruding" | "extending" | "proud" | "rising")
-                        && toks[i - 1].word() == Some(w))
+                        && matches!(w, "bore" | "hole" | "projecting" | "protruding" | "extending" | "proud" | "rising"))
             });
         // "1 x 45°": a chamfer's size.
         let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x')) && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
@@ -675,6 +674,15 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             && toks[i].word().is_some_and(|w| super::notation::SPACING_AFTER.contains(&w) && w != "pitch")
         {
             toks[i].kind = Tk::Word("spacing".into());
+        }
+    }
+    // "3/8 in SAE", "M8 ISO": a nominal size named by its standard is its designation.
+    for i in 0..toks.len().saturating_sub(1) {
+        if matches!(toks[i].kind, Tk::Num { .. })
+            && toks[i + 1].word().is_some_and(|w| super::notation::STANDARDS.contains(&w))
+        {
+            toks[i].kind = Tk::Word("standard".into());
+            toks[i + 1].kind = Tk::Word("standard".into());
         }
     }
     // "set screw", "grub screw": a radial hole (its size the screw's thread).

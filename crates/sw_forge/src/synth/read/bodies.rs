@@ -586,7 +586,13 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
             });
             if let Some(k) = overall {
                 r.used_dims[k] = true;
-                len = Some(r.doc.dims[k].mm);
+                let l = r.doc.dims[k].mm;
+                // It spans the part: from where the bodies along its axis begin.
+                let from = (0..e)
+                    .filter_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.axis == axis).map(|b| b.span[0]))
+                    .fold(f64::INFINITY, f64::min);
+                let from = if from.is_finite() { from } else if r.centered { -l / 2.0 } else { 0.0 };
+                return Ok(add(r, e, profile, axis, [from, from + l], Some(od), id, None));
             }
         }
         // "Ø20 x 50 pin", "Ø100 x 6 disc": the one length written after its diameter.
@@ -766,6 +772,31 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
         Some(r.dim(*k).mm)
     });
     let dia = need(dia, "diameter or radius", r, e)?;
+    // "a hollow sphere, 50 OD with a 4 mm wall": the ball less a ball inside it.
+    let wall = r.take(e, &[Role::Thickness], &["wall"], &[]);
+    if let Some(w) = wall
+        && !half
+    {
+        if 2.0 * w >= dia {
+            return Err(Refusal::new(r.quote_element(e), "its wall does not fit inside it"));
+        }
+        let c = [0.0, 0.0, if r.centered { 0.0 } else { dia / 2.0 }];
+        let b = r.model.adds.len();
+        r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Sphere { c, d: dia }));
+        r.model.cuts.push(Body::new("hollow", Shape::Sphere { c, d: dia - 2.0 * w }));
+        mark_words(r, &["hollow"]);
+        r.known.push(dia - 2.0 * w);
+        return Ok(Built {
+            axis: Axis::Z,
+            span: [c[2] - dia / 2.0, c[2] + dia / 2.0],
+            at: vec![[0.0, 0.0]],
+            od: Some(dia),
+            id: Some(dia - 2.0 * w),
+            size: None,
+            bodies: vec![b],
+            cut: false,
+        });
+    }
     // On top of the body before it ("topped by a hemisphere … centered on the top face").
     let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == Axis::Z && !b.cut).map(|b| b.span));
     let z0 = match (prev, half) {
@@ -921,7 +952,13 @@ fn pyramid(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     };
     if pairs.len() == 4 {
         let mut v: Vec<f64> = pairs.iter().map(|k| r.dim(*k).mm).collect();
-        let top_first = r.dim(pairs[0]).has("top") && !r.dim(pairs[2]).has("top");
+        // "40 x 40 at the top, … tapering to 25 x 25 at the bottom": which is said the top.
+        let said_top = |k: usize| {
+            let t = r.dim(k).tok;
+            r.dim(k).has("top") || (t + 1..(t + 5).min(r.doc.len())).take_while(|i| !r.doc.sym(*i, ',')).any(|i| r.doc.is(i, "top"))
+        };
+        let top_first = said_top(pairs[1]) && !said_top(pairs[3]);
+        mark_words(r, &["tapering", "tapers", "tapered", "top", "bottom", "whole"]);
         if top_first {
             v = vec![v[2], v[3], v[0], v[1]];
         }

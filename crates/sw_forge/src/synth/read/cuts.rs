@@ -281,6 +281,9 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     // A thread given by its metric size is made as its tap drill ("M6 tapped"); other
     // threads, and holes of other shapes, are not made.
     let by_size = r.els[e].dims.iter().any(|k| r.dim(*k).has("tapped"));
+    if by_size {
+        super::bodies::mark_words(r, &["tapped", "thread", "threaded", "female"]);
+    }
     if let Some(m) = r.els[e].mods.iter().find(|m| {
         matches!(m.as_str(), "rectangular" | "hexagonal" | "triangular" | "oval" | "elliptical" | "slotted")
             || (!by_size && matches!(m.as_str(), "tapped" | "threaded"))
@@ -694,6 +697,16 @@ fn keyway(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 /// the top face, 15mm deep, … running the full Y width"), or a stadium-shaped slot through
 /// a plate ("a 30mm long, 8mm wide slot through the plate").
 fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
+    // A slot's ends are round unless said square ("with round ends", "radiused ends").
+    for (a, b) in r.sentences_of(e) {
+        for i in a..b.saturating_sub(1) {
+            if matches!(r.doc.word(i), Some("round" | "rounded" | "radiused" | "semicircular" | "full"))
+                && r.doc.is(i + 1, "end")
+            {
+                r.doc.mark_range(i, i + 2);
+            }
+        }
+    }
     let w = r
         .take(e, &[Role::Width], &[], &[])
         .ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;

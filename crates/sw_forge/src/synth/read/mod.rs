@@ -253,8 +253,17 @@ impl Reader<'_> {
         }
         // A tapered or truncated rectangular block, or a square frustum, is a rectangular frustum.
         let squared = el.has_mod("rectangular") || el.has_mod("square");
-        if squared && (el.has_mod("tapered") || el.has_mod("truncated") || el.noun == "frustum") {
+        let tapering = self.says(e, "tapering") || self.says(e, "tapers") || self.says(e, "tapered");
+        if squared && (el.has_mod("tapered") || el.has_mod("truncated") || el.noun == "frustum" || tapering) {
             return Some(ShapeHint::Pyramid);
+        }
+        // "a Ø60 x 40 gear blank": a box noun sized by a diameter is round.
+        if from_noun == Some(ShapeHint::Rect)
+            && el.shape.is_none()
+            && el.dims.iter().any(|k| self.doc.dims[*k].role == Role::Diameter && !self.doc.dims[*k].has("inner"))
+            && !el.dims.iter().any(|k| self.doc.dims[*k].list.is_some())
+        {
+            return Some(ShapeHint::Round);
         }
         // A rectangular or square tube or pipe is a hollow box section.
         if matches!(el.noun.as_str(), "tube" | "pipe" | "sleeve") && (el.has_mod("rectangular") || el.has_mod("square"))
