@@ -369,6 +369,16 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 i = k;
                 continue;
             }
+            // "20⌀": written after the number.
+            if let Some(t) = toks.last()
+                && matches!(t.kind, Tk::Num { .. })
+                && t.end == start
+            {
+                let s = t.start;
+                toks.push(Token { kind: Tk::Word(role.into()), start: s, end: pos(i + 1) });
+                i += 1;
+                continue;
+            }
         }
         // "i.e." and "e.g.": one word, not two sentences.
         if (c == 'i' || c == 'e' || c == 'I' || c == 'E')

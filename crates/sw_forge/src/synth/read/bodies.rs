@@ -489,6 +489,13 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                 .or_else(|| r.take(e, &[Role::Side], &[], &[]).map(|s| s / (std::f64::consts::PI / n as f64).sin()));
             let d = need(d, "circumscribed diameter", r, e)?;
             mark_words(r, &["triangle", "equilateral", "hexagon", "octagon", "regular", "polygon"]);
+            // "across the corners it is what a hexagon gives": the polygon's other size, said.
+            for i in 0..r.doc.len().saturating_sub(2) {
+                let w = if r.doc.is(i + 1, "the") { i + 2 } else { i + 1 };
+                if r.doc.is(i, "across") && matches!(r.doc.word(w), Some("corner" | "flat")) {
+                    r.doc.mark_range(i, w + 1);
+                }
+            }
             // A triangle stands on its base (a corner on +v); other polygons have a corner on
             // +u, but one given across its flats lies on a flat (an octagon's flats on both axes).
             let phase = if n == 3 {

@@ -164,7 +164,9 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
         }
         return Ok(Edges::Parallel(Axis::Z));
     }
-    if has("long") {
+    // "the long edges" (not a length's "long": "Ø20 x 50 lg pin").
+    let long_edges = (a..b).any(|i| d.is(i, "long") && (d.is(i + 1, "edge") || d.is(i + 2, "edge")));
+    if long_edges && !round {
         mark("long");
         let bb = r.model.adds[bi].bounds();
         let s = [bb[1][0] - bb[0][0], bb[1][1] - bb[0][1], bb[1][2] - bb[0][2]];
