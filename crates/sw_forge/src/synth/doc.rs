@@ -579,6 +579,11 @@ impl Doc {
             }
             before.reverse();
             let before_start = before.first().map_or(i, |b| b.0);
+            // "on the long centreline": "long" names the line, not a length.
+            let before: Vec<(usize, String)> = before
+                .into_iter()
+                .filter(|(j, w)| !(w == "long" && matches!(self.word(j + 1), Some("centerline" | "edge" | "side" | "axis"))))
+                .collect();
             // After it, a role word counts only before the noun it sizes ("6mm holes equally
             // spaced": the 6mm is the holes', not a spacing).
             let heads = |k: usize| {

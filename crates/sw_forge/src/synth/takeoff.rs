@@ -469,8 +469,11 @@ impl<'a> Takeoff<'a> {
         };
         let fmt = |e: [f64; 3]| format!("{} x {} x {} mm", super::num::n(e[0]), super::num::n(e[1]), super::num::n(e[2]));
         // "30 overall", "overall length 40", "total height 35": the part measures that.
-        for x in d.dims.iter().filter(|x| {
-            (x.has("overall") || x.has("total"))
+        for (_, x) in d.dims.iter().enumerate().filter(|(k, x)| {
+            // (Of the part, not of a cut: "a slot, 40 long overall".)
+            let of_cut = self.owner[*k].is_some_and(|t| !self.is_body(t));
+            !of_cut
+                && (x.has("overall") || x.has("total"))
                 && matches!(x.role, Role::Length | Role::Height | Role::Width | Role::Bare | Role::Thickness)
                 && x.restates.is_none()
         }) {

@@ -307,7 +307,7 @@ pub fn rect_pattern(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
     let dims = r.free_dims(e);
     let list: Vec<usize> = dims.iter().copied().filter(|k| r.doc.dims[*k].list.is_some()).collect();
     let [a, b] = list.as_slice() else { return None };
-    let spacing = [a, b].iter().any(|k| r.doc.dims[**k].role == Role::Spacing);
+    let spacing = [a, b].iter().any(|k| r.doc.dims[**k].role == Role::Spacing || r.doc.dims[**k].has("pattern"));
     let said = spacing
         || r.sentences_of(e).iter().any(|(s, t)| {
             (*s..*t).any(|i| r.doc.is(i, "pattern") || r.doc.is(i, "square") || r.doc.is(i, "rectangle"))
