@@ -716,6 +716,11 @@ impl Doc {
                 {
                     Role::Diameter
                 }
+                // "on 31 mm square centres": the corners of a square, a spacing.
+                (Role::Bare, Some("square"), Some("spacing" | "pattern" | "pitch" | "center")) => {
+                    quals.push("square".into());
+                    Role::Spacing
+                }
                 (Role::Bare, Some("square"), next) if !next.is_some_and(|w| super::lexicon::noun(w).is_some()) => {
                     Role::Side
                 }

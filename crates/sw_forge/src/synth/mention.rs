@@ -419,6 +419,9 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                         shape = shape.or(Some(s));
                         mods.push(v.clone());
                         true
+                    } else if v == "through" && (k + 1 != i || !matches!(kind, Noun::Cut(_))) {
+                        // "4x Ø6.6 hole through flange": a through hole, never a through flange.
+                        false
                     } else if noun(v).is_some() || LABELS.contains(&v.as_str()) || v == "metric" || v == "tapped" {
                         mods.push(v.clone());
                         true
@@ -443,8 +446,27 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                         && doc.word(k - 1).is_some_and(|w| super::doc::role_of(w).is_some())
                         && matches!(doc.toks[k - 2].kind, Tk::Num { unit: Some(_), .. })
                         && matches!(doc.toks.get(k + 1).map(|t| &t.kind), Some(Tk::Num { unit: Some(_), .. }))
-                        // Not across into another noun's phrase ("BLOCK 40 x 60 HIGH, Ø16 HOLE").
-                        && !(0..k).rev().take_while(|q| !doc.sym(*q, ',') && !doc.sym(*q, '.') && !doc.word(*q).is_some_and(is_det)).any(|q| doc.word(q).is_some_and(|w| noun(w).is_some()))
+                        // Only inside a phrase begun by its determiner ("a 30mm long, 8mm wide
+                        // slot"), never into another noun's ("BLOCK 40 x 60 HIGH, Ø16 HOLE").
+                        && {
+                            let mut q = k;
+                            let mut found = false;
+                            while q > 0 {
+                                q -= 1;
+                                if doc.word(q).is_some_and(is_det) {
+                                    found = true;
+                                    break;
+                                }
+                                let stop = doc.toks[q].is_sym(',')
+                                    || doc.toks[q].is_sym('.')
+                                    || doc.toks[q].is_sym(':')
+                                    || doc.word(q).is_some_and(|w| noun(w).is_some());
+                                if stop {
+                                    break;
+                                }
+                            }
+                            found
+                        }
                 }
                 // "dodecagonal (12-sided) prism": an aside inside the phrase.
                 Tk::Sym(')') => {

@@ -64,6 +64,7 @@ pub const SPELLINGS: &[(&str, &[&str])] = &[
     ("equispaced", &["equally", "spaced"]),
     ("eq-spaced", &["equally", "spaced"]),
     ("nom", &["nominal"]),
+    ("sp", &["spaced"]),
     ("chamf", &["chamfer"]),
     ("chmf", &["chamfer"]),
     ("rnd", &["round"]),

@@ -188,6 +188,28 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
     {
         return Ok(p);
     }
+    // "FLANGE Ø80 x 8 AT ONE END" of a hub already made: at its end, not stacked on it.
+    let at_end = r.els[e].mentions.iter().any(|mi| {
+        let m = &r.mentions[*mi];
+        let d = r.doc;
+        let mut i = m.head + 1;
+        let mut hit = false;
+        while i + 1 < d.len() && !d.sym(i, ',') && !d.sym(i, '.') && !d.sym(i, ';') {
+            if d.is(i, "at") && matches!(d.word(i + 1), Some("one" | "either" | "the")) && d.is(i + 2, "end") {
+                hit = true;
+                d.mark_range(i, i + 3);
+            }
+            i += 1;
+        }
+        hit
+    });
+    if at_end
+        && let Some(start) = (0..e)
+            .filter_map(|p| r.built[p].as_ref().filter(|b| b.axis == axis && !b.cut).map(|b| b.span[0]))
+            .reduce(f64::min)
+    {
+        return Ok([start, start + l]);
+    }
     // Stacked on the body before it along the same axis, when one is there and the
     // words say on top (or nothing says otherwise); the first body from 0 (or centred).
     let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == axis && !b.cut).map(|b| b.span));

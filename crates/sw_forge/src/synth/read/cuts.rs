@@ -344,6 +344,7 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     if at.is_empty() && count > 1 {
         at = place::circle(r, e, count)
             .or_else(|| place::rect_pattern(r, e))
+            .or_else(|| if count == 4 { place::square_pattern(r, e) } else { None })
             .or_else(|| if count == 2 { target_size.and_then(|s| place::ends(r, e, s)) } else { None })
             .or_else(|| target_size.and_then(|s| place::corners(r, e, s)))
             .or_else(|| place::row(r, e, count, Axis::X, axis))

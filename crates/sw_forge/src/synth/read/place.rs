@@ -274,6 +274,14 @@ pub fn corners(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64;
     Some(vec![[-x, -y], [x, -y], [x, y], [-x, y]])
 }
 
+/// "4 x M3 clearance on 31 mm square centres": four copies at the corners of a centred square.
+pub fn square_pattern(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
+    let k = r.find(e, &[Role::Spacing], &["square"], &[])?;
+    let h = r.doc.dims[k].mm / 2.0;
+    r.used_dims[k] = true;
+    Some(vec![[-h, -h], [h, -h], [h, h], [-h, h]])
+}
+
 /// "two holes on the centreline, 15 from each end", "2x Ø8 on CL 20 from ends": two copies
 /// on the long centreline of a part of size (u, v), each inset from an end.
 pub fn ends(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64; 2]>> {

@@ -178,7 +178,7 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                     || QUALS.contains(&w)
                     || is_filler(w)
                     || matches!(w, "x" | "y" | "z")
-                    || (dm.role == super::super::doc::Role::Side && w == "square"))
+                    || (w == "square" && (dm.role == super::super::doc::Role::Side || dm.has("square"))))
             {
                 d.mark(i);
             }
@@ -328,6 +328,21 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                 };
                 if ok && !d.is_used(i) {
                     d.mark(i);
+                }
+            }
+        }
+    }
+    // "a flange at one end", "projecting on one side": a body at an end of the part (made so).
+    for i in 0..d.len().saturating_sub(1) {
+        if matches!(d.word(i), Some("one" | "either" | "other")) && matches!(d.word(i + 1), Some("end" | "side")) {
+            let touches = r.built.iter().flatten().filter(|b| !b.cut).any(|b| {
+                let k = b.axis.index();
+                (b.span[0] - pb[0][k]).abs() < 1e-6 || (b.span[1] - pb[1][k]).abs() < 1e-6
+            });
+            if touches {
+                d.mark_range(i, i + 2);
+                if i > 0 && matches!(d.word(i - 1), Some("at" | "on")) {
+                    d.mark(i - 1);
                 }
             }
         }
