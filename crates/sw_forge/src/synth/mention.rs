@@ -721,7 +721,9 @@ fn sentence_adjectives(doc: &Doc, mentions: &[Mention], elements: &mut [Element]
     for s in 1..doc.sentences() {
         let (a, _) = doc.sentence(s);
         let Some(shape) = doc.word(a).and_then(shape_adjective) else { continue };
-        if !doc.sym(a + 1, ',') || mentions.iter().any(|m| m.sent == s && m.start <= a + 1) {
+        // "Round, 120 across …", "Square 40 x 40 at the top, …".
+        let sizes_follow = matches!(doc.toks.get(a + 1).map(|t| &t.kind), Some(Tk::Num { .. }));
+        if !(doc.sym(a + 1, ',') || sizes_follow) || mentions.iter().any(|m| m.sent == s && m.start <= a + 1) {
             continue;
         }
         let Some(m) = mentions.iter().rev().find(|m| m.sent < s && m.prep.is_none()) else { continue };

@@ -177,6 +177,20 @@ pub const THREAD: &[&str] = &["tapped", "tap", "thread", "threaded", "female", "
 /// Nouns whose metric size is their thread ("Hex nut M16").
 pub const THREADED_NOUNS: &[&str] = &["nut", "standoff", "insert", "coupler"];
 
+/// Letters standards give sizes by ("Hex nut ISO 4032 M8, s = 13 mm, m = 6.8 mm"): the
+/// words of their roles (x, y, z and r are coordinates).
+pub const LETTERS: &[(&str, &[&str])] = &[
+    ("s", &["across", "flat"]),
+    ("e", &["across", "corner"]),
+    ("m", &["height"]),
+    ("k", &["height"]),
+    ("h", &["height"]),
+    ("t", &["thickness"]),
+    ("l", &["length"]),
+    ("b", &["width"]),
+    ("d", &["diameter"]),
+];
+
 /// The words a spelling stands for, if it is one.
 pub fn spelling(w: &str) -> Option<&'static [&'static str]> {
     SPELLINGS.iter().find(|(s, _)| *s == w).map(|(_, to)| *to)

@@ -686,6 +686,25 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             toks[i].kind = Tk::Word("spacing".into());
         }
     }
+    // "s = 13 mm", "m = 6.8": a standard's letter for a size, read as its role's words.
+    let mut i = 0;
+    while i + 2 < toks.len() {
+        let letter = toks[i].word().and_then(|w| super::notation::LETTERS.iter().find(|(l, _)| *l == w));
+        if let Some((_, words)) = letter
+            && toks[i + 1].is_sym('=')
+            && matches!(toks[i + 2].kind, Tk::Num { .. })
+            && !(i > 0 && toks[i - 1].word().is_some_and(|w| w.chars().all(|c| c.is_ascii_alphabetic()) && w.len() == 1))
+        {
+            let (s, e) = (toks[i].start, toks[i + 1].end);
+            toks.remove(i + 1);
+            toks.remove(i);
+            for (k, w) in words.iter().enumerate() {
+                toks.insert(i + k, Token { kind: Tk::Word((*w).into()), start: s, end: e });
+            }
+            i += words.len();
+        }
+        i += 1;
+    }
     // "3/8 in SAE", "M8 ISO": a nominal size named by its standard is its designation.
     for i in 0..toks.len().saturating_sub(1) {
         if matches!(toks[i].kind, Tk::Num { .. })

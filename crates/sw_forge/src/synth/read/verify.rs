@@ -264,6 +264,15 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                         x.prep.as_deref().is_some_and(|p| p != "with")
                             || (x.definite && x.prep.as_deref() != Some("with"))
                     });
+                    // "no chamfers", "without a hole": said not to be there, and not made.
+                    let negated = m.iter().all(|mi| {
+                        let x = &r.mentions[*mi];
+                        x.start > 0 && matches!(d.word(x.start - 1), Some("no" | "without" | "not"))
+                    });
+                    if negated {
+                        r.mark_element(e);
+                        continue;
+                    }
                     // Or the shape of a thing made ("what a hexagon gives" of a hex bar).
                     let shape = match r.els[e].kind {
                         Noun::Body(h) if r.els[e].dims.is_empty() => Some(h),
@@ -374,6 +383,18 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
         Tk::Num { unit: None, .. } => is_count(d, i),
         _ => false,
     });
+    // "… for the cable", "for weld clearance": what the part is for, no geometry.
+    let runs: Vec<(usize, usize)> = runs
+        .into_iter()
+        .filter(|(a, b)| {
+            let mut p = *a;
+            while p > 0 && matches!(d.word(p - 1), Some("the" | "a" | "an")) {
+                p -= 1;
+            }
+            let purpose = p > 0 && d.is(p - 1, "for");
+            !(purpose && (*a..=*b).all(|i| d.word(i).is_some()))
+        })
+        .collect();
     if let Some((a, b)) = runs.first() {
         return Err(Refusal::new(d.quote(*a, *b), "the synthesizer does not know what these words ask for"));
     }
