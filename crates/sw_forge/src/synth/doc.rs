@@ -729,7 +729,7 @@ impl Doc {
             // "M4 clearance holes": the screw's clearance diameter; "a 95 mm bolt circle": the
             // circle's diameter.
             let role =
-                if quals.iter().any(|w| w == "metric" || w == "tapped")
+                if (matches!(role, Role::Bare | Role::Diameter) && quals.iter().any(|w| w == "metric" || w == "tapped"))
                     || (role == Role::Bare && quals.iter().any(|w| w == "circle"))
                 {
                     Role::Diameter

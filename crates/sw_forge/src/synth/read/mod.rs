@@ -253,7 +253,7 @@ impl Reader<'_> {
         }
         // A tapered or truncated rectangular block, or a square frustum, is a rectangular frustum.
         let squared = el.has_mod("rectangular") || el.has_mod("square");
-        let tapering = self.says(e, "tapering") || self.says(e, "tapers") || self.says(e, "tapered");
+        let tapering = (0..self.doc.len()).any(|i| matches!(self.doc.word(i), Some("tapering" | "tapers" | "tapered")));
         if squared && (el.has_mod("tapered") || el.has_mod("truncated") || el.noun == "frustum" || tapering) {
             return Some(ShapeHint::Pyramid);
         }
