@@ -561,6 +561,10 @@ impl Doc {
                 {
                     break;
                 }
+                // "0.125 in wall x 10 in long": the words before the times sign are the previous number's.
+                if self.toks[j].is_sym('x') && before.is_empty() && j > floor && self.word(j - 1).is_some() {
+                    break;
+                }
                 match &self.toks[j].kind {
                     Tk::Word(w) if w == "and" || w == "with" || w == "has" || w == "have" => break,
                     // "a 100 mm length of 20 mm bar": the role before "of" is the earlier number's.
@@ -721,7 +725,10 @@ impl Doc {
                     quals.push("square".into());
                     Role::Spacing
                 }
-                (Role::Bare, Some("square"), next) if !next.is_some_and(|w| super::lexicon::noun(w).is_some()) => {
+                (Role::Bare, Some("square"), next)
+                    if !next.is_some_and(|w| super::lexicon::noun(w).is_some())
+                        || matches!(next, Some("base" | "top" | "bottom" | "end" | "section")) =>
+                {
                     Role::Side
                 }
                 (r, ..) => r,
