@@ -590,6 +590,10 @@ fn same_thing(m: &Mention, e: &Element) -> bool {
     if e.plural && m.mods.iter().any(|x| matches!(x.as_str(), "first" | "second" | "third")) {
         return false;
     }
+    // "a block … with a block on top": a thing the part has, said with "a", is another one.
+    if m.prep.as_deref() == Some("with") && m.det && !m.definite && !m.each {
+        return false;
+    }
     // A bare plural or heading ("Side rails: each rail is …") also refers back.
     let bare = m.count.is_none() && !m.det;
     if !(m.definite || m.each || m.prep.is_some() || (bare && m.noun == e.noun)) {

@@ -524,6 +524,32 @@ impl<'a> Takeoff<'a> {
                 });
             }
         }
+        // A noun named again for another body with sizes of its own ("a block … with a block
+        // 10 x 10 x 10 on top") is as many bodies.
+        let mut seen: Vec<&str> = Vec::new();
+        let mut again = 0usize;
+        for t in &bodies {
+            let th = &self.things[*t];
+            // (Not a face or piece of one: "a 20mm leg along X and a 30mm leg along Y".)
+            let piece = matches!(
+                th.noun.as_str(),
+                "leg" | "side" | "base" | "face" | "end" | "wall" | "floor" | "flange" | "web" | "top" | "bottom"
+            );
+            if matches!(th.kind, Noun::Body(_)) && !piece {
+                if seen.contains(&th.noun.as_str()) {
+                    again += 1;
+                } else {
+                    seen.push(&th.noun);
+                }
+            }
+        }
+        if again > 0 && model.adds.len() < again + 1 {
+            let t = bodies[bodies.len() - 1];
+            return Err(Disagreement {
+                phrase: quote(t),
+                reason: format!("the words name {} bodies of this kind, but {} was made", again + 1, model.adds.len()),
+            });
+        }
         // Every cut the words name is made: holes, bores, slots, keyways, grooves and pockets
         // named (with their counts) are at most the model's cuts, its rings' bores and shells.
         let named: u32 = (0..self.things.len())

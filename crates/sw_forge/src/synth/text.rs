@@ -623,7 +623,13 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             // The number before "x", past a role written with it ("Ø20 x 50": 20 diameter x 50).
             let before_x = |x: usize| -> Option<usize> {
                 let p = x.checked_sub(1)?;
-                if marker(toks, p) { p.checked_sub(1) } else { Some(p) }
+                // Past a role written with the number: "Ø20 x 50", "80 dia x 10", "42 OD x 36 ID".
+                let role = marker(toks, p)
+                    || (toks[p].word().is_some_and(|w| {
+                        matches!(super::doc::role_of(w), Some(super::doc::Role::Diameter | super::doc::Role::Radius))
+                    }) && p >= 1
+                        && matches!(toks[p - 1].kind, Tk::Num { .. }));
+                if role { p.checked_sub(1) } else { Some(p) }
             };
             let times = |t: Option<&Token>| t.is_some_and(|t| t.is_sym('x') || t.is_word("by"));
             let left = i >= 2 && times(toks.get(i - 1)) && before_x(i - 1).is_some_and(joined);

@@ -193,6 +193,11 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
         };
         return Ok(Edges::Ends(Axis::ALL[k]));
     }
+    // A ring's outer edges are not told apart from its bore's by the circular selector.
+    let ring = matches!(&r.model.adds[bi].shape, Shape::Prism { profile: super::super::profile::Profile::Annulus { .. }, .. });
+    if ring && (has("od") || has("outside") || has("outer")) {
+        return Err(Refusal::new(d.quote(a, b.saturating_sub(1)), "a ring's outside edges alone are not treated (its bore's edges would be too)"));
+    }
     if has("circular") || has("end") || (has("top") && has("bottom")) || (round && (has("od") || has("outside") || has("outer") || has("side"))) {
         for w in ["circular", "end", "top", "bottom", "and", "od", "outside", "outer", "side"] {
             mark(w);
