@@ -708,10 +708,19 @@ fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             }
         }
     }
-    let w = r
-        .take(e, &[Role::Width], &[], &[])
-        .ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;
-    let len = r.take(e, &[Role::Length], &[], &[]);
+    // "a 60 x 20 slot": its length by its width, overall.
+    let listed: Vec<usize> = r.free_dims(e).into_iter().filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare).collect();
+    let (w, len) = if let ([a, b], None) = (listed.as_slice(), r.find(e, &[Role::Width], &[], &[])) {
+        let (x, y) = (r.dim(*a).mm, r.dim(*b).mm);
+        r.used_dims[*a] = true;
+        r.used_dims[*b] = true;
+        (x.min(y), Some(x.max(y)))
+    } else {
+        let w = r
+            .take(e, &[Role::Width], &[], &[])
+            .ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;
+        (w, r.take(e, &[Role::Length], &[], &[]))
+    };
     let depth = r.take(e, &[Role::Depth], &[], &[]);
     let across = r.find(e, &[Role::Width], &[], &[]).map(|k| r.dim(k).axis);
     let w_axis = r.els[e]

@@ -138,12 +138,35 @@ fn beam(r: &mut Reader<'_>, t: usize, s: Section) -> Res<()> {
 }
 
 fn channel(r: &mut Reader<'_>, t: usize) -> Res<()> {
+    // "Channel 100 x 50 x 5 (web x flange x thickness), 400 long": a catalogue's size.
+    let list: Vec<usize> = r.free_dims(t).into_iter().filter(|k| r.dim(*k).list.is_some() && !r.dim(*k).paren).collect();
+    let catalogue = if let [a, b, c] = list.as_slice() {
+        let v = [r.dim(*a).mm, r.dim(*b).mm, r.dim(*c).mm];
+        for k in [a, b, c] {
+            r.used_dims[*k] = true;
+        }
+        for i in 0..r.doc.len() {
+            if matches!(r.doc.word(i), Some("web" | "flange" | "thickness" | "x")) || r.doc.sym(i, 'x') {
+                if r.doc.depth[i] > 0 {
+                    r.doc.mark(i);
+                }
+            }
+        }
+        Some(v)
+    } else {
+        None
+    };
     let (len, axis) = length(r, t)?;
-    let w = need(r.take(t, &[Role::Width], &[], &[]), "width", r, t)?;
-    let h = need(r.take(t, &[Role::Height], &[], &[]), "height", r, t)?;
-    let tw = piece(r, t, "wall", &[Role::Thickness]).or_else(|| r.take(t, &[Role::Thickness], &[], &["base"]));
-    let tw = need(tw, "wall thickness", r, t)?;
-    let tb = piece(r, t, "base", &[Role::Thickness]).unwrap_or(tw);
+    let (w, h, tw, tb) = if let Some([w, h, th]) = catalogue {
+        (w, h, th, th)
+    } else {
+        let w = need(r.take(t, &[Role::Width], &[], &[]), "width", r, t)?;
+        let h = need(r.take(t, &[Role::Height], &[], &[]), "height", r, t)?;
+        let tw = piece(r, t, "wall", &[Role::Thickness]).or_else(|| r.take(t, &[Role::Thickness], &[], &["base"]));
+        let tw = need(tw, "wall thickness", r, t)?;
+        let tb = piece(r, t, "base", &[Role::Thickness]).unwrap_or(tw);
+        (w, h, tw, tb)
+    };
     if 2.0 * tw >= w || tb >= h {
         return Err(Refusal::new(r.quote_element(t), "its walls do not fit its width and height"));
     }
