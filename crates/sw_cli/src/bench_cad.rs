@@ -695,9 +695,7 @@ fn render(b: &CadBench, missing_refs: usize) -> String {
     }
     line("all", &b.all);
     if b.all.with_reference > 0 || b.all.refused_with_words > 0 {
-        s.push_str(
-            "\nverdict      prompts         exact  refused with the words  wrong  failed otherwise\n",
-        );
+        s.push_str("\nverdict      prompts         exact  refused with the words  wrong  failed otherwise\n");
         let mut verdicts = |name: &str, t: &TierSummary| {
             let of = t.exact + t.refused_with_words + t.wrong + t.failed;
             s.push_str(&format!(

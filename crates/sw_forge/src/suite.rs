@@ -46,10 +46,8 @@ fn rows(text: &str) -> impl Iterator<Item = Vec<&str>> {
 /// A suite's prompts: `id<TAB>tier<TAB>prompt` per line, or, after a header line naming
 /// its columns (`id  level  style  expected  description  refuse_words`), those columns.
 pub fn parse_suite(text: &str) -> Vec<Prompt> {
-    let header: Option<Vec<&str>> = text
-        .lines()
-        .find(|l| l.starts_with("id\t"))
-        .map(|l| l.split('\t').map(str::trim).collect());
+    let header: Option<Vec<&str>> =
+        text.lines().find(|l| l.starts_with("id\t")).map(|l| l.split('\t').map(str::trim).collect());
     let Some(h) = header else {
         return rows(text)
             .filter_map(|c| {
@@ -244,7 +242,10 @@ mod tests {
              W_2\tT2\tcontradict\trefuse\tA 50 mm cube, 50 x 40\t50 x 40\n",
         );
         assert_eq!(s.len(), 2);
-        assert_eq!((s[0].tier.as_str(), s[0].style.as_deref(), s[0].refuse_words.as_deref()), ("T1", Some("drawing"), None));
+        assert_eq!(
+            (s[0].tier.as_str(), s[0].style.as_deref(), s[0].refuse_words.as_deref()),
+            ("T1", Some("drawing"), None)
+        );
         assert_eq!((s[1].text.as_str(), s[1].refuse_words.as_deref()), ("A 50 mm cube, 50 x 40", Some("50 x 40")));
         let r = parse_refs("id\tbbox_mm\tvolume_mm3\nW_1\t100.0,50.0,50.0\t7.5\nW_2\trefuse\trefuse\n");
         assert_eq!(r.len(), 1);

@@ -65,7 +65,9 @@ fn made(prompt: &str, size: [f64; 3], volume: f64) -> Result<(), String> {
 fn refused(prompt: &str, words: &[&str]) -> Result<(), String> {
     match synthesize(prompt) {
         Err(SynthError::Unread { phrase, .. }) if words.iter().any(|w| phrase.contains(w)) => Ok(()),
-        other => Err(format!("{prompt}\n  expected a refusal quoting one of {words:?}, got {other:?}\n{}", stages(prompt))),
+        other => {
+            Err(format!("{prompt}\n  expected a refusal quoting one of {words:?}, got {other:?}\n{}", stages(prompt)))
+        }
     }
 }
 
@@ -116,7 +118,11 @@ fn a_bar_or_pin_by_diameter_and_length_with_chamfered_ends() {
         ] {
             r.push(made(&p, [d, d, l], v));
         }
-        for p in [format!("rd bar Ø{d} x {l} lg"), format!("{d}\u{2300} x {l} long round bar"), format!("A {d} mm round bar, {l} long.")] {
+        for p in [
+            format!("rd bar Ø{d} x {l} lg"),
+            format!("{d}\u{2300} x {l} long round bar"),
+            format!("A {d} mm round bar, {l} long."),
+        ] {
             r.push(made(&p, [d, d, l], PI * rr * rr * l));
         }
     }
@@ -133,7 +139,11 @@ fn a_plate_with_a_hole_at_each_corner() {
             format!("plt {a}x{b}x{t}, 4x Ø{h} thru {i} from edges"),
             format!("A {a} x {b} x {t} plate with four {h} mm holes, {i} mm from each edge at the corners"),
             format!("PLATE {a} x {b} x {t}, 4X Ø{h} THRU ON {} x {} CENTRES", a - 2.0 * i, b - 2.0 * i),
-            format!("A {a} by {b} by {t} plate with four {h} mm holes on a {} by {} rectangle", a - 2.0 * i, b - 2.0 * i),
+            format!(
+                "A {a} by {b} by {t} plate with four {h} mm holes on a {} by {} rectangle",
+                a - 2.0 * i,
+                b - 2.0 * i
+            ),
         ] {
             r.push(made(&p, [a, b, t], v));
         }
@@ -182,7 +192,11 @@ fn words_that_say_again_what_was_said_add_nothing() {
         let v = PI * d * d / 4.0 * l;
         for again in ["", " Its diameter is {d} and its length {l}.", " A single cylinder, standing upright."] {
             let again = again.replace("{d}", &d.to_string()).replace("{l}", &l.to_string());
-            r.push(made(&format!("A cylinder {d} mm in diameter and {l} mm long, with its axis along Z.{again}"), [d, d, l], v));
+            r.push(made(
+                &format!("A cylinder {d} mm in diameter and {l} mm long, with its axis along Z.{again}"),
+                [d, d, l],
+                v,
+            ));
         }
     }
     check(r);

@@ -277,7 +277,11 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             .max();
         match other {
             Some(len) => i += len,
-            None if cand.features().iter().any(|f| f.split_whitespace().map(crate::synth::text::fold).any(|x| x == *w)) => {
+            None if cand
+                .features()
+                .iter()
+                .any(|f| f.split_whitespace().map(crate::synth::text::fold).any(|x| x == *w)) =>
+            {
                 return Err(unread(&quote(i, at + n - 1), &part_of(&cand)));
             }
             None => return Err(unread(&quote(i, i), "a word the synthesizer cannot give this object")),

@@ -586,7 +586,9 @@ impl Doc {
             // "on the long centreline": "long" names the line, not a length.
             let before: Vec<(usize, String)> = before
                 .into_iter()
-                .filter(|(j, w)| !(w == "long" && matches!(self.word(j + 1), Some("centerline" | "edge" | "side" | "axis"))))
+                .filter(|(j, w)| {
+                    !(w == "long" && matches!(self.word(j + 1), Some("centerline" | "edge" | "side" | "axis")))
+                })
                 .collect();
             // After it, a role word counts only before the noun it sizes ("6mm holes equally
             // spaced": the 6mm is the holes', not a spacing).
@@ -598,7 +600,8 @@ impl Doc {
             let cut = (0..after.len()).find(|k| heads(*k)).unwrap_or(after.len());
             let upto_noun: Vec<&(usize, String)> = after[..cut].iter().collect();
             // "10 on one side": which side, not a square's side.
-            let one_side = after.windows(2).any(|p| matches!(p[0].1.as_str(), "one" | "either" | "the") && p[1].1 == "side");
+            let one_side =
+                after.windows(2).any(|p| matches!(p[0].1.as_str(), "one" | "either" | "the") && p[1].1 == "side");
             let role = after
                 .first()
                 .and_then(|(_, w)| role_of(w))
@@ -611,7 +614,8 @@ impl Doc {
                         .iter()
                         .rev()
                         .take_while(|(_, w)| {
-                            super::lexicon::noun(w).is_none() && !matches!(w.as_str(), "on" | "at" | "from" | "in" | "to")
+                            super::lexicon::noun(w).is_none()
+                                && !matches!(w.as_str(), "on" | "at" | "from" | "in" | "to")
                         })
                         .find_map(|(_, w)| role_of(w))
                 })
@@ -671,8 +675,11 @@ impl Doc {
             // "R5", "R2 on OD": a radius called out on a drawing rounds edges.
             let role = if role == Role::Radius
                 && self.toks.get(i + 1).is_some_and(|t| t.is_word("radius") && t.start == self.toks[i].start)
-                && !after.iter().any(|(_, w)| super::lexicon::noun(w).is_some_and(|n| !matches!(n, super::lexicon::Noun::Body(_)) ) && w != "corner" && w != "edge")
-            {
+                && !after.iter().any(|(_, w)| {
+                    super::lexicon::noun(w).is_some_and(|n| !matches!(n, super::lexicon::Noun::Body(_)))
+                        && w != "corner"
+                        && w != "edge"
+                }) {
                 Role::Fillet
             } else {
                 role
@@ -691,7 +698,10 @@ impl Doc {
                 }
                 let from = self.is(q, "from");
                 let height = matches!(self.word(q), Some("above" | "below" | "over" | "under" | "up"));
-                while matches!(self.word(q + 1), Some("each" | "the" | "both" | "all" | "either" | "its" | "from" | "one" | "an" | "a")) {
+                while matches!(
+                    self.word(q + 1),
+                    Some("each" | "the" | "both" | "all" | "either" | "its" | "from" | "one" | "an" | "a")
+                ) {
                     q += 1;
                 }
                 if role == Role::Bare
@@ -726,7 +736,7 @@ impl Doc {
                     Role::Spacing
                 }
                 (Role::Bare, Some("square"), next)
-                    if !next.is_some_and(|w| super::lexicon::noun(w).is_some())
+                    if next.is_none_or(|w| super::lexicon::noun(w).is_none())
                         || matches!(next, Some("base" | "top" | "bottom" | "end" | "section")) =>
                 {
                     Role::Side
@@ -735,14 +745,14 @@ impl Doc {
             };
             // "M4 clearance holes": the screw's clearance diameter; "a 95 mm bolt circle": the
             // circle's diameter.
-            let role =
-                if (matches!(role, Role::Bare | Role::Diameter) && quals.iter().any(|w| w == "metric" || w == "tapped"))
-                    || (role == Role::Bare && quals.iter().any(|w| w == "circle"))
-                {
-                    Role::Diameter
-                } else {
-                    role
-                };
+            let role = if (matches!(role, Role::Bare | Role::Diameter)
+                && quals.iter().any(|w| w == "metric" || w == "tapped"))
+                || (role == Role::Bare && quals.iter().any(|w| w == "circle"))
+            {
+                Role::Diameter
+            } else {
+                role
+            };
             // "counterbored to 14mm diameter", "countersunk to 8mm".
             for (from, to) in [("counterbored", "counterbore"), ("countersunk", "countersink")] {
                 if before.iter().chain(after.iter()).any(|(_, w)| w == from) && !quals.iter().any(|q| q == to) {
@@ -750,11 +760,8 @@ impl Doc {
                 }
             }
             // "a 3 mm wall", "with 3mm walls", "1 in OD x 16 SWG wall": a wall thickness.
-            let (role, wall) = if after.first().is_some_and(|(_, w)| w == "wall") {
-                (Role::Thickness, true)
-            } else {
-                (role, false)
-            };
+            let (role, wall) =
+                if after.first().is_some_and(|(_, w)| w == "wall") { (Role::Thickness, true) } else { (role, false) };
             if wall && !quals.iter().any(|q| q == "wall") {
                 quals.push("wall".into());
             }
@@ -797,12 +804,15 @@ impl Doc {
                 && dims.iter().any(|d| {
                     let after = d.tok > at
                         && d.tok <= at + 8
-                        && (at + 1..d.tok).all(|j| {
-                            self.word(j).is_none_or(|w| super::lexicon::noun(w).is_none() || w == "hole")
-                        });
+                        && (at + 1..d.tok)
+                            .all(|j| self.word(j).is_none_or(|w| super::lexicon::noun(w).is_none() || w == "hole"));
                     // "a 3.2mm diameter pilot hole (M3 clearance)".
                     let before = self.depth[at] > 0 && d.tok < at && d.tok + 8 >= at;
-                    !d.has("metric") && d.role == Role::Diameter && !d.has("pitch") && !d.has("circle") && (after || before)
+                    !d.has("metric")
+                        && d.role == Role::Diameter
+                        && !d.has("pitch")
+                        && !d.has("circle")
+                        && (after || before)
                 });
             if stated {
                 let t = dims[k].tok;
@@ -854,9 +864,13 @@ impl Doc {
                 let last_tok = dims[group[len - 1]].tok;
                 let after = (last_tok + 1..(last_tok + 3).min(n)).find_map(|j| self.word(j));
                 let on = first_tok >= 1
-                    && (self.is(first_tok - 1, "on") || (first_tok >= 2 && self.is(first_tok - 1, "a") && self.is(first_tok - 2, "on")));
+                    && (self.is(first_tok - 1, "on")
+                        || (first_tok >= 2 && self.is(first_tok - 1, "a") && self.is(first_tok - 2, "on")));
                 let places = matches!(after, Some("rectangle" | "square" | "pattern" | "spacing"))
-                    || (on && !after.is_some_and(|w| super::lexicon::noun(w).is_some_and(|k| k != super::lexicon::Noun::Pattern)));
+                    || (on
+                        && !after.is_some_and(|w| {
+                            super::lexicon::noun(w).is_some_and(|k| k != super::lexicon::Noun::Pattern)
+                        }));
                 if places || group.iter().any(|g| dims[*g].has("pattern") || dims[*g].role == Role::Spacing) {
                     for g in &group {
                         if !dims[*g].has("pattern") {

@@ -758,8 +758,12 @@ fn sentence_adjectives(doc: &Doc, mentions: &[Mention], elements: &mut [Element]
             if e == target {
                 continue;
             }
-            let moved: Vec<usize> =
-                elements[e].dims.iter().copied().filter(|k| doc.sent[doc.dims[*k].tok] == s && doc.dims[*k].tok < first).collect();
+            let moved: Vec<usize> = elements[e]
+                .dims
+                .iter()
+                .copied()
+                .filter(|k| doc.sent[doc.dims[*k].tok] == s && doc.dims[*k].tok < first)
+                .collect();
             if !moved.is_empty() {
                 elements[e].dims.retain(|k| !moved.contains(k));
                 elements[target].dims.extend(moved);
@@ -896,7 +900,11 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
         // "Total height 35mm", "40mm overall length": the part's own.
         // (Not a cut's own: "a slot, 40 long overall".)
         let of_cut = o.is_some_and(|o| matches!(elements[o].kind, Noun::Cut(_)));
-        let o = if (d.has("total") || d.has("overall")) && !of_cut { elements.iter().position(|e| e.title).or(o) } else { o };
+        let o = if (d.has("total") || d.has("overall")) && !of_cut {
+            elements.iter().position(|e| e.title).or(o)
+        } else {
+            o
+        };
         if let Some(o) = o.and_then(|o| elements.get_mut(o)) {
             o.dims.push(k);
         }

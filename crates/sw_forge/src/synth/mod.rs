@@ -117,9 +117,7 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
     }
     let model = read::read(&d).map_err(|r| SynthError::Unread { phrase: r.phrase, reason: r.reason })?;
     // The second reading: what the words alone say the part measures.
-    takeoff::Takeoff::read(&d)
-        .check(&model)
-        .map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
+    takeoff::Takeoff::read(&d).check(&model).map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
     Ok(finish(prompt, "features", &model))
 }
 

@@ -123,8 +123,22 @@ pub const STANDARDS: &[&str] = &["iso", "din", "en", "nema", "sae", "ansi", "bs"
 pub const LENGTH_NOUNS: &[&str] = &["wall", "walls", "floor", "face", "web"];
 
 /// Words after a number that make it a length when it has no unit ("120 across").
-pub const LENGTH_AFTER: &[&str] =
-    &["across", "outside", "inside", "square", "sq", "swg", "gauge", "by", "way", "overall", "total", "projecting", "proud", "each"];
+pub const LENGTH_AFTER: &[&str] = &[
+    "across",
+    "outside",
+    "inside",
+    "square",
+    "sq",
+    "swg",
+    "gauge",
+    "by",
+    "way",
+    "overall",
+    "total",
+    "projecting",
+    "proud",
+    "each",
+];
 
 /// Words that, right after a length, say it is a spacing ("on 50 mm centres").
 pub const SPACING_AFTER: &[&str] = &["centres", "centers", "ctrs", "crs", "ctr", "centre", "center", "pitch"];
@@ -212,8 +226,19 @@ pub fn role_prefix(w: &str) -> Option<(&'static str, f64)> {
 
 /// Words after a hole's diameter in a callout that make it a hole when no noun says so
 /// ("4x Ø6.6 thru", "Ø5 x 8 deep", "M4 clearance").
-pub const CALLOUT: &[&str] =
-    &["through", "deep", "clearance", "blind", "drilled", "drill", "counterbore", "countersink", "tapped", "thread", "threaded"];
+pub const CALLOUT: &[&str] = &[
+    "through",
+    "deep",
+    "clearance",
+    "blind",
+    "drilled",
+    "drill",
+    "counterbore",
+    "countersink",
+    "tapped",
+    "thread",
+    "threaded",
+];
 
 #[cfg(test)]
 mod tests {

@@ -50,12 +50,27 @@ pub struct Thing {
 /// A body's shape as the second reading sizes it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Solid {
-    Box { x: f64, y: f64, z: f64 },
-    Cylinder { d: f64, l: f64 },
-    Ring { od: f64, id: f64, l: f64 },
-    Ball { d: f64 },
+    Box {
+        x: f64,
+        y: f64,
+        z: f64,
+    },
+    Cylinder {
+        d: f64,
+        l: f64,
+    },
+    Ring {
+        od: f64,
+        id: f64,
+        l: f64,
+    },
+    Ball {
+        d: f64,
+    },
     /// Half a ball, on its flat.
-    Dome { d: f64 },
+    Dome {
+        d: f64,
+    },
 }
 
 impl Solid {
@@ -224,14 +239,16 @@ impl<'a> Takeoff<'a> {
                 count = None;
             }
             // "a keyway slot", "the keyway": one cut, named by its first noun.
-            let modifier = h.checked_sub(1).and_then(|p| doc.word(p)).filter(|m| {
-                matches!(noun(m), Some(Noun::Cut(_))) && matches!(kind, Noun::Cut(_))
-            });
+            let modifier = h
+                .checked_sub(1)
+                .and_then(|p| doc.word(p))
+                .filter(|m| matches!(noun(m), Some(Noun::Cut(_))) && matches!(kind, Noun::Cut(_)));
             let w = modifier.unwrap_or(w);
             let same = things.iter().rposition(|t| t.noun == w);
             // A thing announced without its sizes ("a shaft with a keyway: … A rectangular
             // keyway runs …") is the same when named again with them.
-            let announced = same.is_some_and(|t| !clause_sized(doc, things[t].phrase.1) && things[t].count.is_none_or(|c| c <= 1));
+            let announced =
+                same.is_some_and(|t| !clause_sized(doc, things[t].phrase.1) && things[t].count.is_none_or(|c| c <= 1));
             // Named again with no size of its own ("…; a single through hole", "one block").
             let again = same.is_some() && !clause_sized(doc, h);
             let refers = det.is_some_and(definite) || det.is_none() || prep || announced || again;
@@ -380,8 +397,7 @@ impl<'a> Takeoff<'a> {
             }
             ShapeHint::Sphere | ShapeHint::Hemisphere => {
                 let dia = one(&[Role::Diameter, Role::Radius, Role::Bare], &[], &[]).ok()??;
-                let half = hint == ShapeHint::Hemisphere
-                    || (th.phrase.0..th.phrase.1).any(|i| self.doc.is(i, "half"));
+                let half = hint == ShapeHint::Hemisphere || (th.phrase.0..th.phrase.1).any(|i| self.doc.is(i, "half"));
                 let ok = dims.len() == 1 || dims.iter().all(|k| matches!(d(k).role, Role::Diameter | Role::Radius));
                 ok.then_some(if half { Solid::Dome { d: dia } } else { Solid::Ball { d: dia } })
             }
@@ -389,7 +405,9 @@ impl<'a> Takeoff<'a> {
                 // Three lengths: a list ("80 x 60 x 5"), roles, sides — each role once.
                 let list: Vec<f64> = dims.iter().filter(|k| d(k).list.is_some()).map(|k| d(k).mm).collect();
                 let rest: Vec<usize> = dims.iter().copied().filter(|k| d(k).list.is_none()).collect();
-                if rest.iter().any(|k| !(along.contains(&d(k).role) || matches!(d(k).role, Role::Width | Role::Side | Role::Bare))) {
+                if rest.iter().any(|k| {
+                    !(along.contains(&d(k).role) || matches!(d(k).role, Role::Width | Role::Side | Role::Bare))
+                }) {
                     return None;
                 }
                 let mut v: Vec<f64> = list.clone();
@@ -399,7 +417,9 @@ impl<'a> Takeoff<'a> {
                         return None;
                     }
                 } else {
-                    for roles in [&[Role::Length][..], &[Role::Width], &[Role::Height], &[Role::Thickness], &[Role::Depth]] {
+                    for roles in
+                        [&[Role::Length][..], &[Role::Width], &[Role::Height], &[Role::Thickness], &[Role::Depth]]
+                    {
                         if let Some(x) = one(roles, &[], &["wall"]).ok()? {
                             let listed = !list.is_empty()
                                 && dims.iter().filter(|k| roles.contains(&d(k).role)).all(|k| d(k).list.is_some());
@@ -413,8 +433,7 @@ impl<'a> Takeoff<'a> {
                         let cube = th.noun == "cube";
                         v.extend(std::iter::repeat_n(s, if cube { 3 } else { 2 }));
                     }
-                    let bare: Vec<f64> =
-                        rest.iter().filter(|k| d(k).role == Role::Bare).map(|k| d(k).mm).collect();
+                    let bare: Vec<f64> = rest.iter().filter(|k| d(k).role == Role::Bare).map(|k| d(k).mm).collect();
                     if th.noun == "cube" && v.is_empty() && bare.len() == 1 {
                         v = vec![bare[0]; 3];
                     } else {
@@ -467,7 +486,8 @@ impl<'a> Takeoff<'a> {
             let first = th.dims.iter().map(|k| d.dims[*k].tok).min().unwrap_or(th.phrase.0).min(th.phrase.0);
             d.quote(first, last)
         };
-        let fmt = |e: [f64; 3]| format!("{} x {} x {} mm", super::num::n(e[0]), super::num::n(e[1]), super::num::n(e[2]));
+        let fmt =
+            |e: [f64; 3]| format!("{} x {} x {} mm", super::num::n(e[0]), super::num::n(e[1]), super::num::n(e[2]));
         // "30 overall", "overall length 40", "total height 35": the part measures that.
         for (_, x) in d.dims.iter().enumerate().filter(|(k, x)| {
             // (Of the part, not of a cut: "a slot, 40 long overall".)
@@ -480,7 +500,11 @@ impl<'a> Takeoff<'a> {
             if !got.iter().any(|g| close(*g, x.mm)) {
                 return Err(Disagreement {
                     phrase: d.quote(x.phrase.0.min(x.tok), x.phrase.1.max(x.tok + 1).saturating_sub(1)),
-                    reason: format!("the words make the part {} mm overall, but it was read as {}", super::num::n(x.mm), fmt(got)),
+                    reason: format!(
+                        "the words make the part {} mm overall, but it was read as {}",
+                        super::num::n(x.mm),
+                        fmt(got)
+                    ),
                 });
             }
         }
@@ -505,11 +529,8 @@ impl<'a> Takeoff<'a> {
                     .find(|x| x.role == role && (with.is_empty() || x.has(with)))
                     .map(|x| x.mm)
             };
-            let od = dims
-                .iter()
-                .map(|k| &d.dims[*k])
-                .find(|x| x.role == Role::Diameter && !x.has("inner"))
-                .map(|x| x.mm);
+            let od =
+                dims.iter().map(|k| &d.dims[*k]).find(|x| x.role == Role::Diameter && !x.has("inner")).map(|x| x.mm);
             if let (Some(o), Some(i), Some(w)) = (od, of(Role::Diameter, "inner"), of(Role::Thickness, "wall"))
                 && (o - 2.0 * w - i).abs() > 0.005 * o
             {
@@ -553,7 +574,19 @@ impl<'a> Takeoff<'a> {
         // Every cut the words name is made: holes, bores, slots, keyways, grooves and pockets
         // named (with their counts) are at most the model's cuts, its rings' bores and shells.
         let named: u32 = (0..self.things.len())
-            .filter(|t| matches!(self.things[*t].kind, Noun::Cut(CutKind::Hole | CutKind::Bore | CutKind::Slot | CutKind::Keyway | CutKind::Groove | CutKind::Pocket)))
+            .filter(|t| {
+                matches!(
+                    self.things[*t].kind,
+                    Noun::Cut(
+                        CutKind::Hole
+                            | CutKind::Bore
+                            | CutKind::Slot
+                            | CutKind::Keyway
+                            | CutKind::Groove
+                            | CutKind::Pocket
+                    )
+                )
+            })
             .map(|t| self.things[t].count.unwrap_or(1).max(1))
             .sum();
         let made = model.cuts.len()
@@ -569,9 +602,10 @@ impl<'a> Takeoff<'a> {
                         )
                 })
                 .count();
-        let profiled = model.adds.iter().any(|b| {
-            matches!(b.shape, super::solid::Shape::Revolve { .. } | super::solid::Shape::Loft { .. })
-        });
+        let profiled = model
+            .adds
+            .iter()
+            .any(|b| matches!(b.shape, super::solid::Shape::Revolve { .. } | super::solid::Shape::Loft { .. }));
         if named as usize > made && !profiled {
             let t = (0..self.things.len()).find(|t| matches!(self.things[*t].kind, Noun::Cut(_))).unwrap_or(0);
             return Err(Disagreement {

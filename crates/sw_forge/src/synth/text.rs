@@ -168,10 +168,12 @@ pub fn tokenize(text: &str) -> Vec<Token> {
             g += 1;
         }
         let next: String = chars[f..g].iter().map(|c| c.1).collect::<String>().to_ascii_lowercase();
-        !matches!(
+        let article = matches!(
             next.as_str(),
             "the" | "a" | "an" | "its" | "each" | "one" | "both" | "from" | "which" | "this" | "that" | "all" | "place"
-        ) && !(next.len() == 1 && matches!(next.as_str(), "x" | "y" | "z") && at(g) == Some('='))
+        );
+        let coordinate = matches!(next.as_str(), "x" | "y" | "z") && at(g) == Some('=');
+        !(article || coordinate)
     };
     // A role symbol read before the next number ("Ø"), and where it began.
     let mut pending_role: Option<(&'static str, usize)> = None;
@@ -525,7 +527,10 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             && toks[i - 1].is_sym('x')
             && matches!(toks[i - 2].kind, Tk::Num { v, .. } if v < 45.0)
             && !toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
-            && !toks.get(i + 1).and_then(Token::word).is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Body(_))));
+            && !toks
+                .get(i + 1)
+                .and_then(Token::word)
+                .is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Body(_))));
         if angle {
             toks[i].kind = Tk::Deg(45.0);
             if let Tk::Num { v, unit: None, pm, signed } = toks[i - 2].kind {
@@ -545,7 +550,9 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
                 && word(toks, i + 2).as_deref().is_some_and(is_role));
         // A count: "6 holes", "4x Ø6.6", "16 teeth", "4 x M6".
         if !length_noun
-            && next.as_deref().is_some_and(|w| super::lexicon::noun(w).is_some() || matches!(w, "tooth" | "vertex" | "point"))
+            && next
+                .as_deref()
+                .is_some_and(|w| super::lexicon::noun(w).is_some() || matches!(w, "tooth" | "vertex" | "point"))
         {
             continue;
         }
@@ -557,8 +564,20 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
                 matches!(
                     w,
                     Some(
-                        "edge" | "end" | "side" | "corner" | "center" | "face" | "centerline" | "top" | "bottom"
-                            | "base" | "underside" | "floor" | "datum" | "origin"
+                        "edge"
+                            | "end"
+                            | "side"
+                            | "corner"
+                            | "center"
+                            | "face"
+                            | "centerline"
+                            | "top"
+                            | "bottom"
+                            | "base"
+                            | "underside"
+                            | "floor"
+                            | "datum"
+                            | "origin"
                     )
                 )
             });
@@ -604,7 +623,8 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
                         && matches!(w, "bore" | "hole" | "projecting" | "protruding" | "extending" | "proud" | "rising"))
             });
         // "1 x 45°": a chamfer's size.
-        let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x')) && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
+        let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
+            && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
         if after || before || chamfer || from_edge {
             length[i] = true;
         }
@@ -636,16 +656,14 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             // "4x Ø6.6", "2 x Ø14 holes": a count of what the Ø names, not a list.
             let right = times(toks.get(i + 1)) && joined(i + 2) && !marker(toks, i + 3);
             // "80 x 50", "200 by 150": two sizes, unless they count a grid ("3x2 array").
+            let grid = (i + 3..(i + 6).min(toks.len())).any(|j| {
+                toks[j].word().is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Pattern)))
+            });
+            let longer = toks.get(i + 3).is_some_and(|t| t.is_sym('x') || t.is_word("by"));
+            let after_times = i > 0 && times(toks.get(i - 1));
             let pair = times(toks.get(i + 1))
                 && toks.get(i + 2).is_some_and(unitless)
-                && !(i > 0 && times(toks.get(i - 1)))
-                && !toks.get(i + 3).is_some_and(|t| t.is_sym('x') || t.is_word("by"))
-                && !(i + 3..(i + 6).min(toks.len())).any(|j| {
-                    toks[j].word().is_some_and(|w| {
-                        matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Pattern))
-                    })
-                })
-                && !marker(toks, i + 3);
+                && !(after_times || longer || grid || marker(toks, i + 3));
             // Three numbers in a row joined by x: a box.
             let triple = times(toks.get(i + 1))
                 && toks.get(i + 2).is_some_and(unitless)
@@ -699,7 +717,8 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
         if let Some((_, words)) = letter
             && toks[i + 1].is_sym('=')
             && matches!(toks[i + 2].kind, Tk::Num { .. })
-            && !(i > 0 && toks[i - 1].word().is_some_and(|w| w.chars().all(|c| c.is_ascii_alphabetic()) && w.len() == 1))
+            && !(i > 0
+                && toks[i - 1].word().is_some_and(|w| w.chars().all(|c| c.is_ascii_alphabetic()) && w.len() == 1))
         {
             let (s, e) = (toks[i].start, toks[i + 1].end);
             toks.remove(i + 1);
@@ -738,10 +757,12 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
         let sentence_end = (i..toks.len()).find(|j| toks[*j].is_sym('.') || toks[*j].is_sym(';')).unwrap_or(toks.len());
         let sentence_start = (0..i).rev().find(|j| toks[*j].is_sym('.') || toks[*j].is_sym(';')).map_or(0, |j| j + 1);
         let near: Vec<&str> = (i + 2..(i + 5).min(toks.len())).filter_map(|j| toks[j].word()).collect();
-        let clearance = near.iter().any(|w| *w == "clearance");
+        let clearance = near.contains(&"clearance");
         let tapped = near.iter().any(|w| super::notation::THREAD.contains(w))
             || (sentence_start..sentence_end).any(|j| {
-                toks[j].word().is_some_and(|w| super::notation::THREAD.contains(&w) || (j < i && super::notation::THREADED_NOUNS.contains(&w)))
+                toks[j].word().is_some_and(|w| {
+                    super::notation::THREAD.contains(&w) || (j < i && super::notation::THREADED_NOUNS.contains(&w))
+                })
             });
         if tapped && !clearance {
             if let Tk::Num { pm, signed, .. } = toks[i + 1].kind {
@@ -752,7 +773,8 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             let named = (i + 2..sentence_end).any(|j| {
                 toks[j].word().is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Cut(_))))
             });
-            let threaded_noun = (sentence_start..i).any(|j| toks[j].word().is_some_and(|w| super::notation::THREADED_NOUNS.contains(&w)));
+            let threaded_noun = (sentence_start..i)
+                .any(|j| toks[j].word().is_some_and(|w| super::notation::THREADED_NOUNS.contains(&w)));
             if !named && threaded_noun {
                 let e = toks[i + 1].end;
                 toks.insert(i + 2, Token { kind: Tk::Word("hole".into()), start: e, end: e });
@@ -779,7 +801,11 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             continue;
         }
         // A counterbore's or countersink's own diameter ("c'bore Ø15 x 9 dp") is no hole.
-        if i >= 1 && toks[i - 1].word().is_some_and(|w| matches!(w, "counterbore" | "countersink" | "counterbored" | "countersunk")) {
+        if i >= 1
+            && toks[i - 1]
+                .word()
+                .is_some_and(|w| matches!(w, "counterbore" | "countersink" | "counterbored" | "countersunk"))
+        {
             i += 1;
             continue;
         }

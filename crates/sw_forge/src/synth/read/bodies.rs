@@ -425,7 +425,16 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                 r.known.push(w);
                 let len = r.take(e, ALONG, &[], &["wall"]);
                 let span = span(r, e, axis, len)?;
-                return Ok(add(r, e, Profile::Annulus { od, id: od - 2.0 * w }, axis, span, Some(od), Some(od - 2.0 * w), None));
+                return Ok(add(
+                    r,
+                    e,
+                    Profile::Annulus { od, id: od - 2.0 * w },
+                    axis,
+                    span,
+                    Some(od),
+                    Some(od - 2.0 * w),
+                    None,
+                ));
             }
             // "a 50 mm round bar, 80 long": a bare size before it, with its length named.
             if r.find(e, &[Role::Diameter, Role::Radius], &[], &[]).is_none()
@@ -598,7 +607,8 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
         // "a Ø40 hub projecting 10 on one side": as long as the body before it, and that much more.
         if len.is_none()
             && (r.says(e, "projecting") || r.says(e, "protruding") || r.says(e, "proud"))
-            && let Some(prev) = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.axis == axis).map(|b| b.span))
+            && let Some(prev) =
+                (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.axis == axis).map(|b| b.span))
             && let Some(k) = r.find(e, &[Role::Bare, Role::Length], &[], &[])
         {
             r.used_dims[k] = true;
@@ -611,7 +621,9 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
         // "HUB Ø50 …, 30 OVERALL": a body with no length of its own spans the part's overall length.
         if len.is_none() {
             let overall = (0..r.doc.dims.len()).find(|k| {
-                !r.used_dims[*k] && (r.doc.dims[*k].has("overall") || r.doc.dims[*k].has("total")) && r.doc.dims[*k].role != Role::Diameter
+                !r.used_dims[*k]
+                    && (r.doc.dims[*k].has("overall") || r.doc.dims[*k].has("total"))
+                    && r.doc.dims[*k].role != Role::Diameter
             });
             if let Some(k) = overall {
                 r.used_dims[k] = true;
@@ -620,7 +632,13 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                 let from = (0..e)
                     .filter_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.axis == axis).map(|b| b.span[0]))
                     .fold(f64::INFINITY, f64::min);
-                let from = if from.is_finite() { from } else if r.centered { -l / 2.0 } else { 0.0 };
+                let from = if from.is_finite() {
+                    from
+                } else if r.centered {
+                    -l / 2.0
+                } else {
+                    0.0
+                };
                 return Ok(add(r, e, profile, axis, [from, from + l], Some(od), id, None));
             }
         }
@@ -893,7 +911,10 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
 
 fn torus(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     // "major radius 40, minor radius 10": the ring's and the tube's.
-    let by_radii = match (r.find(e, &[Role::Diameter, Role::Radius], &["major"], &[]), r.find(e, &[Role::Diameter, Role::Radius], &["minor"], &[])) {
+    let by_radii = match (
+        r.find(e, &[Role::Diameter, Role::Radius], &["major"], &[]),
+        r.find(e, &[Role::Diameter, Role::Radius], &["minor"], &[]),
+    ) {
         (Some(_), Some(_)) => Some((r.take_diameter(e, &["major"], &[]), r.take_diameter(e, &["minor"], &[]))),
         _ => None,
     };
@@ -984,7 +1005,8 @@ fn pyramid(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         // "40 x 40 at the top, … tapering to 25 x 25 at the bottom": which is said the top.
         let said_top = |k: usize| {
             let t = r.dim(k).tok;
-            r.dim(k).has("top") || (t + 1..(t + 5).min(r.doc.len())).take_while(|i| !r.doc.sym(*i, ',')).any(|i| r.doc.is(i, "top"))
+            r.dim(k).has("top")
+                || (t + 1..(t + 5).min(r.doc.len())).take_while(|i| !r.doc.sym(*i, ',')).any(|i| r.doc.is(i, "top"))
         };
         let top_first = said_top(pairs[1]) && !said_top(pairs[3]);
         mark_words(r, &["tapering", "tapers", "tapered", "top", "bottom", "whole"]);
@@ -1119,7 +1141,10 @@ fn right_triangle(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         },
     ));
     for i in 0..r.doc.len() {
-        if matches!(r.doc.word(i), Some("right" | "angle" | "right-angle" | "right-angled" | "triangle" | "leg" | "extruded")) {
+        if matches!(
+            r.doc.word(i),
+            Some("right" | "angle" | "right-angle" | "right-angled" | "triangle" | "leg" | "extruded")
+        ) {
             r.doc.mark(i);
         }
     }

@@ -228,7 +228,8 @@ fn way_axis(r: &mut Reader<'_>, e: usize) -> Res<Option<Axis>> {
 /// "its centre 30 above the base": the height of a cut across the part, from its bottom
 /// (or below its top).
 fn height_of(r: &mut Reader<'_>, e: usize) -> Option<f64> {
-    let k = r.find(e, &[Role::Inset], &["from-bottom"], &[]).or_else(|| r.find(e, &[Role::Inset], &["from-top"], &[]))?;
+    let k =
+        r.find(e, &[Role::Inset], &["from-bottom"], &[]).or_else(|| r.find(e, &[Role::Inset], &["from-top"], &[]))?;
     r.used_dims[k] = true;
     let dm = r.doc.dims[k].clone();
     r.doc.mark_range(dm.phrase.0, dm.phrase.1 + 3);
@@ -529,14 +530,11 @@ fn partner(r: &Reader<'_>, e: usize, kind: CutKind) -> Option<usize> {
         .min()
         .unwrap_or(usize::MAX);
     let undone = |k: &usize| matches!(r.els[*k].kind, Noun::Cut(c) if c == kind) && !r.done[*k];
-    (0..r.els.len())
-        .filter(undone)
-        .find(|k| first(*k) > here && first(*k) < next_hole)
-        .or_else(|| {
-            // Said before the holes ("counterbored holes … counterbore 10 mm") when only one hole is named.
-            let holes = (0..r.els.len()).filter(|k| matches!(r.els[*k].kind, Noun::Cut(CutKind::Hole))).count();
-            if holes == 1 { (0..r.els.len()).find(undone) } else { None }
-        })
+    (0..r.els.len()).filter(undone).find(|k| first(*k) > here && first(*k) < next_hole).or_else(|| {
+        // Said before the holes ("counterbored holes … counterbore 10 mm") when only one hole is named.
+        let holes = (0..r.els.len()).filter(|k| matches!(r.els[*k].kind, Noun::Cut(CutKind::Hole))).count();
+        if holes == 1 { (0..r.els.len()).find(undone) } else { None }
+    })
 }
 
 /// A hole across a round body ("drilled radially through the hub at Z=20mm, oriented along
@@ -550,7 +548,11 @@ fn radial_hole(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, tg: &[usize]) -
     if d >= full[1] - full[0] - 1e-9 {
         return Err(Refusal::new(
             r.quote_element(e),
-            format!("a {} mm hole across a body {} mm wide would cut it in two", super::super::num::n(d), super::super::num::n(full[1] - full[0])),
+            format!(
+                "a {} mm hole across a body {} mm wide would cut it in two",
+                super::super::num::n(d),
+                super::super::num::n(full[1] - full[0])
+            ),
         ));
     }
     // "8 from one end", "at 20 from one end": from the bottom end (either end makes the same part).
@@ -709,7 +711,8 @@ fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         }
     }
     // "a 60 x 20 slot": its length by its width, overall.
-    let listed: Vec<usize> = r.free_dims(e).into_iter().filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare).collect();
+    let listed: Vec<usize> =
+        r.free_dims(e).into_iter().filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare).collect();
     let (w, len) = if let ([a, b], None) = (listed.as_slice(), r.find(e, &[Role::Width], &[], &[])) {
         let (x, y) = (r.dim(*a).mm, r.dim(*b).mm);
         r.used_dims[*a] = true;

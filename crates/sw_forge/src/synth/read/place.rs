@@ -285,7 +285,8 @@ pub fn square_pattern(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
 /// "two holes on the centreline, 15 from each end", "2x Ø8 on CL 20 from ends": two copies
 /// on the long centreline of a part of size (u, v), each inset from an end.
 pub fn ends(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64; 2]>> {
-    let said = r.sentences_of(e).iter().any(|(a, b)| (*a..*b).any(|i| matches!(r.doc.word(i), Some("end" | "centerline"))));
+    let said =
+        r.sentences_of(e).iter().any(|(a, b)| (*a..*b).any(|i| matches!(r.doc.word(i), Some("end" | "centerline"))));
     if !said {
         return None;
     }

@@ -139,17 +139,18 @@ fn beam(r: &mut Reader<'_>, t: usize, s: Section) -> Res<()> {
 
 fn channel(r: &mut Reader<'_>, t: usize) -> Res<()> {
     // "Channel 100 x 50 x 5 (web x flange x thickness), 400 long": a catalogue's size.
-    let list: Vec<usize> = r.free_dims(t).into_iter().filter(|k| r.dim(*k).list.is_some() && !r.dim(*k).paren).collect();
+    let list: Vec<usize> =
+        r.free_dims(t).into_iter().filter(|k| r.dim(*k).list.is_some() && !r.dim(*k).paren).collect();
     let catalogue = if let [a, b, c] = list.as_slice() {
         let v = [r.dim(*a).mm, r.dim(*b).mm, r.dim(*c).mm];
         for k in [a, b, c] {
             r.used_dims[*k] = true;
         }
         for i in 0..r.doc.len() {
-            if matches!(r.doc.word(i), Some("web" | "flange" | "thickness" | "x")) || r.doc.sym(i, 'x') {
-                if r.doc.depth[i] > 0 {
-                    r.doc.mark(i);
-                }
+            if (matches!(r.doc.word(i), Some("web" | "flange" | "thickness" | "x")) || r.doc.sym(i, 'x'))
+                && r.doc.depth[i] > 0
+            {
+                r.doc.mark(i);
             }
         }
         Some(v)
@@ -251,7 +252,8 @@ fn rect_tube(r: &mut Reader<'_>, t: usize) -> Res<()> {
 /// the L of two legs (outside sizes) and its thickness, extruded along its length.
 fn angle(r: &mut Reader<'_>, t: usize) -> Res<bool> {
     let dims = r.free_dims(t);
-    let list: Vec<usize> = dims.iter().copied().filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare).collect();
+    let list: Vec<usize> =
+        dims.iter().copied().filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare).collect();
     let legs: Vec<usize> = dims.iter().copied().filter(|k| r.dim(*k).has("leg") && !list.contains(k)).collect();
     let (a, b, mut th) = match (list.as_slice(), legs.as_slice()) {
         ([a, b, c], _) => (*a, *b, Some(r.dim(*c).mm)),

@@ -56,7 +56,10 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
         let kind = match dm.role {
             Role::Fillet => Some(EdgeKind::Fillet),
             Role::Chamfer => Some(EdgeKind::Chamfer),
-            Role::Radius if (a..b).any(|i| matches!(d.word(i), Some("edge" | "corner"))) && (rounding || role_on_edges(d, dm)) => {
+            Role::Radius
+                if (a..b).any(|i| matches!(d.word(i), Some("edge" | "corner")))
+                    && (rounding || role_on_edges(d, dm)) =>
+            {
                 Some(EdgeKind::Fillet)
             }
             _ => None,
@@ -129,8 +132,19 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
                 matches!(
                     d.word(j),
                     Some(
-                        "top" | "bottom" | "vertical" | "long" | "circular" | "all" | "four" | "each" | "every"
-                            | "outside" | "outer" | "od" | "both"
+                        "top"
+                            | "bottom"
+                            | "vertical"
+                            | "long"
+                            | "circular"
+                            | "all"
+                            | "four"
+                            | "each"
+                            | "every"
+                            | "outside"
+                            | "outer"
+                            | "od"
+                            | "both"
                     )
                 )
             });
@@ -194,11 +208,19 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
         return Ok(Edges::Ends(Axis::ALL[k]));
     }
     // A ring's outer edges are not told apart from its bore's by the circular selector.
-    let ring = matches!(&r.model.adds[bi].shape, Shape::Prism { profile: super::super::profile::Profile::Annulus { .. }, .. });
+    let ring =
+        matches!(&r.model.adds[bi].shape, Shape::Prism { profile: super::super::profile::Profile::Annulus { .. }, .. });
     if ring && (has("od") || has("outside") || has("outer")) {
-        return Err(Refusal::new(d.quote(a, b.saturating_sub(1)), "a ring's outside edges alone are not treated (its bore's edges would be too)"));
+        return Err(Refusal::new(
+            d.quote(a, b.saturating_sub(1)),
+            "a ring's outside edges alone are not treated (its bore's edges would be too)",
+        ));
     }
-    if has("circular") || has("end") || (has("top") && has("bottom")) || (round && (has("od") || has("outside") || has("outer") || has("side"))) {
+    if has("circular")
+        || has("end")
+        || (has("top") && has("bottom"))
+        || (round && (has("od") || has("outside") || has("outer") || has("side")))
+    {
         for w in ["circular", "end", "top", "bottom", "and", "od", "outside", "outer", "side"] {
             mark(w);
         }

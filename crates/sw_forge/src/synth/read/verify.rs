@@ -412,7 +412,13 @@ fn is_count(d: &super::super::doc::Doc, i: usize) -> bool {
     for j in i + 1..(i + 5).min(d.len()) {
         match (d.word(j), &d.toks[j].kind) {
             (Some(w), _) if super::super::lexicon::noun(w).is_some() => return true,
-            (Some("tooth" | "vertex" | "point" | "side" | "sided" | "per" | "row" | "time" | "spoke" | "step" | "turn"), _) => {
+            (
+                Some(
+                    "tooth" | "vertex" | "point" | "side" | "sided" | "per" | "row" | "time" | "spoke" | "step"
+                    | "turn",
+                ),
+                _,
+            ) => {
                 return true;
             }
             (Some(w), _)
