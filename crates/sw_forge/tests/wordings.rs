@@ -118,6 +118,13 @@ fn a_bar_or_pin_by_diameter_and_length_with_chamfered_ends() {
         ] {
             r.push(made(&p, [d, d, l], v));
         }
+        // At one end only (either end gives the same part).
+        for p in [
+            format!("A rod {d} mm in diameter and {l} mm long with a {c} mm chamfer at one end."),
+            format!("Ø{d} x {l} pin, {c}x45° chamfer one end"),
+        ] {
+            r.push(made(&p, [d, d, l], PI * rr * rr * l - one_end));
+        }
         for p in [
             format!("rd bar Ø{d} x {l} lg"),
             format!("{d}\u{2300} x {l} long round bar"),

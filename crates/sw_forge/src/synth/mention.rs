@@ -155,8 +155,6 @@ pub const LABELS: &[&str] = &[
     "gearbox",
     "bearing",
     "dowel",
-    "split",
-    "knurled",
     "flanged",
     "threaded",
     "tapped",
@@ -469,7 +467,12 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                                     found = true;
                                     break;
                                 }
-                                let stop = doc.toks[q].is_sym(',')
+                                // Past the commas of the same list ("a 40mm long, 8mm wide, 4mm deep keyway").
+                                let listed = doc.toks[q].is_sym(',')
+                                    && q >= 2
+                                    && doc.word(q - 1).is_some_and(|w| super::doc::role_of(w).is_some())
+                                    && matches!(doc.toks[q - 2].kind, Tk::Num { unit: Some(_), .. });
+                                let stop = (doc.toks[q].is_sym(',') && !listed)
                                     || doc.toks[q].is_sym('.')
                                     || doc.toks[q].is_sym(':')
                                     || doc.word(q).is_some_and(|w| noun(w).is_some());

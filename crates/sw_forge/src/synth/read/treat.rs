@@ -193,6 +193,24 @@ fn select(r: &Reader<'_>, s: usize, bi: usize) -> Res<Edges> {
         };
         return Ok(Edges::Parallel(k));
     }
+    // "at one end": the edges of one end face (either gives the same part).
+    let one_end = (a..b.saturating_sub(1)).any(|i| d.is(i, "one") && d.is(i + 1, "end"));
+    if one_end {
+        for w in ["one", "end", "at"] {
+            mark(w);
+        }
+        let bb = r.model.adds[bi].bounds();
+        let s = [bb[1][0] - bb[0][0], bb[1][1] - bb[0][1], bb[1][2] - bb[0][2]];
+        let k = if round {
+            match &r.model.adds[bi].shape {
+                Shape::Prism { axis, .. } => axis.index(),
+                _ => 2,
+            }
+        } else {
+            (0..3).max_by(|a, b| s[*a].total_cmp(&s[*b])).unwrap_or(2)
+        };
+        return Ok(Edges::Face(Axis::ALL[k], true));
+    }
     // A bar's end edges: both end faces, across its longest extent.
     if !round && (has("end") || (has("top") && has("bottom"))) {
         for w in ["end", "top", "bottom", "and", "both"] {

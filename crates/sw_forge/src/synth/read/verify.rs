@@ -341,21 +341,6 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
             }
         }
     }
-    // "a flange at one end", "projecting on one side": a body at an end of the part (made so).
-    for i in 0..d.len().saturating_sub(1) {
-        if matches!(d.word(i), Some("one" | "either" | "other")) && matches!(d.word(i + 1), Some("end" | "side")) {
-            let touches = r.built.iter().flatten().filter(|b| !b.cut).any(|b| {
-                let k = b.axis.index();
-                (b.span[0] - pb[0][k]).abs() < 1e-6 || (b.span[1] - pb[1][k]).abs() < 1e-6
-            });
-            if touches {
-                d.mark_range(i, i + 2);
-                if i > 0 && matches!(d.word(i - 1), Some("at" | "on")) {
-                    d.mark(i - 1);
-                }
-            }
-        }
-    }
     for (i, t) in d.toks.iter().enumerate() {
         if let Tk::Deg(_) = t.kind {
             d.mark(i);
