@@ -145,6 +145,7 @@ fn a_plate_with_a_hole_at_each_corner() {
             format!("PLATE {a} x {b} x {t}, 4X Ø{h} THRU, {i} FROM EDGES"),
             format!("plt {a}x{b}x{t}, 4x Ø{h} thru {i} from edges"),
             format!("A {a} x {b} x {t} plate with four {h} mm holes, {i} mm from each edge at the corners"),
+            format!("a {a} x {b} x {t} mm plate with a {h} mm hole {i} mm in from each corner (four holes)"),
             format!("PLATE {a} x {b} x {t}, 4X Ø{h} THRU ON {} x {} CENTRES", a - 2.0 * i, b - 2.0 * i),
             format!(
                 "A {a} by {b} by {t} plate with four {h} mm holes on a {} by {} rectangle",

@@ -264,6 +264,8 @@ pub struct Mention {
     pub plural: bool,
     pub sent: usize,
     pub elem: usize,
+    /// Alone in parentheses ("(four holes)"): an aside about something named before.
+    pub paren_aside: bool,
 }
 
 /// One thing the prompt describes, from all its mentions.
@@ -570,6 +572,10 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
             },
             sent: doc.sent[i],
             elem: usize::MAX,
+            paren_aside: doc.depth[i] > 0
+                && doc.sym(first.saturating_sub(1), '(')
+                && doc.sym(i + 1, ')')
+                && (first..i).all(|j| doc.word(j).is_some_and(|w| number_word(w).is_some())),
         });
     }
     let elements = group(doc, &mut mentions);
@@ -592,6 +598,10 @@ fn same_thing(m: &Mention, e: &Element) -> bool {
     // "The first pipe" of "two pipes" is a thing of its own (it may differ from the second).
     if e.plural && m.mods.iter().any(|x| matches!(x.as_str(), "first" | "second" | "third")) {
         return false;
+    }
+    // "a 1/2 inch hole … (four holes)": an aside naming it again, with its count.
+    if m.noun == e.noun && m.paren_aside {
+        return true;
     }
     // "a block … with a block on top": a thing the part has, said with "a", is another one.
     if m.prep.as_deref() == Some("with") && m.det && !m.definite && !m.each {
