@@ -735,12 +735,7 @@ fn callout_places_to_the_hole(doc: &Doc, elements: &mut [Element]) {
         }
         let Some(h) = (0..c).rev().find(|h| matches!(elements[*h].kind, Noun::Cut(CutKind::Hole))) else { continue };
         let moved: Vec<usize> = elements[c].dims.iter().copied().filter(|k| doc.dims[*k].has("pattern")).collect();
-        if moved.is_empty() {
-            continue;
-        }
-        elements[c].dims.retain(|k| !moved.contains(k));
-        elements[h].dims.extend(moved);
-        elements[h].dims.sort_unstable();
+        move_dims(elements, c, h, &moved);
     }
 }
 
@@ -777,11 +772,7 @@ fn sentence_adjectives(doc: &Doc, mentions: &[Mention], elements: &mut [Element]
                 .copied()
                 .filter(|k| doc.sent[doc.dims[*k].tok] == s && doc.dims[*k].tok < first)
                 .collect();
-            if !moved.is_empty() {
-                elements[e].dims.retain(|k| !moved.contains(k));
-                elements[target].dims.extend(moved);
-                elements[target].dims.sort_unstable();
-            }
+            move_dims(elements, e, target, &moved);
         }
     }
 }
@@ -887,13 +878,18 @@ fn bare_lengths_to_the_part(doc: &Doc, elements: &mut [Element]) {
                     && d.tok > first_d
             })
             .collect();
-        if moved.is_empty() {
-            continue;
-        }
-        elements[c].dims.retain(|k| !moved.contains(k));
-        elements[t].dims.extend(moved);
-        elements[t].dims.sort_unstable();
+        move_dims(elements, c, t, &moved);
     }
+}
+
+/// Gives lengths read as one element's to another.
+fn move_dims(elements: &mut [Element], from: usize, to: usize, moved: &[usize]) {
+    if moved.is_empty() {
+        return;
+    }
+    elements[from].dims.retain(|k| !moved.contains(k));
+    elements[to].dims.extend_from_slice(moved);
+    elements[to].dims.sort_unstable();
 }
 
 fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
