@@ -69,8 +69,62 @@ struct Outcome {
     /// Free-form: the largest extent is one a real object of the kind has.
     plausible: Option<bool>,
     roundtrip_ms: Option<f64>,
+    /// Refused by the writer with the words it could not read (not made, said why).
+    refused_with_words: bool,
+    /// The writer's own check of the executed part failed (not handed out).
+    own_check_failed: bool,
+    /// The suite has a reference for it.
+    has_reference: bool,
+    /// The manner the prompt is written in, where the suite says.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    style: Option<String>,
+    /// A prompt that must be refused, quoting some of these words.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    refuse_words: Option<String>,
     #[serde(skip)]
     mesh: Option<Mesh>,
+}
+
+/// What a prompt came to, against its reference: the part made exactly (a closed solid,
+/// bounding box within 1 %, volume within 2 %); refused with the words it could not read;
+/// made wrong (handed out, but not the part the reference is); or failed otherwise (the
+/// code did not run, the mesh is no solid, or the part failed its own check).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+enum Verdict {
+    Exact,
+    Refused,
+    Wrong,
+    Failed,
+}
+
+impl Outcome {
+    /// The verdict, where the prompt has a reference or must be refused. A prompt that
+    /// must be refused passes when the refusal quotes some of its words, and any part made
+    /// for it is a wrong one.
+    fn verdict(&self) -> Option<Verdict> {
+        if let Some(words) = &self.refuse_words {
+            return Some(if self.made_by.is_some() {
+                Verdict::Wrong
+            } else if self.refused_with_words && quotes(self.message.as_deref().unwrap_or(""), words) {
+                Verdict::Refused
+            } else {
+                Verdict::Failed
+            });
+        }
+        if self.refused_with_words {
+            return Some(Verdict::Refused);
+        }
+        if !self.has_reference {
+            return None;
+        }
+        let Some(pass) = self.pass else { return Some(Verdict::Failed) };
+        Some(match (self.executed, pass, self.own_check_failed) {
+            (true, true, false) => Verdict::Exact,
+            (true, false, false) => Verdict::Wrong,
+            _ => Verdict::Failed,
+        })
+    }
 }
 
 #[derive(Debug, Default, Serialize)]
@@ -89,6 +143,11 @@ struct TierSummary {
     median_chamfer_rel: Option<f64>,
     with_plausibility: usize,
     plausible: usize,
+    /// Against a reference: exact, refused with the words, made wrong, failed otherwise.
+    exact: usize,
+    refused_with_words: usize,
+    wrong: usize,
+    failed: usize,
     failures: BTreeMap<String, usize>,
 }
 
@@ -117,6 +176,12 @@ struct CadBench {
     wall_s: f64,
     parts_per_s: f64,
     tiers: BTreeMap<String, TierSummary>,
+    /// By the manner prompts are written in, and by what they expect (made or refused),
+    /// where the suite says.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    styles: BTreeMap<String, TierSummary>,
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    expected: BTreeMap<String, TierSummary>,
     all: TierSummary,
     /// Every part that ran code, in the suite run (parallel workers).
     part_latency: Option<Latency>,
@@ -159,12 +224,19 @@ fn load(suite: &str) -> Result<Suite, Failure> {
             if prompts.is_empty() {
                 return Err(Failure::input(format!("{path}: no prompts (id<TAB>tier<TAB>prompt per line)")));
             }
-            // Beside it: STEM.refs.tsv, STEM.ref.py, STEM.sizes.tsv.
+            // Beside it: STEM.refs.tsv (else refs.tsv in its folder), STEM.ref.py, STEM.sizes.tsv.
             let side = |ext: &str| fs_err::read_to_string(p.with_extension(ext)).unwrap_or_default();
+            let mut refs = side("refs.tsv");
+            if refs.trim().is_empty() {
+                refs = std::fs::read_to_string(p.with_file_name("refs.tsv")).unwrap_or_default();
+            }
+            // Only the references of this file's prompts.
+            let ids: std::collections::BTreeSet<&str> = prompts.iter().map(|q| q.id.as_str()).collect();
+            let refs = parse_refs(&refs).into_iter().filter(|(id, _)| ids.contains(id.as_str())).collect();
             Ok(Suite {
                 name: path.into(),
                 prompts,
-                refs: parse_refs(&side("refs.tsv")),
+                refs,
                 programs: parse_programs(&side("ref.py")),
                 sizes: parse_sizes(&side("sizes.tsv")),
             })
@@ -176,6 +248,8 @@ fn blank(p: &Prompt) -> Outcome {
     Outcome {
         id: p.id.clone(),
         tier: p.tier.clone(),
+        style: p.style.clone(),
+        refuse_words: p.refuse_words.clone(),
         made_by: None,
         executed: false,
         retries: 0,
@@ -189,8 +263,26 @@ fn blank(p: &Prompt) -> Outcome {
         chamfer_rel: None,
         plausible: None,
         roundtrip_ms: None,
+        refused_with_words: false,
+        own_check_failed: false,
+        has_reference: false,
         mesh: None,
     }
+}
+
+/// Whether a refusal (`could not read "…": …`) quotes a word or number of `words`.
+fn quotes(message: &str, words: &str) -> bool {
+    const COMMON: &[&str] = &["a", "an", "the", "of", "with", "and", "mm", "in", "on", "to", "x"];
+    let quoted = message.split('"').nth(1).unwrap_or("");
+    let toks = |t: &str| -> Vec<String> {
+        t.to_lowercase()
+            .split(|c: char| !(c.is_alphanumeric() || c == '.' || c == '/'))
+            .map(|w| w.trim_matches('.').to_string())
+            .filter(|w| !w.is_empty() && !COMMON.contains(&w.as_str()))
+            .collect()
+    };
+    let want = toks(words);
+    toks(quoted).iter().any(|w| want.contains(w))
 }
 
 /// Runs code, retrying once when the runner (not the code) failed.
@@ -232,6 +324,7 @@ fn one(runner: &CadRunner, p: &Prompt) -> Outcome {
         }
         Err(e) => {
             o.failure = Some(FailureKind::Writer);
+            o.refused_with_words = matches!(e, synth::SynthError::Unread { .. });
             o.message = Some(e.to_string());
             return o;
         }
@@ -249,6 +342,7 @@ fn one(runner: &CadRunner, p: &Prompt) -> Outcome {
         && let Err(f) = validate::validate(&mesh, &s.target())
     {
         o.failure = Some(f.kind);
+        o.own_check_failed = true;
         o.message = Some(format!("against its own promise: {}", f.message));
     }
     o.size_mm = Some(mesh.bounds().size());
@@ -288,6 +382,7 @@ fn compare(
     reference_mesh: Option<&Mesh>,
     plausible: Option<&Plausible>,
 ) {
+    o.has_reference = reference.is_some();
     let Some(mesh) = o.mesh.as_ref() else { return };
     let measured = validate::measure(mesh);
     if let Some(r) = reference {
@@ -353,6 +448,13 @@ fn summarize<'a>(outcomes: impl Iterator<Item = &'a Outcome>) -> TierSummary {
         if let Some(p) = o.plausible {
             s.with_plausibility += 1;
             s.plausible += usize::from(p);
+        }
+        match o.verdict() {
+            Some(Verdict::Exact) => s.exact += 1,
+            Some(Verdict::Refused) => s.refused_with_words += 1,
+            Some(Verdict::Wrong) => s.wrong += 1,
+            Some(Verdict::Failed) => s.failed += 1,
+            None => {}
         }
     }
     s.with_chamfer = cd.len();
@@ -474,6 +576,18 @@ pub(crate) fn run(
         tiers.insert(t.clone(), summarize(outcomes.iter().filter(|o| &o.tier == t)));
     }
     let all = summarize(outcomes.iter());
+    let mut styles = BTreeMap::new();
+    let mut expected = BTreeMap::new();
+    if outcomes.iter().any(|o| o.style.is_some() || o.refuse_words.is_some()) {
+        let mut seen: Vec<String> = outcomes.iter().filter_map(|o| o.style.clone()).collect();
+        seen.sort();
+        seen.dedup();
+        for st in seen {
+            styles.insert(st.clone(), summarize(outcomes.iter().filter(|o| o.style.as_deref() == Some(st.as_str()))));
+        }
+        expected.insert("make".to_string(), summarize(outcomes.iter().filter(|o| o.refuse_words.is_none())));
+        expected.insert("refuse".to_string(), summarize(outcomes.iter().filter(|o| o.refuse_words.is_some())));
+    }
     let model_calls = model.as_ref().map(|w| {
         let calls = w.take_calls();
         ModelCalls {
@@ -494,6 +608,8 @@ pub(crate) fn run(
         wall_s,
         parts_per_s: outcomes.len() as f64 / wall_s.max(1e-9),
         tiers,
+        styles,
+        expected,
         all,
         part_latency,
         warm_latency,
@@ -578,6 +694,29 @@ fn render(b: &CadBench, missing_refs: usize) -> String {
         line(name, t);
     }
     line("all", &b.all);
+    if b.all.with_reference > 0 || b.all.refused_with_words > 0 {
+        s.push_str("\nverdict      prompts         exact  refused with the words  wrong  failed otherwise\n");
+        let mut verdicts = |name: &str, t: &TierSummary| {
+            let of = t.exact + t.refused_with_words + t.wrong + t.failed;
+            s.push_str(&format!(
+                "{name:<12} {of:>7}  {:>12}  {:>22}  {:>5}  {:>16}\n",
+                format!("{} ({})", t.exact, pct(t.exact, of)),
+                t.refused_with_words,
+                t.wrong,
+                t.failed
+            ));
+        };
+        for (name, t) in b.tiers.iter().chain(&b.styles) {
+            verdicts(name, t);
+        }
+        for (name, t) in &b.expected {
+            verdicts(&format!("{name} rows"), t);
+        }
+        verdicts("all", &b.all);
+        if b.expected.contains_key("refuse") {
+            s.push_str("(a row that must be refused counts under \"refused with the words\" when the refusal quotes its words)\n");
+        }
+    }
     if let Some(l) = &b.part_latency {
         s.push_str(&format!(
             "\nparts in the run: median {:.0} ms · p95 {:.0} ms · min {:.0} ms over {} jobs ({} workers)\n",

@@ -58,6 +58,18 @@ fn main() {
             for x in &d.tuples {
                 println!("  tuple {:?}", x.vals);
             }
+            let t = sw_forge::synth::takeoff::Takeoff::read(&d);
+            for (k, th) in t.things.iter().enumerate() {
+                println!(
+                    "  takeoff thing {k} {} {:?} count={:?} place={} dims={:?} solid={:?}",
+                    th.noun,
+                    th.kind,
+                    th.count,
+                    th.place,
+                    th.dims.iter().map(|k| d.dims[*k].mm).collect::<Vec<_>>(),
+                    t.solid(k)
+                );
+            }
             let (_, els) = sw_forge::synth::mention::read(&d);
             for e in &els {
                 println!(

@@ -13,11 +13,15 @@ use sw_geom::raster::{Camera, Image, Renderer};
 use crate::metrics::surface_chamfer;
 
 /// One prompt of a suite.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Prompt {
     pub id: String,
     pub tier: String,
     pub text: String,
+    /// The manner it is written in, where the suite says ("drawing", "inch" …).
+    pub style: Option<String>,
+    /// A prompt that must be refused: the words the refusal must quote (some of them).
+    pub refuse_words: Option<String>,
 }
 
 /// A reference's extents (mm, per axis as placed) and volume (mm³).
@@ -39,20 +43,56 @@ fn rows(text: &str) -> impl Iterator<Item = Vec<&str>> {
     text.lines().filter(|l| !l.trim().is_empty() && !l.starts_with('#')).map(|l| l.split('\t').map(str::trim).collect())
 }
 
+/// A suite's prompts: `id<TAB>tier<TAB>prompt` per line, or, after a header line naming
+/// its columns (`id  level  style  expected  description  refuse_words`), those columns.
 pub fn parse_suite(text: &str) -> Vec<Prompt> {
+    let header: Option<Vec<&str>> =
+        text.lines().find(|l| l.starts_with("id\t")).map(|l| l.split('\t').map(str::trim).collect());
+    let Some(h) = header else {
+        return rows(text)
+            .filter_map(|c| {
+                let (id, tier, text) = (c.first()?, c.get(1)?, c.get(2..)?.join("\t"));
+                Some(Prompt { id: (*id).into(), tier: (*tier).into(), text, ..Prompt::default() })
+            })
+            .collect();
+    };
+    let col = |names: &[&str]| h.iter().position(|x| names.contains(x));
+    let (tier, style, expected, text_at, words) = (
+        col(&["level", "tier"]),
+        col(&["style"]),
+        col(&["expected"]),
+        col(&["description", "prompt", "text"]),
+        col(&["refuse_words"]),
+    );
     rows(text)
+        .filter(|c| c.first() != Some(&"id"))
         .filter_map(|c| {
-            let (id, tier, text) = (c.first()?, c.get(1)?, c.get(2..)?.join("\t"));
-            Some(Prompt { id: (*id).into(), tier: (*tier).into(), text })
+            let get = |i: Option<usize>| i.and_then(|i| c.get(i)).map(|s| (*s).to_string());
+            let refuse = get(expected).is_some_and(|e| e == "refuse");
+            Some(Prompt {
+                id: get(Some(0))?,
+                tier: get(tier).unwrap_or_default(),
+                text: get(text_at)?,
+                style: get(style),
+                refuse_words: refuse.then(|| get(words).unwrap_or_default()),
+            })
         })
         .collect()
 }
 
+/// Reference extents and volumes: `id  x  y  z  volume`, or `id  x,y,z  volume` (a row
+/// whose size is `refuse` has no reference: the prompt must be refused).
 pub fn parse_refs(text: &str) -> BTreeMap<String, Reference> {
     rows(text)
         .filter_map(|c| {
-            let num = |i: usize| c.get(i).and_then(|s| s.parse::<f64>().ok());
-            Some(((*c.first()?).to_string(), Reference { size: [num(1)?, num(2)?, num(3)?], volume: num(4) }))
+            let num = |s: Option<&&str>| s.and_then(|s| s.parse::<f64>().ok());
+            let id = (*c.first()?).to_string();
+            if let Some(packed) = c.get(1).filter(|s| s.contains(',')) {
+                let v: Vec<f64> = packed.split(',').filter_map(|x| x.trim().parse().ok()).collect();
+                let [a, b, d] = v.as_slice() else { return None };
+                return Some((id, Reference { size: [*a, *b, *d], volume: num(c.get(2)) }));
+            }
+            Some((id, Reference { size: [num(c.get(1))?, num(c.get(2))?, num(c.get(3))?], volume: num(c.get(4)) }))
         })
         .collect()
 }
@@ -189,9 +229,27 @@ mod tests {
         assert_eq!(p.len(), 2);
         assert!(p["A"].starts_with("import cadquery as cq\n") && p["A"].ends_with("result = 1\n"));
         let s = parse_suite("# c\nX_1\tT1\tA block 1mm long.\n");
-        assert_eq!(s, vec![Prompt { id: "X_1".into(), tier: "T1".into(), text: "A block 1mm long.".into() }]);
+        assert_eq!(
+            s,
+            vec![Prompt { id: "X_1".into(), tier: "T1".into(), text: "A block 1mm long.".into(), ..Prompt::default() }]
+        );
         let r = parse_refs("X_1\t1\t2\t3\t6.5\t-\n");
         assert_eq!(r["X_1"], Reference { size: [1.0, 2.0, 3.0], volume: Some(6.5) });
+        // A corpus with a header: its columns by name, refusals with their words; references
+        // with packed extents, and none for a refusal.
+        let s = parse_suite(
+            "# c\nid\tlevel\tstyle\texpected\tdescription\trefuse_words\nW_1\tT1\tdrawing\tmake\tTUBE 50 OD\t\n\
+             W_2\tT2\tcontradict\trefuse\tA 50 mm cube, 50 x 40\t50 x 40\n",
+        );
+        assert_eq!(s.len(), 2);
+        assert_eq!(
+            (s[0].tier.as_str(), s[0].style.as_deref(), s[0].refuse_words.as_deref()),
+            ("T1", Some("drawing"), None)
+        );
+        assert_eq!((s[1].text.as_str(), s[1].refuse_words.as_deref()), ("A 50 mm cube, 50 x 40", Some("50 x 40")));
+        let r = parse_refs("id\tbbox_mm\tvolume_mm3\nW_1\t100.0,50.0,50.0\t7.5\nW_2\trefuse\trefuse\n");
+        assert_eq!(r.len(), 1);
+        assert_eq!(r["W_1"], Reference { size: [100.0, 50.0, 50.0], volume: Some(7.5) });
     }
 
     #[test]

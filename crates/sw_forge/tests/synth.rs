@@ -196,7 +196,6 @@ const REFUSED: &[(&str, &str)] = &[
     ("A cylinder 40 mm in diameter and 60 mm tall with a 10 mm hole through its side.", "its side"),
     ("A box 100 x 100 x 100 mm with a 20 mm hole on each face.", "each face"),
     ("A block 50 x 30 x 20 mm with a 5 mm chamfer on one edge.", "one edge"),
-    ("A rod 10 mm in diameter and 100 mm long with a 2 mm chamfer at one end.", "end"),
     ("A plate 100 x 50 x 5 mm with a 10 mm hole in each corner.", "corner"),
     ("A block 40 x 40 x 40 mm with a sphere 20 mm in diameter on top.", "sphere"),
     ("A disc 80 mm in diameter, 10 mm thick, with a 30 mm hexagonal hole in the middle.", "hexagonal"),

@@ -277,15 +277,30 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             .max();
         match other {
             Some(len) => i += len,
+            None if cand
+                .features()
+                .iter()
+                .any(|f| f.split_whitespace().map(crate::synth::text::fold).any(|x| x == *w)) =>
+            {
+                return Err(unread(&quote(i, at + n - 1), &part_of(&cand)));
+            }
             None => return Err(unread(&quote(i, i), "a word the synthesizer cannot give this object")),
         }
     }
     // After it: "with …", "on …", "and …", "or <another name of it>": features it has.
     let feats = cand.features();
     let mut i = at + n;
+    // A feature named right after the object, with nothing joining them ("a lamp shade",
+    // "a table leg"), is that part of it, not the object with it.
+    let mut joined = false;
     while i < words.len() {
         let w = words[i].0.clone();
-        if matches!(w.as_str(), "with" | "on" | "and" | "having" | "has") || is_plain(&w) {
+        if matches!(w.as_str(), "with" | "on" | "and" | "having" | "has") {
+            joined = true;
+            i += 1;
+            continue;
+        }
+        if is_plain(&w) {
             i += 1;
             continue;
         }
@@ -324,6 +339,9 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
                 "a feature the synthesizer cannot give this object",
             ));
         };
+        if !joined {
+            return Err(unread(&quote(at, j + f.len() - 1), &part_of(&cand)));
+        }
         if let Some(c) = count {
             check_count(&cand, &f, c).map_err(|reason| unread(&quote(i, j + f.len() - 1), &reason))?;
             spec.count = Some(c);
@@ -331,6 +349,18 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
         i = j + f.len();
     }
     make(prompt, cand, &spec)
+}
+
+/// Why a part of an object is not made as the object: the whole is never handed out for it.
+fn part_of(cand: &Candidate) -> String {
+    let name = match cand {
+        Candidate::Basic(b) | Candidate::Object(b) => b.names.first().copied().unwrap_or("object").to_string(),
+        Candidate::Catalog(c) => c.display.to_string(),
+    };
+    format!(
+        "this names a part of a {name}, and the synthesizer makes only whole objects without sizes \
+         (give the part's sizes to make it as a dimensioned part)"
+    )
 }
 
 /// The counts an object can have of a feature.
@@ -441,5 +471,30 @@ mod tests {
         assert!(e.starts_with("error"), "{e}");
         let e = made("a hammer or a saw");
         assert!(e.contains("saw"), "{e}");
+    }
+
+    #[test]
+    fn a_part_of_an_object_is_never_the_whole_object() {
+        // Every object with features: "<object> <feature>" and "<feature> of a <object>"
+        // name the part, and are refused with those words; "with a <feature>" is the whole.
+        for (names, feats) in objects::OBJECTS.iter().map(|b| (b.names, b.features)) {
+            let (Some(name), Some(feat)) = (names.first(), feats.first()) else { continue };
+            let p = format!("a {name} {feat}");
+            let e = made(&p);
+            assert!(e.starts_with("error") && e.contains("part of"), "{p}: {e}");
+            // Said the other way round it is refused too (as a part, or as another object's
+            // feature when the part is an object of its own: "the pedestal of a trophy").
+            let p = format!("the {feat} of a {name}");
+            assert!(made(&p).starts_with("error"), "{p}");
+            let whole = made(&format!("a {name} with a {feat}"));
+            assert!(!whole.starts_with("error") || whole.contains("number of"), "{name} with {feat}: {whole}");
+        }
+        for (cat, feats) in CATALOG_FEATURES {
+            let Some(c) = sw_catalog::categories().iter().find(|c| c.name == *cat) else { continue };
+            let Some(feat) = feats.iter().find(|f| !f.contains(' ')) else { continue };
+            let p = format!("a {} {feat}", c.display);
+            let e = made(&p);
+            assert!(e.starts_with("error") && e.contains("part of"), "{p}: {e}");
+        }
     }
 }

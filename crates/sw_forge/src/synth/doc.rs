@@ -121,6 +121,7 @@ pub const QUALS: &[&str] = &[
     "tooth",
     "extruded",
     "metric",
+    "tapped",
     "clearance",
     "thread",
     "key",
@@ -263,7 +264,8 @@ impl Doc {
             if t.is_sym(')') {
                 d = d.saturating_sub(1);
             }
-            if t.is_sym('.') && d == 0 {
+            // A full stop, or a question or an exclamation ("… a lamp base? Round, 120 across").
+            if (t.is_sym('.') || t.is_sym('?') || t.is_sym('!')) && d == 0 {
                 s += 1;
             }
         }
@@ -552,8 +554,28 @@ impl Doc {
             let floor = prev_num.map_or(0, |p| p + 1);
             while j > floor {
                 j -= 1;
+                // A role written as a symbol with the number before ("Ø20 x 50": the 20's).
+                if j > 0
+                    && self.toks[j].start == self.toks[j - 1].start
+                    && matches!(self.toks[j - 1].kind, Tk::Num { .. })
+                {
+                    break;
+                }
+                // "0.125 in wall x 10 in long": the words before the times sign are the previous number's.
+                if self.toks[j].is_sym('x') && before.is_empty() && j > floor && self.word(j - 1).is_some() {
+                    break;
+                }
                 match &self.toks[j].kind {
                     Tk::Word(w) if w == "and" || w == "with" || w == "has" || w == "have" => break,
+                    // "a 100 mm length of 20 mm bar": the role before "of" is the earlier number's.
+                    Tk::Word(w)
+                        if w == "of"
+                            && j >= 2
+                            && self.word(j - 1).is_some_and(|r| role_of(r).is_some())
+                            && matches!(self.toks[j - 2].kind, Tk::Num { .. }) =>
+                    {
+                        break;
+                    }
                     Tk::Word(w) => before.push((j, w.clone())),
                     Tk::Sym('x') => {}
                     _ => break,
@@ -561,6 +583,13 @@ impl Doc {
             }
             before.reverse();
             let before_start = before.first().map_or(i, |b| b.0);
+            // "on the long centreline": "long" names the line, not a length.
+            let before: Vec<(usize, String)> = before
+                .into_iter()
+                .filter(|(j, w)| {
+                    !(w == "long" && matches!(self.word(j + 1), Some("centerline" | "edge" | "side" | "axis")))
+                })
+                .collect();
             // After it, a role word counts only before the noun it sizes ("6mm holes equally
             // spaced": the 6mm is the holes', not a spacing).
             let heads = |k: usize| {
@@ -570,17 +599,24 @@ impl Doc {
             };
             let cut = (0..after.len()).find(|k| heads(*k)).unwrap_or(after.len());
             let upto_noun: Vec<&(usize, String)> = after[..cut].iter().collect();
+            // "10 on one side": which side, not a square's side.
+            let one_side =
+                after.windows(2).any(|p| matches!(p[0].1.as_str(), "one" | "either" | "the") && p[1].1 == "side");
             let role = after
                 .first()
                 .and_then(|(_, w)| role_of(w))
+                .filter(|r| !(one_side && *r == Role::Side))
                 .or_else(|| before.last().and_then(|(_, w)| role_of(w)))
-                .or_else(|| upto_noun.iter().find_map(|(_, w)| role_of(w)))
+                .or_else(|| upto_noun.iter().find_map(|(_, w)| role_of(w)).filter(|r| !(one_side && *r == Role::Side)))
                 // Before it, back to a noun ("10 mm deep pocket 50 mm": not the pocket's depth).
                 .or_else(|| {
                     before
                         .iter()
                         .rev()
-                        .take_while(|(_, w)| super::lexicon::noun(w).is_none())
+                        .take_while(|(_, w)| {
+                            super::lexicon::noun(w).is_none()
+                                && !matches!(w.as_str(), "on" | "at" | "from" | "in" | "to")
+                        })
                         .find_map(|(_, w)| role_of(w))
                 })
                 .unwrap_or(Role::Bare);
@@ -636,26 +672,96 @@ impl Doc {
                     quals.push("from-center".into());
                 }
             }
-            // "M4 clearance holes": the screw's clearance diameter; "a 95 mm bolt circle": the
-            // circle's diameter.
-            let role =
-                if quals.iter().any(|w| w == "metric") || (role == Role::Bare && quals.iter().any(|w| w == "circle")) {
-                    Role::Diameter
+            // "R5", "R2 on OD": a radius called out on a drawing rounds edges.
+            let role = if role == Role::Radius
+                && self.toks.get(i + 1).is_some_and(|t| t.is_word("radius") && t.start == self.toks[i].start)
+                && !after.iter().any(|(_, w)| {
+                    super::lexicon::noun(w).is_some_and(|n| !matches!(n, super::lexicon::Noun::Body(_)))
+                        && w != "corner"
+                        && w != "edge"
+                }) {
+                Role::Fillet
+            } else {
+                role
+            };
+            // "1 x 45°", "1 mm 45° chamfer": a chamfer's size before its angle.
+            let role = if matches!(self.toks.get(i + 1).map(|t| &t.kind), Some(Tk::Deg(_))) && role == Role::Bare {
+                Role::Chamfer
+            } else {
+                role
+            };
+            // "10 from edges", "20 from each end", "12 in from the sides": an inset.
+            let role = {
+                let mut q = after_end;
+                if self.is(q, "in") {
+                    q += 1;
+                }
+                let from = self.is(q, "from");
+                let height = matches!(self.word(q), Some("above" | "below" | "over" | "under" | "up"));
+                while matches!(
+                    self.word(q + 1),
+                    Some("each" | "the" | "both" | "all" | "either" | "its" | "from" | "one" | "an" | "a")
+                ) {
+                    q += 1;
+                }
+                if role == Role::Bare
+                    && from
+                    && matches!(self.word(q + 1), Some("edge" | "end" | "side" | "corner" | "face"))
+                {
+                    Role::Inset
+                } else if matches!(role, Role::Bare | Role::Height)
+                    && (height || from)
+                    && matches!(self.word(q + 1), Some("base" | "bottom" | "underside" | "floor" | "top"))
+                {
+                    // "its centre 30 above the base": a height on the part, from its bottom (or top).
+                    quals.push(if self.is(q + 1, "top") { "from-top".into() } else { "from-bottom".into() });
+                    Role::Inset
                 } else {
                     role
-                };
+                }
+            };
+            // "120 across", "45 inside", "50 outside": a diameter; "16 square": a side.
+            let past_the = |k: usize| after.iter().map(|(_, w)| w.as_str()).filter(|w| *w != "the").nth(k);
+            let role = match (role, after.first().map(|(_, w)| w.as_str()), past_the(1)) {
+                (Role::Bare, Some("across"), next) if !matches!(next, Some("flat" | "corner")) => Role::Diameter,
+                // Not the last of a list ("60 x 40 outside": the box's outside).
+                (Role::Bare, Some("inside" | "outside"), _)
+                    if !(i > 0 && (self.sym(i - 1, 'x') || self.is(i - 1, "by"))) =>
+                {
+                    Role::Diameter
+                }
+                // "on 31 mm square centres": the corners of a square, a spacing.
+                (Role::Bare, Some("square"), Some("spacing" | "pattern" | "pitch" | "center")) => {
+                    quals.push("square".into());
+                    Role::Spacing
+                }
+                (Role::Bare, Some("square"), next)
+                    if next.is_none_or(|w| super::lexicon::noun(w).is_none())
+                        || matches!(next, Some("base" | "top" | "bottom" | "end" | "section")) =>
+                {
+                    Role::Side
+                }
+                (r, ..) => r,
+            };
+            // "M4 clearance holes": the screw's clearance diameter; "a 95 mm bolt circle": the
+            // circle's diameter.
+            let role = if (matches!(role, Role::Bare | Role::Diameter)
+                && quals.iter().any(|w| w == "metric" || w == "tapped"))
+                || (role == Role::Bare && quals.iter().any(|w| w == "circle"))
+            {
+                Role::Diameter
+            } else {
+                role
+            };
             // "counterbored to 14mm diameter", "countersunk to 8mm".
             for (from, to) in [("counterbored", "counterbore"), ("countersunk", "countersink")] {
                 if before.iter().chain(after.iter()).any(|(_, w)| w == from) && !quals.iter().any(|q| q == to) {
                     quals.push(to.into());
                 }
             }
-            // "a 3 mm wall", "with 3mm walls": a wall thickness.
-            let (role, wall) = if role == Role::Bare && after.first().is_some_and(|(_, w)| w == "wall") {
-                (Role::Thickness, true)
-            } else {
-                (role, false)
-            };
+            // "a 3 mm wall", "with 3mm walls", "1 in OD x 16 SWG wall": a wall thickness.
+            let (role, wall) =
+                if after.first().is_some_and(|(_, w)| w == "wall") { (Role::Thickness, true) } else { (role, false) };
             if wall && !quals.iter().any(|q| q == "wall") {
                 quals.push("wall".into());
             }
@@ -689,15 +795,24 @@ impl Doc {
                 dims[k].restates = Some(k - 1);
             }
         }
-        // "Four M4 clearance holes (4.2mm diameter)": the stated diameter wins over the table's.
+        // "Four M4 clearance holes (4.2mm diameter)", "M8: inside dia 8.4": a diameter stated
+        // right after the screw size wins over the table's.
         let mut k = 0;
         while k < dims.len() {
+            let at = dims[k].tok;
             let stated = dims[k].has("metric")
                 && dims.iter().any(|d| {
+                    let after = d.tok > at
+                        && d.tok <= at + 8
+                        && (at + 1..d.tok)
+                            .all(|j| self.word(j).is_none_or(|w| super::lexicon::noun(w).is_none() || w == "hole"));
+                    // "a 3.2mm diameter pilot hole (M3 clearance)".
+                    let before = self.depth[at] > 0 && d.tok < at && d.tok + 8 >= at;
                     !d.has("metric")
                         && d.role == Role::Diameter
-                        && d.tok + 10 >= dims[k].tok
-                        && d.tok <= dims[k].tok + 10
+                        && !d.has("pitch")
+                        && !d.has("circle")
+                        && (after || before)
                 });
             if stated {
                 let t = dims[k].tok;
@@ -743,7 +858,20 @@ impl Doc {
             if group.len() >= 2 {
                 let len = group.len();
                 // "in a 100mm x 60mm rectangular pattern": the whole list is the pattern's.
-                if group.iter().any(|g| dims[*g].has("pattern")) {
+                // "on 120 x 70 centres", "on a 170 by 120 rectangle", "on 60 x 60": a list
+                // that places copies.
+                let first_tok = dims[group[0]].tok;
+                let last_tok = dims[group[len - 1]].tok;
+                let after = (last_tok + 1..(last_tok + 3).min(n)).find_map(|j| self.word(j));
+                let on = first_tok >= 1
+                    && (self.is(first_tok - 1, "on")
+                        || (first_tok >= 2 && self.is(first_tok - 1, "a") && self.is(first_tok - 2, "on")));
+                let places = matches!(after, Some("rectangle" | "square" | "pattern" | "spacing"))
+                    || (on
+                        && !after.is_some_and(|w| {
+                            super::lexicon::noun(w).is_some_and(|k| k != super::lexicon::Noun::Pattern)
+                        }));
+                if places || group.iter().any(|g| dims[*g].has("pattern") || dims[*g].role == Role::Spacing) {
                     for g in &group {
                         if !dims[*g].has("pattern") {
                             dims[*g].quals.push("pattern".into());

@@ -10,7 +10,7 @@ use super::text::Tk;
 
 /// Words that may stand before a noun to say what it is for ("mounting holes", "gasket
 /// groove", "flight-controller holes"); they do not change its geometry.
-const LABELS: &[&str] = &[
+pub const LABELS: &[&str] = &[
     "motor",
     "mounting",
     "flight-controller",
@@ -133,8 +133,31 @@ const LABELS: &[&str] = &[
     "pitch",
     "bolt",
     "stepped",
+    "lamp",
+    "table",
+    "chair",
+    "desk",
+    "bench",
+    "stool",
+    "shelf",
+    "cabinet",
+    "door",
+    "drawer",
+    "bed",
+    "bicycle",
+    "bike",
+    "pump",
+    "valve",
+    "sensor",
+    "camera",
+    "robot",
+    "fan",
+    "gearbox",
+    "bearing",
+    "dowel",
     "flanged",
     "threaded",
+    "tapped",
     "smooth",
     "full",
     "half",
@@ -241,6 +264,8 @@ pub struct Mention {
     pub plural: bool,
     pub sent: usize,
     pub elem: usize,
+    /// Alone in parentheses ("(four holes)"): an aside about something named before.
+    pub paren_aside: bool,
 }
 
 /// One thing the prompt describes, from all its mentions.
@@ -406,7 +431,10 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                         shape = shape.or(Some(s));
                         mods.push(v.clone());
                         true
-                    } else if noun(v).is_some() || LABELS.contains(&v.as_str()) || v == "metric" {
+                    } else if v == "through" && (k + 1 != i || !matches!(kind, Noun::Cut(_))) {
+                        // "4x Ø6.6 hole through flange": a through hole, never a through flange.
+                        false
+                    } else if noun(v).is_some() || LABELS.contains(&v.as_str()) || v == "metric" || v == "tapped" {
                         mods.push(v.clone());
                         true
                     } else {
@@ -430,6 +458,32 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                         && doc.word(k - 1).is_some_and(|w| super::doc::role_of(w).is_some())
                         && matches!(doc.toks[k - 2].kind, Tk::Num { unit: Some(_), .. })
                         && matches!(doc.toks.get(k + 1).map(|t| &t.kind), Some(Tk::Num { unit: Some(_), .. }))
+                        // Only inside a phrase begun by its determiner ("a 30mm long, 8mm wide
+                        // slot"), never into another noun's ("BLOCK 40 x 60 HIGH, Ø16 HOLE").
+                        && {
+                            let mut q = k;
+                            let mut found = false;
+                            while q > 0 {
+                                q -= 1;
+                                if doc.word(q).is_some_and(is_det) {
+                                    found = true;
+                                    break;
+                                }
+                                // Past the commas of the same list ("a 40mm long, 8mm wide, 4mm deep keyway").
+                                let listed = doc.toks[q].is_sym(',')
+                                    && q >= 2
+                                    && doc.word(q - 1).is_some_and(|w| super::doc::role_of(w).is_some())
+                                    && matches!(doc.toks[q - 2].kind, Tk::Num { unit: Some(_), .. });
+                                let stop = (doc.toks[q].is_sym(',') && !listed)
+                                    || doc.toks[q].is_sym('.')
+                                    || doc.toks[q].is_sym(':')
+                                    || doc.word(q).is_some_and(|w| noun(w).is_some());
+                                if stop {
+                                    break;
+                                }
+                            }
+                            found
+                        }
                 }
                 // "dodecagonal (12-sided) prism": an aside inside the phrase.
                 Tk::Sym(')') => {
@@ -469,7 +523,21 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
                     && doc.word(before - 2).is_some_and(|w| {
                         matches!(
                             w,
-                            "array" | "row" | "grid" | "pattern" | "set" | "pair" | "series" | "ring" | "circle"
+                            "array"
+                                | "row"
+                                | "grid"
+                                | "pattern"
+                                | "set"
+                                | "pair"
+                                | "series"
+                                | "ring"
+                                | "circle"
+                                | "length"
+                                | "piece"
+                                | "bit"
+                                | "stick"
+                                | "offcut"
+                                | "blank"
                         )
                     }) =>
             {
@@ -504,6 +572,10 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
             },
             sent: doc.sent[i],
             elem: usize::MAX,
+            paren_aside: doc.depth[i] > 0
+                && doc.sym(first.saturating_sub(1), '(')
+                && doc.sym(i + 1, ')')
+                && (first..i).all(|j| doc.word(j).is_some_and(|w| number_word(w).is_some())),
         });
     }
     let elements = group(doc, &mut mentions);
@@ -525,6 +597,14 @@ fn same_thing(m: &Mention, e: &Element) -> bool {
     }
     // "The first pipe" of "two pipes" is a thing of its own (it may differ from the second).
     if e.plural && m.mods.iter().any(|x| matches!(x.as_str(), "first" | "second" | "third")) {
+        return false;
+    }
+    // "a 1/2 inch hole … (four holes)": an aside naming it again, with its count.
+    if m.noun == e.noun && m.paren_aside {
+        return true;
+    }
+    // "a block … with a block on top": a thing the part has, said with "a", is another one.
+    if m.prep.as_deref() == Some("with") && m.det && !m.definite && !m.each {
         return false;
     }
     // A bare plural or heading ("Side rails: each rail is …") also refers back.
@@ -639,7 +719,62 @@ fn group(doc: &Doc, mentions: &mut [Mention]) -> Vec<Element> {
         mentions[mi].elem = id;
     }
     attach(doc, mentions, &mut elements);
+    bare_lengths_to_the_part(doc, &mut elements);
+    callout_places_to_the_hole(doc, &mut elements);
+    sentence_adjectives(doc, mentions, &mut elements);
     elements
+}
+
+/// "4x Ø9 thru, c'bore Ø15 x 9 dp on 60 x 60": where a counterbored hole is placed is said
+/// after its counterbore; the places are the holes'.
+fn callout_places_to_the_hole(doc: &Doc, elements: &mut [Element]) {
+    use super::lexicon::CutKind;
+    for c in 0..elements.len() {
+        if !matches!(elements[c].kind, Noun::Cut(CutKind::Counterbore | CutKind::Countersink)) {
+            continue;
+        }
+        let Some(h) = (0..c).rev().find(|h| matches!(elements[*h].kind, Noun::Cut(CutKind::Hole))) else { continue };
+        let moved: Vec<usize> = elements[c].dims.iter().copied().filter(|k| doc.dims[*k].has("pattern")).collect();
+        move_dims(elements, c, h, &moved);
+    }
+}
+
+/// "… a lamp base? Round, 120 across": a shape said on its own at the start of a sentence
+/// is the shape of the thing the sentences are about.
+fn sentence_adjectives(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
+    for s in 1..doc.sentences() {
+        let (a, _) = doc.sentence(s);
+        let Some(shape) = doc.word(a).and_then(shape_adjective) else { continue };
+        // "Round, 120 across …", "Square 40 x 40 at the top, …".
+        let sizes_follow = matches!(doc.toks.get(a + 1).map(|t| &t.kind), Some(Tk::Num { .. }));
+        if !(doc.sym(a + 1, ',') || sizes_follow) || mentions.iter().any(|m| m.sent == s && m.start <= a + 1) {
+            continue;
+        }
+        let Some(m) = mentions.iter().rev().find(|m| m.sent < s && m.prep.is_none()) else { continue };
+        let target = m.elem;
+        if elements[target].shape.is_some() {
+            continue;
+        }
+        elements[target].shape = Some(shape);
+        if let Some(w) = doc.word(a) {
+            elements[target].mods.push(w.to_string());
+        }
+        doc.mark(a);
+        // Its sizes, said before anything else is named in the sentence, are its too.
+        let first = mentions.iter().filter(|m| m.sent == s).map(|m| m.start).min().unwrap_or(usize::MAX);
+        for e in 0..elements.len() {
+            if e == target {
+                continue;
+            }
+            let moved: Vec<usize> = elements[e]
+                .dims
+                .iter()
+                .copied()
+                .filter(|k| doc.sent[doc.dims[*k].tok] == s && doc.dims[*k].tok < first)
+                .collect();
+            move_dims(elements, e, target, &moved);
+        }
+    }
 }
 
 /// "lying flat on the XY plane (Z=0 to Z=3)": the whole part's span, nobody's own.
@@ -657,8 +792,13 @@ fn fits(kind: Noun, dim: Option<&super::doc::Dim>) -> bool {
     let role = dim.role;
     match kind {
         Noun::Cut(CutKind::Hole | CutKind::Bore | CutKind::Counterbore | CutKind::Countersink) => {
+            let polygon = dim.has("across") && (dim.has("flat") || dim.has("corner"));
+            // An outside size is never a hole's ("bore 12, OD 25").
+            if dim.has("outer") {
+                return false;
+            }
             matches!(role, Diameter | Radius | Depth | Inset | Spacing)
-                || (role == Bare && dim.axis.is_none() && (dim.list.is_none() || dim.has("pattern")))
+                || (role == Bare && !polygon && dim.axis.is_none() && (dim.list.is_none() || dim.has("pattern")))
                 || (role == Bare && dim.has("pattern"))
         }
         Noun::Fillet | Noun::Chamfer => matches!(role, Bare | Fillet | Chamfer | Radius),
@@ -704,6 +844,54 @@ fn owner_fit(
     mentions.iter().rev().find(|m| m.sent < s && m.prep.is_none()).map(|m| m.elem)
 }
 
+/// A hole whose diameter is given takes no bare length of no kind ("Hex standoff, M3, 5.5
+/// A/F, 30 mm, threaded through": the 30 is the part's): it goes to the part.
+fn bare_lengths_to_the_part(doc: &Doc, elements: &mut [Element]) {
+    let Some(t) = elements.iter().position(|e| e.title && matches!(e.kind, Noun::Body(_))) else { return };
+    for c in 0..elements.len() {
+        if c == t || !matches!(elements[c].kind, Noun::Cut(_)) {
+            continue;
+        }
+        let first_d = elements[c]
+            .dims
+            .iter()
+            .filter(|k| {
+                let d = &doc.dims[**k];
+                matches!(d.role, super::doc::Role::Diameter | super::doc::Role::Radius)
+                    && !d.has("counterbore")
+                    && !d.has("countersink")
+            })
+            .map(|k| doc.dims[*k].tok)
+            .min();
+        let Some(first_d) = first_d else { continue };
+        let moved: Vec<usize> = elements[c]
+            .dims
+            .iter()
+            .copied()
+            .filter(|k| {
+                let d = &doc.dims[*k];
+                d.role == super::doc::Role::Bare
+                    && d.quals.is_empty()
+                    && d.list.is_none()
+                    && d.axis.is_none()
+                    && !d.paren
+                    && d.tok > first_d
+            })
+            .collect();
+        move_dims(elements, c, t, &moved);
+    }
+}
+
+/// Gives lengths read as one element's to another.
+fn move_dims(elements: &mut [Element], from: usize, to: usize, moved: &[usize]) {
+    if moved.is_empty() {
+        return;
+    }
+    elements[from].dims.retain(|k| !moved.contains(k));
+    elements[to].dims.extend_from_slice(moved);
+    elements[to].dims.sort_unstable();
+}
+
 fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
     if elements.is_empty() {
         return;
@@ -719,7 +907,13 @@ fn attach(doc: &Doc, mentions: &[Mention], elements: &mut [Element]) {
                 owner_fit(doc, mentions, d.tok, Some(d), &kinds)
             };
         // "Total height 35mm", "40mm overall length": the part's own.
-        let o = if d.has("total") || d.has("overall") { elements.iter().position(|e| e.title).or(o) } else { o };
+        // (Not a cut's own: "a slot, 40 long overall".)
+        let of_cut = o.is_some_and(|o| matches!(elements[o].kind, Noun::Cut(_)));
+        let o = if (d.has("total") || d.has("overall")) && !of_cut {
+            elements.iter().position(|e| e.title).or(o)
+        } else {
+            o
+        };
         if let Some(o) = o.and_then(|o| elements.get_mut(o)) {
             o.dims.push(k);
         }

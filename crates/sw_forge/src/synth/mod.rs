@@ -16,10 +16,12 @@ pub mod doc;
 pub mod lexicon;
 pub mod mention;
 pub mod model;
+pub mod notation;
 pub mod num;
 pub mod profile;
 pub mod read;
 pub mod solid;
+pub mod takeoff;
 pub mod text;
 
 use serde::{Deserialize, Serialize};
@@ -114,6 +116,8 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
         });
     }
     let model = read::read(&d).map_err(|r| SynthError::Unread { phrase: r.phrase, reason: r.reason })?;
+    // The second reading: what the words alone say the part measures.
+    takeoff::Takeoff::read(&d).check(&model).map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
     Ok(finish(prompt, "features", &model))
 }
 

@@ -398,6 +398,8 @@ pub enum Edges {
     Circular,
     /// The edges of the face at the positive (true) or negative end of an axis.
     Face(Axis, bool),
+    /// The edges of both end faces along an axis ("the end edges" of a bar).
+    Ends(Axis),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -550,6 +552,7 @@ impl Body {
                 Edges::Parallel(a) => format!("edges('|{}')", a.name()),
                 Edges::Circular => "edges('%CIRCLE')".to_string(),
                 Edges::Face(a, max) => format!("faces('{}{}').edges()", if max { '>' } else { '<' }, a.name()),
+                Edges::Ends(a) => format!("faces('>{0} or <{0}').edges()", a.name()),
             };
             let what = match op.kind {
                 EdgeKind::Fillet => "fillet",

@@ -111,6 +111,12 @@ pub fn fold(w: &str) -> String {
     if let Some((_, to)) = SAME.iter().find(|(from, _)| *from == w) {
         return (*to).to_string();
     }
+    // "that's", "bar's": the word itself.
+    if let Some(base) = w.strip_suffix("'s").or_else(|| w.strip_suffix("’s"))
+        && !base.is_empty()
+    {
+        return fold(base);
+    }
     for (suffix, keep) in [("sses", 2), ("oes", 1), ("ches", 2), ("shes", 2), ("xes", 1)] {
         if w.len() > suffix.len() && w.ends_with(suffix) {
             return w[..w.len() - suffix.len() + keep].to_string();
@@ -150,7 +156,39 @@ pub fn tokenize(text: &str) -> Vec<Token> {
     let pos = |i: usize| chars.get(i).map_or(text.len(), |c| c.0);
     let mut toks: Vec<Token> = Vec::new();
     let mut i = 0;
+    // "2 in. long", "1.5 in x 3 in", "0.5 in thick", "3/8 in holes": after a number, "in"
+    // ending at `e` is the inch, not the preposition, unless an article or a place follows.
+    let inch_after = |e: usize| {
+        let mut f = e;
+        while at(f) == Some(' ') {
+            f += 1;
+        }
+        let mut g = f;
+        while at(g).is_some_and(|c| c.is_ascii_alphabetic()) {
+            g += 1;
+        }
+        let next: String = chars[f..g].iter().map(|c| c.1).collect::<String>().to_ascii_lowercase();
+        let article = matches!(
+            next.as_str(),
+            "the" | "a" | "an" | "its" | "each" | "one" | "both" | "from" | "which" | "this" | "that" | "all" | "place"
+        );
+        let coordinate = matches!(next.as_str(), "x" | "y" | "z") && at(g) == Some('=');
+        !(article || coordinate)
+    };
+    // A role symbol read before the next number ("Ø"), and where it began.
+    let mut pending_role: Option<(&'static str, usize)> = None;
     while i < chars.len() {
+        if let Some((role, from)) = pending_role
+            && toks.last().is_some_and(|t| matches!(t.kind, Tk::Num { .. }) && t.end > from && t.start >= from)
+        {
+            // The number just read: it begins at the symbol, and its role word follows it.
+            let (s, e) = (from, toks.last().map_or(from, |t| t.end));
+            if let Some(t) = toks.last_mut() {
+                t.start = s;
+            }
+            toks.push(Token { kind: Tk::Word(role.into()), start: s, end: e });
+            pending_role = None;
+        }
         let c = chars[i].1;
         let start = pos(i);
         // "±22", "+/-22", "+25", "-25" (a sign directly before a digit, not after a letter
@@ -191,6 +229,29 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 i = j.max(i + 1);
                 continue;
             };
+            // "1-1/2\"", "1 1/2 in": a whole number and a fraction.
+            if v.fract() == 0.0 && matches!(at(j), Some('-' | ' ')) {
+                let ds = j + 1;
+                let mut k = ds;
+                while at(k).is_some_and(|d| d.is_ascii_digit()) {
+                    k += 1;
+                }
+                let mut e = k + 1;
+                while at(e).is_some_and(|d| d.is_ascii_digit()) {
+                    e += 1;
+                }
+                if k > ds && at(k) == Some('/') && e > k + 1 {
+                    let num: String = chars[ds..k].iter().map(|c| c.1).collect();
+                    let den: String = chars[k + 1..e].iter().map(|c| c.1).collect();
+                    if let (Ok(a), Ok(b)) = (num.parse::<f64>(), den.parse::<f64>())
+                        && b > 0.0
+                        && a < b
+                    {
+                        v += a / b;
+                        j = e;
+                    }
+                }
+            }
             if sign < 0.0 {
                 v = -v;
             }
@@ -219,7 +280,29 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 i = e;
                 continue;
             }
-            if !hyphen && let Some(f) = unit_factor(&unit) {
+            let inch = super::notation::INCH_WORDS.contains(&unit.as_str()) && inch_after(e);
+            // "16 SWG": a gauge, in inches.
+            if unit == "swg"
+                && let Some(g) = super::notation::swg_inch(v)
+            {
+                toks.push(Token { kind: Tk::Num { v: g * 25.4, unit: Some(1.0), pm, signed }, start, end: pos(e) });
+                i = e;
+                continue;
+            }
+            let unit_f = if inch { Some(25.4) } else { unit_factor(&unit) };
+            if !hyphen && let Some(f) = unit_f {
+                // "in." is the unit's abbreviation, not the end of a sentence.
+                let e = if inch && at(e) == Some('.') && at(e + 1).is_some_and(|c| c == ' ') && {
+                    let mut q = e + 1;
+                    while at(q) == Some(' ') {
+                        q += 1;
+                    }
+                    at(q).is_some_and(|c| c.is_ascii_lowercase() || c.is_ascii_digit())
+                } {
+                    e + 1
+                } else {
+                    e
+                };
                 toks.push(Token { kind: Tk::Num { v, unit: Some(f), pm, signed }, start, end: pos(e) });
                 i = e;
                 continue;
@@ -257,7 +340,12 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                         f += 1;
                     }
                     let unit: String = chars[e..f].iter().map(|c| c.1).collect::<String>().to_ascii_lowercase();
-                    if let Some(u) = unit_factor(&unit) {
+                    let u = if super::notation::INCH_WORDS.contains(&unit.as_str()) && inch_after(f) {
+                        Some(25.4)
+                    } else {
+                        unit_factor(&unit)
+                    };
+                    if let Some(u) = u {
                         toks.push(Token { kind: Tk::Num { v: value, unit: Some(u), pm, signed }, start, end: pos(f) });
                         i = f;
                     } else {
@@ -270,6 +358,29 @@ pub fn tokenize(text: &str) -> Vec<Token> {
             toks.push(Token { kind: Tk::Num { v, unit: None, pm, signed }, start, end: pos(j) });
             i = j;
             continue;
+        }
+        // "Ø20", "⌀ 20": the number's role, written after it ("20 diameter") so that the
+        // phrase reads as the language's own.
+        if let Some(role) = super::notation::role_symbol(c) {
+            let mut k = i + 1;
+            while at(k) == Some(' ') {
+                k += 1;
+            }
+            if at(k).is_some_and(|d| d.is_ascii_digit() || d == '.') {
+                pending_role = Some((role, start));
+                i = k;
+                continue;
+            }
+            // "20⌀": written after the number.
+            if let Some(t) = toks.last()
+                && matches!(t.kind, Tk::Num { .. })
+                && t.end == start
+            {
+                let s = t.start;
+                toks.push(Token { kind: Tk::Word(role.into()), start: s, end: pos(i + 1) });
+                i += 1;
+                continue;
+            }
         }
         // "i.e." and "e.g.": one word, not two sentences.
         if (c == 'i' || c == 'e' || c == 'I' || c == 'E')
@@ -300,7 +411,35 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 }
             }
             let raw: String = chars[i..j].iter().map(|c| c.1).collect();
-            let w = raw.to_lowercase();
+            let mut w = raw.to_lowercase();
+            // "A/F", "C/L", "w/": a spelling written with a slash.
+            if at(j) == Some('/') {
+                let mut k = j + 1;
+                while at(k).is_some_and(|c| c.is_ascii_alphabetic()) {
+                    k += 1;
+                }
+                let joined: String = chars[i..k].iter().map(|c| c.1).collect::<String>().to_lowercase();
+                if super::notation::spelling(&joined).is_some() {
+                    w = joined;
+                    j = k;
+                }
+            }
+            // "ISO 7089", "NEMA 17": a standard's designation.
+            if super::notation::STANDARDS.contains(&w.as_str()) {
+                let mut k = j;
+                while at(k) == Some(' ') {
+                    k += 1;
+                }
+                let ds = k;
+                while at(k).is_some_and(|c| c.is_ascii_digit()) {
+                    k += 1;
+                }
+                if k > ds && !at(k).is_some_and(|c| c.is_ascii_alphabetic() || c == '.') {
+                    toks.push(Token { kind: Tk::Word("standard".into()), start, end: pos(k) });
+                    i = k;
+                    continue;
+                }
+            }
             // "M6": a metric screw size.
             if let Some(size) = w.strip_prefix('m').and_then(|s| s.parse::<f64>().ok()) {
                 toks.push(Token { kind: Tk::Word("metric".into()), start, end: pos(j) });
@@ -312,8 +451,19 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 i = j;
                 continue;
             }
+            // "R5": a radius.
+            if let Some((role, v)) = super::notation::role_prefix(&w) {
+                toks.push(Token { kind: Tk::Num { v, unit: None, pm: false, signed: false }, start, end: pos(j) });
+                toks.push(Token { kind: Tk::Word(role.into()), start, end: pos(j) });
+                i = j;
+                continue;
+            }
             if w == "x" {
                 toks.push(Token { kind: Tk::Sym('x'), start, end: pos(j) });
+            } else if let Some(words) = super::notation::spelling(&w) {
+                for to in words {
+                    toks.push(Token { kind: Tk::Word((*to).into()), start, end: pos(j) });
+                }
             } else {
                 toks.push(Token { kind: Tk::Word(fold(&w)), start, end: pos(j) });
             }
@@ -330,8 +480,371 @@ pub fn tokenize(text: &str) -> Vec<Token> {
         }
         i += 1;
     }
+    if let Some((role, from)) = pending_role
+        && toks.last().is_some_and(|t| matches!(t.kind, Tk::Num { .. }) && t.start >= from)
+    {
+        let e = toks.last().map_or(from, |t| t.end);
+        if let Some(t) = toks.last_mut() {
+            t.start = from;
+        }
+        toks.push(Token { kind: Tk::Word(role.into()), start: from, end: e });
+    }
     inherit_units(&mut toks);
+    notes(&mut toks, text);
     toks
+}
+
+/// Whether token `i` is a role written as a symbol with the number before it ("Ø20" read
+/// as 20 diameter, "R5" as 5 radius): a word spanning that number.
+fn marker(toks: &[Token], i: usize) -> bool {
+    i > 0
+        && toks.get(i).is_some_and(|t| matches!(t.word(), Some("diameter" | "radius")))
+        && toks[i].start == toks[i - 1].start
+        && matches!(toks[i - 1].kind, Tk::Num { .. })
+}
+
+/// The unit of a prompt's numbers written without one: inches when every unit it writes is
+/// the inch, else millimetres (a drawing's default; "50 x 50 x 6, 1 m length" is in mm).
+fn prompt_unit(toks: &[Token]) -> f64 {
+    let units: Vec<f64> =
+        toks.iter().filter_map(|t| if let Tk::Num { unit: Some(f), .. } = t.kind { Some(f) } else { None }).collect();
+    if !units.is_empty() && units.iter().all(|f| (f - 25.4).abs() < 1e-9) { 25.4 } else { 1.0 }
+}
+
+/// Drawing-note lengths: numbers written without a unit that the words around them make
+/// lengths ("42 OD x 36 ID x 120 long", "Ø20", "thickness 5", "100 x 60 x 5 plate"), in the
+/// prompt's unit; a chamfer's "1 x 45°"; spacings "on 50 centres"; and holes named by
+/// their callout alone ("4x Ø6.6 thru", "M6 clearance").
+fn notes(toks: &mut Vec<Token>, text: &str) {
+    let unit = prompt_unit(toks);
+    let n = toks.len();
+    let word = |toks: &[Token], i: usize| toks.get(i).and_then(Token::word).map(str::to_string);
+    let is_role = |w: &str| super::doc::role_of(w).is_some() && !matches!(w, "side" | "sided" | "extruded" | "extrude");
+    let unitless = |t: &Token| matches!(t.kind, Tk::Num { unit: None, .. });
+    // "0.5x45 chfr": a chamfer's angle written without its degree sign.
+    for i in 2..toks.len() {
+        let angle = matches!(toks[i].kind, Tk::Num { v, unit: None, .. } if v == 45.0)
+            && toks[i - 1].is_sym('x')
+            && matches!(toks[i - 2].kind, Tk::Num { v, .. } if v < 45.0)
+            && !toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
+            && !toks
+                .get(i + 1)
+                .and_then(Token::word)
+                .is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Body(_))));
+        if angle {
+            toks[i].kind = Tk::Deg(45.0);
+            if let Tk::Num { v, unit: None, pm, signed } = toks[i - 2].kind {
+                toks[i - 2].kind = Tk::Num { v, unit: Some(unit), pm, signed };
+            }
+        }
+    }
+    let mut length = vec![false; n];
+    for i in 0..n {
+        if !unitless(&toks[i]) || (i > 0 && toks[i - 1].is_sym('=')) {
+            continue;
+        }
+        let next = word(toks, i + 1);
+        let length_noun = next.as_deref().is_some_and(|w| super::notation::LENGTH_NOUNS.contains(&w))
+            // "40 base diameter": a qualifier noun before the role.
+            || (next.as_deref().is_some_and(|w| super::doc::QUALS.contains(&w))
+                && word(toks, i + 2).as_deref().is_some_and(is_role));
+        // A count: "6 holes", "4x Ø6.6", "16 teeth", "4 x M6".
+        if !length_noun
+            && next
+                .as_deref()
+                .is_some_and(|w| super::lexicon::noun(w).is_some() || matches!(w, "tooth" | "vertex" | "point"))
+        {
+            continue;
+        }
+        let next2 = word(toks, i + 2);
+        let next3 = word(toks, i + 3);
+        // "10 from edges", "35 from ctr", "20 from the end".
+        let from_edge = matches!(next.as_deref(), Some("from" | "above" | "below" | "over" | "under" | "up"))
+            && [next2.as_deref(), next3.as_deref()].iter().any(|w| {
+                matches!(
+                    w,
+                    Some(
+                        "edge"
+                            | "end"
+                            | "side"
+                            | "corner"
+                            | "center"
+                            | "face"
+                            | "centerline"
+                            | "top"
+                            | "bottom"
+                            | "base"
+                            | "underside"
+                            | "floor"
+                            | "datum"
+                            | "origin"
+                    )
+                )
+            });
+        let after = next.as_deref().is_some_and(is_role)
+            || length_noun
+            // "40 base diameter", "30 outside dia", "12 in from each end".
+            || (next.as_deref().is_some_and(|w| super::doc::QUALS.contains(&w) || w == "in")
+                && next2.as_deref().is_some_and(|w| is_role(w) || w == "from"))
+            || next.as_deref().is_some_and(|w| super::notation::SPACING_AFTER.contains(&w))
+            || next.as_deref().is_some_and(|w| super::notation::LENGTH_AFTER.contains(&w));
+        // "diameter 20", "thickness: 5", "its diameter is 30", "length of 120".
+        let prev = if i >= 2
+            && (toks[i - 1].is_word("of")
+                || toks[i - 1].is_word("is")
+                || toks[i - 1].is_word("are")
+                || toks[i - 1].is_word("measures")
+                || toks[i - 1].is_word("being")
+                || toks[i - 1].is_sym(':')
+                || toks[i - 1].is_sym('='))
+        {
+            word(toks, i - 2)
+        } else {
+            i.checked_sub(1).and_then(|p| word(toks, p))
+        };
+        let before = i > 0
+            && prev.as_deref().is_some_and(|w| {
+                matches!(
+                    super::doc::role_of(w),
+                    Some(
+                        super::doc::Role::Diameter
+                            | super::doc::Role::Radius
+                            | super::doc::Role::Thickness
+                            | super::doc::Role::Length
+                            | super::doc::Role::Width
+                            | super::doc::Role::Height
+                            | super::doc::Role::Depth
+                            | super::doc::Role::Fillet
+                            | super::doc::Role::Chamfer
+                    )
+                ) && !matches!(w, "long" | "wide" | "thick" | "tall" | "high" | "deep")
+                    // "bore 25", "hole 6": a hole's diameter after its noun; "projecting 10".
+                    || (i >= 1
+                        && matches!(w, "bore" | "hole" | "projecting" | "protruding" | "extending" | "proud" | "rising"))
+            });
+        // "1 x 45°": a chamfer's size.
+        let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
+            && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
+        if after || before || chamfer || from_edge {
+            length[i] = true;
+        }
+    }
+    // Lists: "100 x 60 x 5" with one member a length (or all three given), all of them.
+    loop {
+        let mut changed = false;
+        for i in 0..n {
+            if !unitless(&toks[i]) || length[i] {
+                continue;
+            }
+            let joined = |j: usize| {
+                toks.get(j).is_some_and(|t| matches!(t.kind, Tk::Num { .. }))
+                    && (length[j] || matches!(toks[j].kind, Tk::Num { unit: Some(_), .. }))
+            };
+            // The number before "x", past a role written with it ("Ø20 x 50": 20 diameter x 50).
+            let before_x = |x: usize| -> Option<usize> {
+                let p = x.checked_sub(1)?;
+                // Past a role written with the number: "Ø20 x 50", "80 dia x 10", "42 OD x 36 ID".
+                let role = marker(toks, p)
+                    || (toks[p].word().is_some_and(|w| {
+                        matches!(super::doc::role_of(w), Some(super::doc::Role::Diameter | super::doc::Role::Radius))
+                    }) && p >= 1
+                        && matches!(toks[p - 1].kind, Tk::Num { .. }));
+                if role { p.checked_sub(1) } else { Some(p) }
+            };
+            let times = |t: Option<&Token>| t.is_some_and(|t| t.is_sym('x') || t.is_word("by"));
+            let left = i >= 2 && times(toks.get(i - 1)) && before_x(i - 1).is_some_and(joined);
+            // "4x Ø6.6", "2 x Ø14 holes": a count of what the Ø names, not a list.
+            let right = times(toks.get(i + 1)) && joined(i + 2) && !marker(toks, i + 3);
+            // "80 x 50", "200 by 150": two sizes, unless they count a grid ("3x2 array").
+            let grid = (i + 3..(i + 6).min(toks.len())).any(|j| {
+                toks[j].word().is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Pattern)))
+            });
+            let longer = toks.get(i + 3).is_some_and(|t| t.is_sym('x') || t.is_word("by"));
+            let after_times = i > 0 && times(toks.get(i - 1));
+            let pair = times(toks.get(i + 1))
+                && toks.get(i + 2).is_some_and(unitless)
+                && !(after_times || longer || grid || marker(toks, i + 3));
+            // Three numbers in a row joined by x: a box.
+            let triple = times(toks.get(i + 1))
+                && toks.get(i + 2).is_some_and(unitless)
+                && times(toks.get(i + 3))
+                && toks.get(i + 4).is_some_and(unitless)
+                && !(i > 0 && toks[i - 1].is_sym('x'));
+            if left || right || triple || pair {
+                length[i] = true;
+                if triple {
+                    length[i + 2] = true;
+                    length[i + 4] = true;
+                }
+                if pair {
+                    length[i + 2] = true;
+                }
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    for (i, t) in toks.iter_mut().enumerate() {
+        if let (true, Tk::Num { v, unit: None, pm, signed }) = (length[i], &t.kind) {
+            t.kind = Tk::Num { v: *v, unit: Some(unit), pm: *pm, signed: *signed };
+        }
+    }
+    // "1 x 45°", "45° x 1": the times sign between a chamfer's size and angle is no list.
+    let mut i = 1;
+    while i + 1 < toks.len() {
+        let num = |t: &Token| matches!(t.kind, Tk::Num { unit: Some(_), .. });
+        let deg = |t: &Token| matches!(t.kind, Tk::Deg(_));
+        let times = toks[i].is_sym('x') || toks[i].is_word("by");
+        if times && ((num(&toks[i - 1]) && deg(&toks[i + 1])) || (deg(&toks[i - 1]) && num(&toks[i + 1]))) {
+            toks.remove(i);
+        }
+        i += 1;
+    }
+    // "on 50 centres": a spacing.
+    for i in 1..toks.len() {
+        if matches!(toks[i - 1].kind, Tk::Num { unit: Some(_), .. })
+            && toks[i].word().is_some_and(|w| super::notation::SPACING_AFTER.contains(&w) && w != "pitch")
+        {
+            toks[i].kind = Tk::Word("spacing".into());
+        }
+    }
+    // "s = 13 mm", "m = 6.8": a standard's letter for a size, read as its role's words.
+    let mut i = 0;
+    while i + 2 < toks.len() {
+        let letter = toks[i].word().and_then(|w| super::notation::LETTERS.iter().find(|(l, _)| *l == w));
+        if let Some((_, words)) = letter
+            && toks[i + 1].is_sym('=')
+            && matches!(toks[i + 2].kind, Tk::Num { .. })
+            && !(i > 0
+                && toks[i - 1].word().is_some_and(|w| w.chars().all(|c| c.is_ascii_alphabetic()) && w.len() == 1))
+        {
+            let (s, e) = (toks[i].start, toks[i + 1].end);
+            toks.remove(i + 1);
+            toks.remove(i);
+            for (k, w) in words.iter().enumerate() {
+                toks.insert(i + k, Token { kind: Tk::Word((*w).into()), start: s, end: e });
+            }
+            i += words.len();
+        }
+        i += 1;
+    }
+    // "3/8 in SAE", "M8 ISO": a nominal size named by its standard is its designation.
+    for i in 0..toks.len().saturating_sub(1) {
+        if matches!(toks[i].kind, Tk::Num { .. })
+            && toks[i + 1].word().is_some_and(|w| super::notation::STANDARDS.contains(&w))
+        {
+            toks[i].kind = Tk::Word("standard".into());
+            toks[i + 1].kind = Tk::Word("standard".into());
+        }
+    }
+    // "set screw", "grub screw": a radial hole (its size the screw's thread).
+    for i in 0..toks.len().saturating_sub(1) {
+        if toks[i].word().is_some_and(|w| w == "set" || w == "grub") && toks[i + 1].is_word("screw") {
+            toks[i].kind = Tk::Word("radial".into());
+            toks[i + 1].kind = Tk::Word("hole".into());
+        }
+    }
+    // "M6 tapped", "M5 thread through", "Hex nut M16": a thread, made as its tap drill.
+    for i in 0..toks.len().saturating_sub(1) {
+        if !toks[i].is_word("metric") || toks[i + 1].start != toks[i].start {
+            continue;
+        }
+        let spelt = text.get(toks[i].start..toks[i].end).unwrap_or("").to_lowercase();
+        let nominal = spelt.get(1..).and_then(|v| v.parse::<f64>().ok());
+        let Some(drill) = nominal.and_then(super::notation::tap_drill) else { continue };
+        let sentence_end = (i..toks.len()).find(|j| toks[*j].is_sym('.') || toks[*j].is_sym(';')).unwrap_or(toks.len());
+        let sentence_start = (0..i).rev().find(|j| toks[*j].is_sym('.') || toks[*j].is_sym(';')).map_or(0, |j| j + 1);
+        let near: Vec<&str> = (i + 2..(i + 5).min(toks.len())).filter_map(|j| toks[j].word()).collect();
+        let clearance = near.contains(&"clearance");
+        let tapped = near.iter().any(|w| super::notation::THREAD.contains(w))
+            || (sentence_start..sentence_end).any(|j| {
+                toks[j].word().is_some_and(|w| {
+                    super::notation::THREAD.contains(&w) || (j < i && super::notation::THREADED_NOUNS.contains(&w))
+                })
+            });
+        if tapped && !clearance {
+            if let Tk::Num { pm, signed, .. } = toks[i + 1].kind {
+                toks[i + 1].kind = Tk::Num { v: drill, unit: Some(1.0), pm, signed };
+            }
+            toks[i].kind = Tk::Word("tapped".into());
+            // A nut's or standoff's thread with no hole named: its hole.
+            let named = (i + 2..sentence_end).any(|j| {
+                toks[j].word().is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Cut(_))))
+            });
+            let threaded_noun = (sentence_start..i)
+                .any(|j| toks[j].word().is_some_and(|w| super::notation::THREADED_NOUNS.contains(&w)));
+            if !named && threaded_noun {
+                let e = toks[i + 1].end;
+                toks.insert(i + 2, Token { kind: Tk::Word("hole".into()), start: e, end: e });
+            }
+        }
+    }
+    // A hole named by its callout: a diameter (or a screw's clearance) followed, before any
+    // noun or the end of its phrase, by "thru", "deep", "clearance" …, or counted "4x Ø6.6".
+    let mut i = 0;
+    while i < toks.len() {
+        let bored = i >= 1
+            && matches!(toks[i].kind, Tk::Num { unit: Some(_), .. })
+            && toks[i - 1].word().is_some_and(|w| matches!(w, "bored" | "drilled"));
+        let dia_after = bored
+            || (matches!(toks[i].kind, Tk::Num { unit: Some(_), .. })
+                && toks.get(i + 1).is_some_and(|t| t.is_word("diameter"))
+                && toks.get(i + 1).is_some_and(|t| t.start == toks[i].start));
+        let metric = i > 0
+            && (toks[i - 1].is_word("metric") || toks[i - 1].is_word("tapped"))
+            && toks[i - 1].start == toks[i].start
+            && matches!(toks[i].kind, Tk::Num { unit: Some(_), .. });
+        if !(dia_after || metric) {
+            i += 1;
+            continue;
+        }
+        // A counterbore's or countersink's own diameter ("c'bore Ø15 x 9 dp") is no hole.
+        if i >= 1
+            && toks[i - 1]
+                .word()
+                .is_some_and(|w| matches!(w, "counterbore" | "countersink" | "counterbored" | "countersunk"))
+        {
+            i += 1;
+            continue;
+        }
+        let marked = toks.get(i + 1).is_some_and(|t| t.is_word("diameter") && t.start == toks[i].start);
+        let at = if dia_after && marked { i + 2 } else { i + 1 };
+        let first = if metric { i - 1 } else { i };
+        let counted = (first >= 2 && toks[first - 1].is_sym('x') && matches!(toks[first - 2].kind, Tk::Num { unit: None, .. }))
+            // "bored 22 mm through", "drilled 6 mm".
+            || (first >= 1 && toks[first - 1].word().is_some_and(|w| matches!(w, "bored" | "drilled")));
+        // Up to the end of its phrase: a callout word, and no noun naming what it is (a
+        // counterbore or countersink is the hole's own).
+        let mut said = counted;
+        let mut named = false;
+        let mut j = at;
+        while let Some(t) = toks.get(j) {
+            match &t.kind {
+                Tk::Word(w) if super::notation::CALLOUT.contains(&w.as_str()) => said = true,
+                // A body it goes through ("THRU FLANGE") is where it is, not what it is.
+                Tk::Word(w)
+                    if super::lexicon::noun(w).is_some_and(|k| k != super::lexicon::Noun::Pattern)
+                        && !matches!(w.as_str(), "counterbore" | "countersink" | "center" | "face")
+                        && !(j >= 1
+                            && toks[j - 1].word().is_some_and(|p| matches!(p, "through" | "into" | "in" | "the"))
+                            && matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Body(_)))) =>
+                {
+                    named = true;
+                }
+                Tk::Sym(',' | ';' | '.' | ')' | '(') => break,
+                _ => {}
+            }
+            j += 1;
+        }
+        let callout = said && !named;
+        if callout {
+            let (s, e) = (toks[at - 1].end, toks[at - 1].end);
+            toks.insert(at, Token { kind: Tk::Word("hole".into()), start: s, end: e });
+        }
+        i = at + 1;
+    }
 }
 
 /// Gives a unit to numbers that take it from their neighbours: coordinates ("Z=0 to
@@ -420,6 +933,33 @@ fn inherit_units(toks: &mut [Token]) {
                 j -= 2;
             } else {
                 break;
+            }
+        }
+    }
+    // "legs of 50 and 20 mm", "30, 40 and 50 mm": a run of numbers ending in one with a unit.
+    for i in (2..n).rev() {
+        let Tk::Num { unit: Some(f), .. } = toks[i].kind else { continue };
+        let mut run = Vec::new();
+        let mut j = i;
+        while j >= 2 && (toks[j - 1].is_word("and") || toks[j - 1].is_sym(',')) {
+            match toks[j - 2].kind {
+                Tk::Num { unit: None, .. } => {
+                    run.push(j - 2);
+                    j -= 2;
+                }
+                _ => break,
+            }
+        }
+        // Not coordinates ("X = -24, -12, 0, 12, 24mm"), which are read as such.
+        let coordinates = run.iter().chain([&i]).any(|k| {
+            matches!(toks[*k].kind, Tk::Num { signed: true, .. })
+                || (*k >= 1 && (toks[*k - 1].is_sym('=') || toks[*k - 1].is_sym('x') || toks[*k - 1].is_word("by")))
+        });
+        if !coordinates {
+            for k in run {
+                if let Tk::Num { v, unit: None, pm, signed } = toks[k].kind {
+                    toks[k].kind = Tk::Num { v, unit: Some(f), pm, signed };
+                }
             }
         }
     }

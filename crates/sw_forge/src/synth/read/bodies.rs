@@ -23,8 +23,17 @@ fn need(v: Option<f64>, what: &str, r: &Reader<'_>, e: usize) -> Res<f64> {
 
 /// Builds every body element not built yet, in the order the prompt gives them.
 pub fn read(r: &mut Reader<'_>) -> Res<()> {
-    merge_faces(r);
     for e in 0..r.els.len() {
+        // A round part named as a whole ("a flat belt pulley, Ø100 x 40 face", "a flywheel
+        // 300 dia x 60") with nothing else made of it: its own round body.
+        let round_whole = r.els[e].kind == Noun::Whole
+            && r.els[e].title
+            && r.model.adds.is_empty()
+            && matches!(r.els[e].noun.as_str(), "pulley" | "flywheel" | "handwheel" | "coupling" | "idler")
+            && r.els[e].dims.iter().any(|k| !r.used_dims[*k] && r.dim(*k).role == Role::Diameter);
+        if round_whole {
+            r.els[e].kind = Noun::Body(ShapeHint::Round);
+        }
         if r.done[e] || !matches!(r.els[e].kind, Noun::Body(_)) {
             continue;
         }
@@ -35,6 +44,13 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
             (0..r.els.len()).any(|o| o != e && matches!(r.els[o].kind, Noun::Body(_)) && !r.els[o].dims.is_empty());
         if r.els[e].title && !own && (r.els.len() > 1 && (r.els[e].dims.is_empty() || others)) {
             r.mark_element(e);
+            continue;
+        }
+        // The walls and floor of a hollowed part are its shell's, read with it.
+        if !r.els[e].title
+            && matches!(r.els[e].noun.as_str(), "wall" | "floor")
+            && super::treat::hollow_box(r).is_some()
+        {
             continue;
         }
         // A body with no quantity of its own is a name or a reference ("through the wall",
@@ -62,12 +78,15 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
 /// "A pyramid with a square base of 40mm sides", "the rectangular base is 60mm (X) by
 /// 30mm (Y)" of a wedge, "the right triangle has a 20mm leg along X": a face or edge of
 /// the part named as a noun — its lengths are the part's.
-fn merge_faces(r: &mut Reader<'_>) {
+pub fn merge_faces(r: &mut Reader<'_>) {
     let Some(t) = r.els.iter().position(|e| e.title) else { return };
     let shape = r.shape_of(t);
     let faces: &[&str] = match shape {
-        Some(ShapeHint::Cone | ShapeHint::Pyramid | ShapeHint::Wedge) => &["base"],
+        Some(ShapeHint::Cone | ShapeHint::Pyramid) => &["base"],
+        Some(ShapeHint::Wedge) => &["base", "leg"],
         Some(ShapeHint::Ngon(3)) => &["leg", "base"],
+        // An angle's legs ("60 by 40 legs").
+        Some(ShapeHint::Section(super::super::lexicon::Section::L)) => &["leg"],
         _ => return,
     };
     for f in faces {
@@ -169,6 +188,28 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
     {
         return Ok(p);
     }
+    // "FLANGE Ø80 x 8 AT ONE END" of a hub already made: at its end, not stacked on it.
+    let at_end = r.els[e].mentions.iter().any(|mi| {
+        let m = &r.mentions[*mi];
+        let d = r.doc;
+        let mut i = m.head + 1;
+        let mut hit = false;
+        while i + 1 < d.len() && !d.sym(i, ',') && !d.sym(i, '.') && !d.sym(i, ';') {
+            if d.is(i, "at") && matches!(d.word(i + 1), Some("one" | "either" | "the")) && d.is(i + 2, "end") {
+                hit = true;
+                d.mark_range(i, i + 3);
+            }
+            i += 1;
+        }
+        hit
+    });
+    if at_end
+        && let Some(start) = (0..e)
+            .filter_map(|p| r.built[p].as_ref().filter(|b| b.axis == axis && !b.cut).map(|b| b.span[0]))
+            .reduce(f64::min)
+    {
+        return Ok([start, start + l]);
+    }
     // Stacked on the body before it along the same axis, when one is there and the
     // words say on top (or nothing says otherwise); the first body from 0 (or centred).
     let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == axis && !b.cut).map(|b| b.span));
@@ -257,16 +298,25 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
             r.used_dims[k] = true;
         }
     }
-    // A list fills X, Y, Z in order of the free axes.
+    // A list fills X, Y, Z in order of the free axes; a list of two ("flat bar 50 x 10,
+    // length 300") fills what the lengths named by their roles leave.
     let list: Vec<usize> =
         dims.iter().copied().filter(|k| !r.used_dims[*k] && r.dim(*k).list.is_some() && !r.dim(*k).paren).collect();
-    if list.len() >= 2 {
-        for k in list {
+    let fill_list = |r: &mut Reader<'_>, s: &mut [Option<f64>; 3]| {
+        for &k in &list {
             if let Some(i) = (0..3).find(|i| s[*i].is_none()) {
                 s[i] = Some(r.dim(k).mm);
                 r.used_dims[k] = true;
             }
         }
+    };
+    let roles_named = dims.iter().any(|k| {
+        !r.used_dims[*k]
+            && r.dim(*k).list.is_none()
+            && matches!(r.dim(*k).role, Role::Length | Role::Width | Role::Height | Role::Thickness | Role::Depth)
+    });
+    if list.len() >= 3 || (list.len() == 2 && !roles_named) {
+        fill_list(r, &mut s);
     }
     let role = |roles: &[Role], axis: usize, r: &mut Reader<'_>, s: &mut [Option<f64>; 3]| {
         if s[axis].is_none()
@@ -280,14 +330,31 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
     role(&[Role::Length], 0, r, &mut s);
     role(&[Role::Width, Role::Depth], 1, r, &mut s);
     role(&[Role::Height], 2, r, &mut s);
-    // A side fills the square ("40mm sides", "80mm on each side").
-    if let Some(k) = r.find(e, &[Role::Side], &[], &[]) {
+    // "a 20 mm square bar 100 long": a bare size of a square thing is its side.
+    let square_bare = if r.els[e].has_mod("square") && r.find(e, &[Role::Side], &[], &[]).is_none() {
+        let bare: Vec<usize> =
+            r.free_dims(e).into_iter().filter(|k| r.dim(*k).role == Role::Bare && r.dim(*k).list.is_none()).collect();
+        (bare.len() == 1 && s.iter().filter(|x| x.is_none()).count() == 2).then(|| bare[0])
+    } else {
+        None
+    };
+    // A side fills the square ("40mm sides", "80mm on each side", "16 mm square and 300
+    // long": the two axes the length leaves).
+    if let Some(k) = r.find(e, &[Role::Side], &[], &[]).or(square_bare) {
         let v = r.dim(k).mm;
         r.used_dims[k] = true;
         let cube = r.els[e].noun == "cube";
-        for x in s.iter_mut().take(if cube { 3 } else { 2 }) {
-            *x = x.or(Some(v));
+        let n = if cube { 3 } else { 2 };
+        let mut filled = 0;
+        for x in s.iter_mut() {
+            if filled < n && x.is_none() {
+                *x = Some(v);
+                filled += 1;
+            }
         }
+    }
+    if list.len() == 2 && roles_named {
+        fill_list(r, &mut s);
     }
     // A thickness fills Z, else the one free horizontal axis.
     if let Some(k) = r.find(e, &[Role::Thickness], &[], &["wall"]) {
@@ -324,6 +391,8 @@ fn build(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         ShapeHint::Torus => torus(r, e),
         ShapeHint::Capsule => capsule(r, e),
         ShapeHint::Pyramid => pyramid(r, e),
+        // "a wedge with legs of 50 and 20": a right triangle extruded.
+        ShapeHint::Wedge if r.els[e].dims.iter().any(|k| r.dim(*k).has("leg")) => right_triangle(r, e),
         ShapeHint::Wedge => wedge(r, e),
         ShapeHint::Section(_) => Err(Refusal::new(r.quote_element(e), "a named cross-section it could not size")),
     }
@@ -339,6 +408,57 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
     let axis = axis_of(r, e, round);
     let (profile, od, id) = match shape {
         ShapeHint::Round | ShapeHint::Ring => {
+            // "42.4 x 2.6 tube": a tube's size as outside diameter by wall.
+            if shape == ShapeHint::Ring
+                && r.find(e, &[Role::Diameter, Role::Radius], &[], &[]).is_none()
+                && let [a, b] = r
+                    .free_dims(e)
+                    .into_iter()
+                    .filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare)
+                    .collect::<Vec<_>>()
+                    .as_slice()
+                && r.dim(*b).mm < r.dim(*a).mm / 2.0
+            {
+                let (od, w) = (r.dim(*a).mm, r.dim(*b).mm);
+                r.used_dims[*a] = true;
+                r.used_dims[*b] = true;
+                r.known.push(w);
+                let len = r.take(e, ALONG, &[], &["wall"]);
+                let span = span(r, e, axis, len)?;
+                return Ok(add(
+                    r,
+                    e,
+                    Profile::Annulus { od, id: od - 2.0 * w },
+                    axis,
+                    span,
+                    Some(od),
+                    Some(od - 2.0 * w),
+                    None,
+                ));
+            }
+            // "a 50 mm round bar, 80 long": a bare size before it, with its length named.
+            if r.find(e, &[Role::Diameter, Role::Radius], &[], &[]).is_none()
+                && r.find(e, ALONG, &[], &[]).is_some()
+                && let [k] = r
+                    .free_dims(e)
+                    .into_iter()
+                    .filter(|k| r.dim(*k).role == Role::Bare && r.dim(*k).list.is_none() && !r.dim(*k).paren)
+                    .collect::<Vec<_>>()
+                    .as_slice()
+            {
+                let k = *k;
+                r.used_dims[k] = true;
+                let od = r.dim(k).mm;
+                let len = r.take(e, ALONG, &[], &["wall"]);
+                let id = r.take(e, &[Role::Thickness], &["wall"], &[]).map(|w| od - 2.0 * w);
+                let span = span(r, e, axis, len)?;
+                let profile = match id {
+                    Some(i) if i > 0.0 && shape == ShapeHint::Ring => Profile::Annulus { od, id: i },
+                    _ => Profile::Circle { d: od },
+                };
+                let id = matches!(profile, Profile::Annulus { .. }).then_some(id).flatten();
+                return Ok(add(r, e, profile, axis, span, Some(od), id, None));
+            }
             let od = r.take_diameter(e, &["outer"], &[]).or_else(|| r.take_diameter(e, &[], NOT_OUTER));
             // "of the same diameter", "has the same dimensions": as the round body before it.
             let same = if od.is_none() && (r.says(e, "same") || r.says(e, "identical")) {
@@ -367,10 +487,14 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                 Some(i) if i > 0.0 && i < od && half => return half_pipe(r, e, od, i),
                 Some(i) if i > 0.0 && i < od => (Profile::Annulus { od, id: i }, od, Some(i)),
                 Some(i) => {
-                    return Err(Refusal::new(
-                        r.quote_element(e),
-                        format!("its inner diameter {i} mm does not fit inside {od} mm"),
-                    ));
+                    // Quote the sizes that disagree with the thing they size.
+                    let last = r.els[e].dims.iter().map(|k| r.dim(*k).tok).max();
+                    let first = r.els[e].mentions.first().map(|m| r.mentions[*m].start);
+                    let phrase = match (first, last) {
+                        (Some(a), Some(b)) if b >= a && b < a + 12 => r.doc.quote(a, b + 1),
+                        _ => r.quote_element(e),
+                    };
+                    return Err(Refusal::new(phrase, format!("its inner diameter {i} mm does not fit inside {od} mm")));
                 }
                 None => (Profile::Circle { d: od }, od, None),
             }
@@ -381,6 +505,9 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
             return right_triangle(r, e);
         }
         ShapeHint::Ngon(n) => {
+            let flats = r.find(e, &[Role::Bare, Role::Diameter, Role::Width], &["across", "flat"], &[]).is_some()
+                && r.find(e, &[Role::Bare, Role::Diameter], &["across", "corner"], &[]).is_none()
+                && r.find(e, &[Role::Diameter, Role::Radius], &["circumscribed"], &[]).is_none();
             let d = r
                 .take_diameter(e, &["circumscribed"], &[])
                 .or_else(|| r.take(e, &[Role::Bare, Role::Diameter], &["across", "corner"], &[]))
@@ -388,10 +515,27 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
                     r.take(e, &[Role::Bare, Role::Diameter, Role::Width], &["across", "flat"], &[])
                         .map(|af| af / (std::f64::consts::PI / n as f64).cos())
                 })
-                .or_else(|| r.take_diameter(e, &[], NOT_OUTER));
+                .or_else(|| r.take_diameter(e, &[], NOT_OUTER))
+                // "an equilateral triangle of 40 mm sides": a regular polygon by its side.
+                .or_else(|| r.take(e, &[Role::Side], &[], &[]).map(|s| s / (std::f64::consts::PI / n as f64).sin()));
             let d = need(d, "circumscribed diameter", r, e)?;
-            // A triangle stands on its base (a corner on +v); other polygons have a corner on +u.
-            let phase = if n == 3 { 90.0 } else { 0.0 };
+            mark_words(r, &["triangle", "equilateral", "hexagon", "octagon", "regular", "polygon"]);
+            // "across the corners it is what a hexagon gives": the polygon's other size, said.
+            for i in 0..r.doc.len().saturating_sub(2) {
+                let w = if r.doc.is(i + 1, "the") { i + 2 } else { i + 1 };
+                if r.doc.is(i, "across") && matches!(r.doc.word(w), Some("corner" | "flat")) {
+                    r.doc.mark_range(i, w + 1);
+                }
+            }
+            // A triangle stands on its base (a corner on +v); other polygons have a corner on
+            // +u, but one given across its flats lies on a flat (an octagon's flats on both axes).
+            let phase = if n == 3 {
+                90.0
+            } else if flats && n % 4 == 0 {
+                180.0 / n as f64
+            } else {
+                0.0
+            };
             (Profile::Ngon { n, d, phase }, d, None)
         }
         ShapeHint::Star => {
@@ -432,13 +576,91 @@ fn prism(r: &mut Reader<'_>, e: usize, shape: ShapeHint) -> Res<Built> {
     };
     let has_range = r.els[e].ranges.iter().any(|k| !r.used_ranges[*k] && r.doc.ranges[*k].axis == axis);
     let mut len = None;
-    if !has_range {
+    // "Ø16 x 100 shaft": the length written with its diameter comes first.
+    if !has_range && matches!(shape, ShapeHint::Round | ShapeHint::Ring) {
+        let d = r.doc;
+        let paired = r.free_dims(e).into_iter().find(|k| {
+            let t = d.dims[*k].tok;
+            d.dims[*k].role == Role::Bare
+                && d.dims[*k].list.is_none()
+                && t >= 2
+                && (d.sym(t - 1, 'x') || d.is(t - 1, "by"))
+                && d.dims.iter().any(|x| x.role == Role::Diameter && (x.tok + 2 == t || x.tok + 3 == t))
+        });
+        if let Some(k) = paired {
+            r.used_dims[k] = true;
+            len = Some(r.dim(k).mm);
+        }
+    }
+    if !has_range && len.is_none() {
         len = r.find(e, ALONG, &[], &["wall", "counterbore", "face", "total", "overall"]).map(|k| {
             r.used_dims[k] = true;
             r.dim(k).mm
         });
         if len.is_none() && shape == ShapeHint::Star {
             len = r.take(e, &[Role::Width], &["face"], &[]);
+        }
+        // A collar's or pulley's width (its face) is its length along its axis.
+        if len.is_none() && matches!(shape, ShapeHint::Round | ShapeHint::Ring) {
+            len = r.take(e, &[Role::Width], &[], &["wall"]).or_else(|| r.take(e, &[Role::Bare], &["face"], &[]));
+        }
+        // "a Ø40 hub projecting 10 on one side": as long as the body before it, and that much more.
+        if len.is_none()
+            && (r.says(e, "projecting") || r.says(e, "protruding") || r.says(e, "proud"))
+            && let Some(prev) =
+                (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.axis == axis).map(|b| b.span))
+            && let Some(k) = r.find(e, &[Role::Bare, Role::Length], &[], &[])
+        {
+            r.used_dims[k] = true;
+            let more = r.dim(k).mm;
+            mark_words(r, &["projecting", "protruding", "proud", "one", "side"]);
+            let span = [prev[0], prev[1] + more];
+            r.known.push(more);
+            return Ok(add(r, e, profile, axis, span, Some(od), id, None));
+        }
+        // "HUB Ø50 …, 30 OVERALL": a body with no length of its own spans the part's overall length.
+        if len.is_none() {
+            let overall = (0..r.doc.dims.len()).find(|k| {
+                !r.used_dims[*k]
+                    && (r.doc.dims[*k].has("overall") || r.doc.dims[*k].has("total"))
+                    && r.doc.dims[*k].role != Role::Diameter
+            });
+            if let Some(k) = overall {
+                r.used_dims[k] = true;
+                let l = r.doc.dims[k].mm;
+                // It spans the part: from where the bodies along its axis begin.
+                let from = (0..e)
+                    .filter_map(|p| r.built[p].as_ref().filter(|b| !b.cut && b.axis == axis).map(|b| b.span[0]))
+                    .fold(f64::INFINITY, f64::min);
+                let from = if from.is_finite() {
+                    from
+                } else if r.centered {
+                    -l / 2.0
+                } else {
+                    0.0
+                };
+                return Ok(add(r, e, profile, axis, [from, from + l], Some(od), id, None));
+            }
+        }
+        // "Ø20 x 50 pin", "Ø100 x 6 disc": the one length written after its diameter.
+        if len.is_none() {
+            let bare: Vec<usize> = r
+                .free_dims(e)
+                .into_iter()
+                .filter(|k| {
+                    let d = r.dim(*k);
+                    d.role == Role::Bare
+                        && !d.paren
+                        && d.restates.is_none()
+                        && !NOT_OUTER.iter().any(|q| d.has(q))
+                        && !d.has("from-center")
+                        && !d.has("pattern")
+                })
+                .collect();
+            if let [k] = bare.as_slice() {
+                r.used_dims[*k] = true;
+                len = Some(r.dim(*k).mm);
+            }
         }
         // A flat part's thickness ("lying flat … (Z=0 to Z=3)") for a disc on it.
         if len.is_none()
@@ -559,9 +781,22 @@ fn cone(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         .or_else(|| r.take_diameter(e, &[], &["top", "tip"]));
     // "a 30mm base": a bare length named for the base.
     let base = base.or_else(|| r.take(e, &[Role::Bare], &["base"], &[]));
+    // "apex down, 40 across the top": the wide end is the top (the same solid turned over).
+    let down = (0..r.doc.len()).any(|i| {
+        matches!(r.doc.word(i), Some("apex" | "point" | "tip" | "vertex"))
+            && matches!(r.doc.word(i + 1), Some("down" | "downward" | "downwards"))
+    });
+    let base = if base.is_none() && down { r.take_diameter(e, &["top"], &[]) } else { base };
     let base = need(base, "base diameter", r, e)?;
     let top = r.take_diameter(e, &["top"], &[]).unwrap_or(0.0);
-    let h = need(r.take(e, &[Role::Height, Role::Length], &[], &[]), "height", r, e)?;
+    let h = need(r.take(e, &[Role::Height, Role::Length, Role::Depth], &[], &[]), "height", r, e)?;
+    for i in 0..r.doc.len() {
+        if matches!(r.doc.word(i), Some("apex" | "point" | "tip" | "vertex"))
+            && matches!(r.doc.word(i + 1), Some("down" | "downward" | "downwards" | "up" | "upward" | "upwards"))
+        {
+            r.doc.mark_range(i, i + 2);
+        }
+    }
     let span = span(r, e, Axis::Z, Some(h))?;
     let at = positions(r, e, Axis::Z)?;
     let mut bodies = Vec::new();
@@ -576,7 +811,39 @@ fn cone(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 }
 
 fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
-    let dia = need(r.take_diameter(e, &[], &[]), "diameter or radius", r, e)?;
+    // "a 45 mm ball": a bare size before it is its diameter.
+    let dia = r.take_diameter(e, &[], &[]).or_else(|| {
+        let bare: Vec<usize> = r.free_dims(e).into_iter().filter(|k| r.dim(*k).role == Role::Bare).collect();
+        let [k] = bare.as_slice() else { return None };
+        r.used_dims[*k] = true;
+        Some(r.dim(*k).mm)
+    });
+    let dia = need(dia, "diameter or radius", r, e)?;
+    // "a hollow sphere, 50 OD with a 4 mm wall": the ball less a ball inside it.
+    let wall = r.take(e, &[Role::Thickness], &["wall"], &[]);
+    if let Some(w) = wall
+        && !half
+    {
+        if 2.0 * w >= dia {
+            return Err(Refusal::new(r.quote_element(e), "its wall does not fit inside it"));
+        }
+        let c = [0.0, 0.0, if r.centered { 0.0 } else { dia / 2.0 }];
+        let b = r.model.adds.len();
+        r.model.adds.push(Body::new(r.els[e].noun.clone(), Shape::Sphere { c, d: dia }));
+        r.model.cuts.push(Body::new("hollow", Shape::Sphere { c, d: dia - 2.0 * w }));
+        mark_words(r, &["hollow"]);
+        r.known.push(dia - 2.0 * w);
+        return Ok(Built {
+            axis: Axis::Z,
+            span: [c[2] - dia / 2.0, c[2] + dia / 2.0],
+            at: vec![[0.0, 0.0]],
+            od: Some(dia),
+            id: Some(dia - 2.0 * w),
+            size: None,
+            bodies: vec![b],
+            cut: false,
+        });
+    }
     // On top of the body before it ("topped by a hemisphere … centered on the top face").
     let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == Axis::Z && !b.cut).map(|b| b.span));
     let z0 = match (prev, half) {
@@ -609,7 +876,12 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
                 {
                     d.mark(i)
                 }
-                Some("flat") if d.is(i + 1, "face") => d.mark_range(i, i + 2),
+                Some("flat") if d.is(i + 1, "face") || d.is(i + 1, "side") => {
+                    d.mark_range(i, i + 2);
+                    if matches!(d.word(i + 2), Some("down" | "downward" | "up" | "upward")) {
+                        d.mark(i + 2);
+                    }
+                }
                 _ => {}
             }
         }
@@ -638,10 +910,19 @@ fn sphere(r: &mut Reader<'_>, e: usize, half: bool) -> Res<Built> {
 }
 
 fn torus(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    let od = r.take_diameter(e, &["outer"], &[]);
-    let id = r.take_diameter(e, &["inner"], &[]);
-    let (major, minor) = match (od, id) {
-        (Some(o), Some(i)) if i < o => ((o + i) / 2.0, (o - i) / 2.0),
+    // "major radius 40, minor radius 10": the ring's and the tube's.
+    let by_radii = match (
+        r.find(e, &[Role::Diameter, Role::Radius], &["major"], &[]),
+        r.find(e, &[Role::Diameter, Role::Radius], &["minor"], &[]),
+    ) {
+        (Some(_), Some(_)) => Some((r.take_diameter(e, &["major"], &[]), r.take_diameter(e, &["minor"], &[]))),
+        _ => None,
+    };
+    let od = if by_radii.is_none() { r.take_diameter(e, &["outer"], &[]) } else { None };
+    let id = if by_radii.is_none() { r.take_diameter(e, &["inner"], &[]) } else { None };
+    let (major, minor) = match (by_radii, od, id) {
+        (Some((Some(a), Some(b))), ..) => (a, b),
+        (_, Some(o), Some(i)) if i < o => ((o + i) / 2.0, (o - i) / 2.0),
         _ => {
             let tube = r.take_diameter(e, &["tube"], &[]).or_else(|| r.take(e, &[Role::Thickness], &[], &[]));
             let ring = r.take_diameter(e, &[], &[]);
@@ -703,11 +984,35 @@ pub fn cylinder_with_caps(r: &mut Reader<'_>, e: usize, d: f64, l: f64) -> Res<B
 }
 
 fn pyramid(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    // A rectangular frustum: two X-by-Y pairs, the base's and the top's.
+    // A rectangular frustum: two X-by-Y pairs, the base's and the top's; or two squares
+    // ("60 square at the bottom and 30 square at the top"), or two lists ("60 x 40 base,
+    // 30 x 20 top"), the bottom's first unless the words say which is the top.
     let pairs: Vec<usize> =
         r.free_dims(e).into_iter().filter(|k| matches!(r.dim(*k).axis, Some(Axis::X | Axis::Y))).collect();
+    let sides: Vec<usize> = r.free_dims(e).into_iter().filter(|k| r.dim(*k).role == Role::Side).collect();
+    let lists: Vec<usize> = r.free_dims(e).into_iter().filter(|k| r.dim(*k).list.is_some()).collect();
+    let pairs = if pairs.len() == 4 {
+        pairs
+    } else if sides.len() == 2 {
+        vec![sides[0], sides[0], sides[1], sides[1]]
+    } else if lists.len() == 4 {
+        lists
+    } else {
+        pairs
+    };
     if pairs.len() == 4 {
-        let v: Vec<f64> = pairs.iter().map(|k| r.dim(*k).mm).collect();
+        let mut v: Vec<f64> = pairs.iter().map(|k| r.dim(*k).mm).collect();
+        // "40 x 40 at the top, … tapering to 25 x 25 at the bottom": which is said the top.
+        let said_top = |k: usize| {
+            let t = r.dim(k).tok;
+            r.dim(k).has("top")
+                || (t + 1..(t + 5).min(r.doc.len())).take_while(|i| !r.doc.sym(*i, ',')).any(|i| r.doc.is(i, "top"))
+        };
+        let top_first = said_top(pairs[1]) && !said_top(pairs[3]);
+        mark_words(r, &["tapering", "tapers", "tapered", "top", "bottom", "whole"]);
+        if top_first {
+            v = vec![v[2], v[3], v[0], v[1]];
+        }
         for k in &pairs {
             r.used_dims[*k] = true;
         }
@@ -803,11 +1108,23 @@ fn right_triangle(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             r.used_dims[k] = true;
         }
     }
+    // "legs of 50 and 20 mm": the second leg listed with the first.
+    if legs.len() == 1 {
+        let more: Vec<usize> = r
+            .free_dims(e)
+            .into_iter()
+            .filter(|k| r.dim(*k).role == Role::Bare && r.dim(*k).quals.is_empty() && r.dim(*k).axis.is_none())
+            .collect();
+        if let [k] = more.as_slice() {
+            r.used_dims[*k] = true;
+            legs.push((Axis::Y, r.dim(*k).mm));
+        }
+    }
     let [(a1, l1), (a2, l2)] = legs.as_slice() else {
         return Err(Refusal::new(r.quote_element(e), "a right triangle needs its two legs"));
     };
     let along = Axis::ALL.into_iter().find(|a| a != a1 && a != a2).unwrap_or(Axis::Z);
-    let h = need(r.take(e, &[Role::Length, Role::Height, Role::Bare], &[], &[]), "extrusion", r, e)?;
+    let h = need(r.take(e, &[Role::Length, Role::Height, Role::Thickness, Role::Bare], &[], &[]), "extrusion", r, e)?;
     let (u, _) = along.uv();
     // In (u, v): the leg along u, the other along v.
     let (lu, lv) = if *a1 == u { (*l1, *l2) } else { (*l2, *l1) };
@@ -824,7 +1141,10 @@ fn right_triangle(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         },
     ));
     for i in 0..r.doc.len() {
-        if matches!(r.doc.word(i), Some("right" | "angle" | "right-angle" | "triangle" | "leg")) {
+        if matches!(
+            r.doc.word(i),
+            Some("right" | "angle" | "right-angle" | "right-angled" | "triangle" | "leg" | "extruded")
+        ) {
             r.doc.mark(i);
         }
     }

@@ -14,7 +14,11 @@ const EXTRA: f64 = 1.0;
 
 /// Cuts every cut element, in the prompt's order.
 pub fn read(r: &mut Reader<'_>) -> Res<()> {
-    for e in 0..r.els.len() {
+    // Bores first: the holes through a part's middle that other features are placed by
+    // ("a set screw into the bore", "a keyway in the bore").
+    let mut order: Vec<usize> = (0..r.els.len()).collect();
+    order.sort_by_key(|e| !matches!(r.els[*e].kind, Noun::Cut(CutKind::Bore)));
+    for e in order {
         if r.done[e] {
             continue;
         }
@@ -66,7 +70,7 @@ fn check_cuts_something(r: &Reader<'_>, e: usize, bi: usize) -> Res<()> {
             (0..3).all(|k| b[0][k] >= q[0][k] - 1e-9 && b[1][k] <= q[1][k] + 1e-9)
         }
     });
-    if outside || swallowed {
+    if outside || swallowed || !touches_material(r, bi) {
         return Err(Refusal::new(
             r.quote_element(e),
             "as placed by these words it would cut nothing: it lies in empty space",
@@ -81,6 +85,47 @@ fn check_cuts_something(r: &Reader<'_>, e: usize, bi: usize) -> Res<()> {
         return Err(Refusal::new(r.quote_element(e), format!("it would remove the whole {}", body.label)));
     }
     Ok(())
+}
+
+/// Whether a point of the part is in its material: inside a body added (a prism by its
+/// profile, any other solid by its bounds) and not in a cut made before this one.
+fn in_material(r: &Reader<'_>, p: [f64; 3], before: usize) -> bool {
+    let in_prism = |b: &Body| match &b.shape {
+        Shape::Prism { profile, axis, at, rot, from, to } => {
+            let (u, v) = axis.uv();
+            let w = p[axis.index()];
+            let (du, dv) = (p[u.index()] - at[0], p[v.index()] - at[1]);
+            let (sn, cs) = (-rot).to_radians().sin_cos();
+            w >= from.min(*to) - 1e-9
+                && w <= from.max(*to) + 1e-9
+                && profile.contains([cs * du - sn * dv, sn * du + cs * dv])
+        }
+        _ => {
+            let q = b.bounds();
+            (0..3).all(|k| p[k] >= q[0][k] - 1e-9 && p[k] <= q[1][k] + 1e-9)
+        }
+    };
+    let cut_before = r.model.cuts[..before].iter().any(|c| matches!(c.shape, Shape::Prism { .. }) && in_prism(c));
+    r.model.adds.iter().any(in_prism) && !cut_before
+}
+
+/// Whether a cut reaches any material: points across its section (its centre and near its
+/// outline) at three places along its length, one of them in the part.
+fn touches_material(r: &Reader<'_>, bi: usize) -> bool {
+    let Some(Shape::Prism { profile, axis, at, rot, from, to }) = r.model.cuts.get(bi).map(|c| &c.shape) else {
+        return true;
+    };
+    let mut section = vec![[0.0, 0.0]];
+    section.extend(profile.outline().into_iter().map(|q| [0.9 * q[0], 0.9 * q[1]]));
+    let (sn, cs) = rot.to_radians().sin_cos();
+    let (lo, hi) = (from.min(*to), from.max(*to));
+    [0.1, 0.5, 0.9].iter().any(|f| {
+        let w = lo + f * (hi - lo);
+        section.iter().any(|q| {
+            let uv = [at[0] + cs * q[0] - sn * q[1], at[1] + sn * q[0] + cs * q[1]];
+            in_material(r, super::super::solid::point(*axis, uv, w), bi)
+        })
+    })
 }
 
 /// The bodies a cut goes through or into: the objects of "through", "into", "in", "on"
@@ -155,6 +200,43 @@ fn cut_axis(r: &Reader<'_>, e: usize) -> Option<Axis> {
     None
 }
 
+/// "through the 40 way", "through the 1.5 in way": along the axis on which the part
+/// measures that length (one axis only).
+fn way_axis(r: &mut Reader<'_>, e: usize) -> Res<Option<Axis>> {
+    let d = r.doc;
+    let size = r.model.size();
+    for k in r.els[e].dims.clone() {
+        let dm = d.dims[k].clone();
+        if r.used_dims[k] || !d.is(dm.tok + 1, "way") {
+            continue;
+        }
+        let axes: Vec<Axis> =
+            Axis::ALL.into_iter().filter(|a| (size[a.index()] - dm.mm).abs() <= 1e-6 * dm.mm.max(1.0)).collect();
+        let [a] = axes.as_slice() else {
+            return Err(Refusal::new(
+                d.quote(dm.tok, dm.tok + 1),
+                "the part does not measure this length along exactly one axis",
+            ));
+        };
+        r.used_dims[k] = true;
+        d.mark_range(dm.tok, dm.tok + 2);
+        return Ok(Some(*a));
+    }
+    Ok(None)
+}
+
+/// "its centre 30 above the base": the height of a cut across the part, from its bottom
+/// (or below its top).
+fn height_of(r: &mut Reader<'_>, e: usize) -> Option<f64> {
+    let k =
+        r.find(e, &[Role::Inset], &["from-bottom"], &[]).or_else(|| r.find(e, &[Role::Inset], &["from-top"], &[]))?;
+    r.used_dims[k] = true;
+    let dm = r.doc.dims[k].clone();
+    r.doc.mark_range(dm.phrase.0, dm.phrase.1 + 3);
+    let b = r.model.bounds();
+    Some(if dm.has("from-top") { b[1][2] - dm.mm } else { b[0][2] + dm.mm })
+}
+
 /// Extent of the whole part (or of some bodies) along an axis.
 fn extent(r: &Reader<'_>, bodies: &[usize], axis: Axis) -> [f64; 2] {
     let k = axis.index();
@@ -197,11 +279,15 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     }
     // A square hole is cut square; other shapes of hole are not made.
     let square = r.els[e].has_mod("square");
+    // A thread given by its metric size is made as its tap drill ("M6 tapped"); other
+    // threads, and holes of other shapes, are not made.
+    let by_size = r.els[e].dims.iter().any(|k| r.dim(*k).has("tapped"));
+    if by_size {
+        super::bodies::mark_words(r, &["tapped", "thread", "threaded", "female"]);
+    }
     if let Some(m) = r.els[e].mods.iter().find(|m| {
-        matches!(
-            m.as_str(),
-            "rectangular" | "hexagonal" | "triangular" | "oval" | "elliptical" | "slotted" | "tapped" | "threaded"
-        )
+        matches!(m.as_str(), "rectangular" | "hexagonal" | "triangular" | "oval" | "elliptical" | "slotted")
+            || (!by_size && matches!(m.as_str(), "tapped" | "threaded"))
     }) {
         return Err(Refusal::new(r.quote_element(e), format!("a {m} hole is not made")));
     }
@@ -230,10 +316,23 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         order.sort_by(|a, b| s[*a].total_cmp(&s[*b]));
         (s[order[0]] <= 0.5 * s[order[1]]).then(|| Axis::ALL[order[0]])
     });
-    let axis = cut_axis(r, e).or(by_points).or(thin).unwrap_or(Axis::Z);
+    let axis = match way_axis(r, e)? {
+        Some(a) => Some(a),
+        None => cut_axis(r, e),
+    };
+    // Across a round body standing on Z, unless its axis is said: a radial or cross hole.
+    let named_radial = r.els[e].has_mod("radial") || r.els[e].has_mod("cross");
+    let round_host = r.built.iter().flatten().any(|b| !b.cut && b.axis == Axis::Z && b.od.is_some());
+    let axis = match axis {
+        None if named_radial && round_host && by_points.is_none() => Some(Axis::X),
+        a => a,
+    };
+    let axis = axis.or(by_points).or(thin).unwrap_or(Axis::Z);
     let count = place::count_of(r, e);
-    let radial =
-        r.says(e, "radial") || r.says(e, "radially") || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
+    let radial = r.says(e, "radial")
+        || r.says(e, "radially")
+        || named_radial
+        || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
     if radial && axis != Axis::Z {
         return radial_hole(r, e, d, axis, &tg);
     }
@@ -246,6 +345,8 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     if at.is_empty() && count > 1 {
         at = place::circle(r, e, count)
             .or_else(|| place::rect_pattern(r, e))
+            .or_else(|| if count == 4 { place::square_pattern(r, e) } else { None })
+            .or_else(|| if count == 2 { target_size.and_then(|s| place::ends(r, e, s)) } else { None })
             .or_else(|| target_size.and_then(|s| place::corners(r, e, s)))
             .or_else(|| place::row(r, e, count, Axis::X, axis))
             .unwrap_or_default();
@@ -287,6 +388,18 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
                 tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
             let full = extent(r, &bodies, axis);
             let floor = tg.iter().find_map(|t| r.model.adds.get(r.built[*t].as_ref()?.bodies[0])?.shell.map(|s| s.t));
+            if let Some(dp) = depth
+                && dp >= full[1] - full[0] - 1e-9
+            {
+                return Err(Refusal::new(
+                    r.quote_element(e),
+                    format!(
+                        "a blind hole {} mm deep in a part {} mm thick would go right through",
+                        super::super::num::n(dp),
+                        super::super::num::n(full[1] - full[0])
+                    ),
+                ));
+            }
             match (depth, floor, r.says(e, "bottom")) {
                 (Some(dp), _, true) => [full[0], full[0] + dp],
                 (Some(dp), _, _) => [full[1] - dp, full[1]],
@@ -318,7 +431,7 @@ fn part_size(r: &Reader<'_>) -> Option<[f64; 2]> {
 /// counterbore 10mm diameter, 3mm deep"; countersinks with their angle (90° unless said).
 fn counterbore(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]], span: [f64; 2]) -> Res<()> {
     let own = r.take_diameter(e, &["counterbore"], &[]).map(|v| (e, v));
-    let cb_el = (0..r.els.len()).find(|k| matches!(r.els[*k].kind, Noun::Cut(CutKind::Counterbore)) && !r.done[*k]);
+    let cb_el = partner(r, e, CutKind::Counterbore);
     let (holder, dia) = match (own, cb_el) {
         (Some(x), _) => x,
         (None, Some(k)) => match r.take_diameter(k, &[], &[]) {
@@ -364,7 +477,7 @@ fn counterbore(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]]
 
 fn countersink(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]], span: [f64; 2]) -> Res<()> {
     let own = r.take_diameter(e, &["countersink"], &[]).map(|v| (e, v));
-    let cs_el = (0..r.els.len()).find(|k| matches!(r.els[*k].kind, Noun::Cut(CutKind::Countersink)) && !r.done[*k]);
+    let cs_el = partner(r, e, CutKind::Countersink);
     let (holder, dia) = match (own, cs_el) {
         (Some(x), _) => x,
         (None, Some(k)) => match r.take_diameter(k, &[], &[]) {
@@ -406,6 +519,24 @@ fn countersink(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, at: &[[f64; 2]]
     Ok(())
 }
 
+/// The counterbore (or countersink) element of hole `e`: one named after it and before the
+/// next hole ("Ø30 thru ctr, 4x Ø9 thru c'bore Ø15": the c'bore is the Ø9 holes').
+fn partner(r: &Reader<'_>, e: usize, kind: CutKind) -> Option<usize> {
+    let first = |k: usize| r.els[k].mentions.first().map_or(usize::MAX, |m| r.mentions[*m].head);
+    let here = first(e);
+    let next_hole = (0..r.els.len())
+        .filter(|k| *k != e && matches!(r.els[*k].kind, Noun::Cut(CutKind::Hole | CutKind::Bore)) && first(*k) > here)
+        .map(first)
+        .min()
+        .unwrap_or(usize::MAX);
+    let undone = |k: &usize| matches!(r.els[*k].kind, Noun::Cut(c) if c == kind) && !r.done[*k];
+    (0..r.els.len()).filter(undone).find(|k| first(*k) > here && first(*k) < next_hole).or_else(|| {
+        // Said before the holes ("counterbored holes … counterbore 10 mm") when only one hole is named.
+        let holes = (0..r.els.len()).filter(|k| matches!(r.els[*k].kind, Noun::Cut(CutKind::Hole))).count();
+        if holes == 1 { (0..r.els.len()).find(undone) } else { None }
+    })
+}
+
 /// A hole across a round body ("drilled radially through the hub at Z=20mm, oriented along
 /// the X axis"): through one wall (from the axis out) or both ("passing through both walls").
 fn radial_hole(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, tg: &[usize]) -> Res<Built> {
@@ -413,7 +544,31 @@ fn radial_hole(r: &mut Reader<'_>, e: usize, d: f64, axis: Axis, tg: &[usize]) -
     let bodies: Vec<usize> = host.and_then(|h| r.built[h].as_ref()).map(|b| b.bodies.clone()).unwrap_or_default();
     let full = extent(r, &bodies, axis);
     let zspan = extent(r, &bodies, Axis::Z);
-    let z = r.take_coord(e, Axis::Z).unwrap_or((zspan[0] + zspan[1]) / 2.0);
+    // A hole across a body as wide as it (or wider) would cut it in two.
+    if d >= full[1] - full[0] - 1e-9 {
+        return Err(Refusal::new(
+            r.quote_element(e),
+            format!(
+                "a {} mm hole across a body {} mm wide would cut it in two",
+                super::super::num::n(d),
+                super::super::num::n(full[1] - full[0])
+            ),
+        ));
+    }
+    // "8 from one end", "at 20 from one end": from the bottom end (either end makes the same part).
+    let end_inset = r.find(e, &[Role::Inset], &[], &[]);
+    let z = match r.take_coord(e, Axis::Z).or_else(|| height_of(r, e)) {
+        Some(z) => z,
+        None => match end_inset {
+            Some(k) => {
+                r.used_dims[k] = true;
+                let dm = r.doc.dims[k].clone();
+                r.doc.mark_range(dm.phrase.0, dm.phrase.1 + 3);
+                zspan[0] + dm.mm
+            }
+            None => (zspan[0] + zspan[1]) / 2.0,
+        },
+    };
     // Through one wall of a ring (a set screw), else right through: "both walls", "a
     // through hole", or a host with no bore.
     let bored =
@@ -545,10 +700,30 @@ fn keyway(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 /// the top face, 15mm deep, … running the full Y width"), or a stadium-shaped slot through
 /// a plate ("a 30mm long, 8mm wide slot through the plate").
 fn slot(r: &mut Reader<'_>, e: usize) -> Res<Built> {
-    let w = r
-        .take(e, &[Role::Width], &[], &[])
-        .ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;
-    let len = r.take(e, &[Role::Length], &[], &[]);
+    // A slot's ends are round unless said square ("with round ends", "radiused ends").
+    for (a, b) in r.sentences_of(e) {
+        for i in a..b.saturating_sub(1) {
+            if matches!(r.doc.word(i), Some("round" | "rounded" | "radiused" | "semicircular" | "full"))
+                && r.doc.is(i + 1, "end")
+            {
+                r.doc.mark_range(i, i + 2);
+            }
+        }
+    }
+    // "a 60 x 20 slot": its length by its width, overall.
+    let listed: Vec<usize> =
+        r.free_dims(e).into_iter().filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare).collect();
+    let (w, len) = if let ([a, b], None) = (listed.as_slice(), r.find(e, &[Role::Width], &[], &[])) {
+        let (x, y) = (r.dim(*a).mm, r.dim(*b).mm);
+        r.used_dims[*a] = true;
+        r.used_dims[*b] = true;
+        (x.min(y), Some(x.max(y)))
+    } else {
+        let w = r
+            .take(e, &[Role::Width], &[], &[])
+            .ok_or_else(|| Refusal::new(r.quote_element(e), "no width is given for it"))?;
+        (w, r.take(e, &[Role::Length], &[], &[]))
+    };
     let depth = r.take(e, &[Role::Depth], &[], &[]);
     let across = r.find(e, &[Role::Width], &[], &[]).map(|k| r.dim(k).axis);
     let w_axis = r.els[e]
@@ -690,9 +865,15 @@ fn groove(r: &mut Reader<'_>, e: usize) -> Res<Built> {
 /// round or rectangular, to a depth, in the top face of the body named (or of the part).
 fn pocket(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let shape = r.els[e].shape;
-    let depth = r
-        .take(e, &[Role::Depth], &[], &[])
-        .ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
+    // "a window cut right through": as deep as the part.
+    let through = r.says(e, "through") || r.says(e, "thru");
+    let depth = r.take(e, &[Role::Depth], &[], &[]).or_else(|| {
+        through.then(|| {
+            let b = r.model.bounds();
+            b[1][2] - b[0][2]
+        })
+    });
+    let depth = depth.ok_or_else(|| Refusal::new(r.quote_element(e), "no depth is given for it"))?;
     let profile = match shape {
         Some(ShapeHint::Ngon(n)) => {
             let d = r

@@ -101,6 +101,7 @@ pub fn read(doc: &Doc) -> Res<Model> {
         return Err(Refusal::new(doc.quote(0, doc.len().saturating_sub(1)), "it names no body the synthesizer makes"));
     }
     place::read_frame(&mut r);
+    bodies::merge_faces(&mut r);
     sections::read(&mut r)?;
     paths::read(&mut r)?;
     bodies::read(&mut r)?;
@@ -240,14 +241,29 @@ impl Reader<'_> {
         if el.teeth.is_some() {
             return Some(ShapeHint::Star);
         }
+        // "a half ball", "half a sphere": a hemisphere.
+        if from_noun == Some(ShapeHint::Sphere) && el.has_mod("half") {
+            return Some(ShapeHint::Hemisphere);
+        }
         // An angle bracket (or iron) is an L.
-        if matches!(el.noun.as_str(), "bracket" | "iron" | "profile") && (el.has_mod("angle") || el.has_mod("l-shaped"))
+        if matches!(el.noun.as_str(), "bracket" | "iron" | "profile" | "section" | "bar")
+            && (el.has_mod("angle") || el.has_mod("l-shaped"))
         {
             return Some(ShapeHint::Section(super::lexicon::Section::L));
         }
-        // A tapered or truncated rectangular block is a rectangular frustum.
-        if (el.has_mod("tapered") || el.has_mod("truncated")) && (el.has_mod("rectangular") || el.has_mod("square")) {
+        // A tapered or truncated rectangular block, or a square frustum, is a rectangular frustum.
+        let squared = el.has_mod("rectangular") || el.has_mod("square");
+        let tapering = (0..self.doc.len()).any(|i| matches!(self.doc.word(i), Some("tapering" | "tapers" | "tapered")));
+        if squared && (el.has_mod("tapered") || el.has_mod("truncated") || el.noun == "frustum" || tapering) {
             return Some(ShapeHint::Pyramid);
+        }
+        // "a Ø60 x 40 gear blank": a box noun sized by a diameter is round.
+        if from_noun == Some(ShapeHint::Rect)
+            && el.shape.is_none()
+            && el.dims.iter().any(|k| self.doc.dims[*k].role == Role::Diameter && !self.doc.dims[*k].has("inner"))
+            && !el.dims.iter().any(|k| self.doc.dims[*k].list.is_some())
+        {
+            return Some(ShapeHint::Round);
         }
         // A rectangular or square tube or pipe is a hollow box section.
         if matches!(el.noun.as_str(), "tube" | "pipe" | "sleeve") && (el.has_mod("rectangular") || el.has_mod("square"))
@@ -257,6 +273,11 @@ impl Reader<'_> {
         // A named solid ("cone", "sphere", "gear") keeps its kind; "hollow cylinder" is a ring.
         match (el.shape, from_noun) {
             (Some(ShapeHint::Ring), Some(ShapeHint::Round | ShapeHint::Ring)) => Some(ShapeHint::Ring),
+            // "a hexagonal spacer": the polygon, its bore a hole.
+            (
+                Some(a @ (ShapeHint::Ngon(_) | ShapeHint::Ellipse | ShapeHint::Stadium | ShapeHint::Star)),
+                Some(ShapeHint::Ring),
+            ) => Some(a),
             (Some(ShapeHint::Round), Some(ShapeHint::Ring)) => Some(ShapeHint::Ring),
             (Some(a), Some(ShapeHint::Round | ShapeHint::Rect)) => Some(a),
             (_, Some(n)) => Some(n),

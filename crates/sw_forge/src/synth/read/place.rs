@@ -274,16 +274,53 @@ pub fn corners(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64;
     Some(vec![[-x, -y], [x, -y], [x, y], [-x, y]])
 }
 
+/// "4 x M3 clearance on 31 mm square centres": four copies at the corners of a centred square.
+pub fn square_pattern(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
+    let k = r.find(e, &[Role::Spacing], &["square"], &[])?;
+    let h = r.doc.dims[k].mm / 2.0;
+    r.used_dims[k] = true;
+    Some(vec![[-h, -h], [h, -h], [h, h], [-h, h]])
+}
+
+/// "two holes on the centreline, 15 from each end", "2x Ø8 on CL 20 from ends": two copies
+/// on the long centreline of a part of size (u, v), each inset from an end.
+pub fn ends(r: &mut Reader<'_>, e: usize, size: [f64; 2]) -> Option<Vec<[f64; 2]>> {
+    let said =
+        r.sentences_of(e).iter().any(|(a, b)| (*a..*b).any(|i| matches!(r.doc.word(i), Some("end" | "centerline"))));
+    if !said {
+        return None;
+    }
+    // From each end, or "35 from ctr" either side of the centre.
+    let centred = r.find(e, &[Role::Bare], &["from-center"], &[]);
+    let k = r.find(e, &[Role::Inset], &[], &[]).or(centred)?;
+    let i = r.doc.dims[k].mm;
+    r.used_dims[k] = true;
+    for (a, b) in r.sentences_of(e) {
+        for j in a..b {
+            if matches!(r.doc.word(j), Some("end" | "centerline" | "long" | "on" | "center")) {
+                r.doc.mark(j);
+            }
+        }
+    }
+    let i = if centred == Some(k) { size[0].max(size[1]) / 2.0 - i } else { i };
+    Some(if size[0] >= size[1] {
+        vec![[-(size[0] / 2.0 - i), 0.0], [size[0] / 2.0 - i, 0.0]]
+    } else {
+        vec![[0.0, -(size[1] / 2.0 - i)], [0.0, size[1] / 2.0 - i]]
+    })
+}
+
 /// "in a 20mm x 20mm square pattern", "in a rectangular pattern 64mm (X) by 34mm (Y)":
 /// the four corners of a centred rectangle given by a list of two lengths.
 pub fn rect_pattern(r: &mut Reader<'_>, e: usize) -> Option<Vec<[f64; 2]>> {
     let dims = r.free_dims(e);
     let list: Vec<usize> = dims.iter().copied().filter(|k| r.doc.dims[*k].list.is_some()).collect();
     let [a, b] = list.as_slice() else { return None };
-    let said = r
-        .sentences_of(e)
-        .iter()
-        .any(|(s, t)| (*s..*t).any(|i| r.doc.is(i, "pattern") || r.doc.is(i, "square") || r.doc.is(i, "rectangle")));
+    let spacing = [a, b].iter().any(|k| r.doc.dims[**k].role == Role::Spacing || r.doc.dims[**k].has("pattern"));
+    let said = spacing
+        || r.sentences_of(e).iter().any(|(s, t)| {
+            (*s..*t).any(|i| r.doc.is(i, "pattern") || r.doc.is(i, "square") || r.doc.is(i, "rectangle"))
+        });
     if !said {
         return None;
     }

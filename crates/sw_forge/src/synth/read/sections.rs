@@ -138,12 +138,36 @@ fn beam(r: &mut Reader<'_>, t: usize, s: Section) -> Res<()> {
 }
 
 fn channel(r: &mut Reader<'_>, t: usize) -> Res<()> {
+    // "Channel 100 x 50 x 5 (web x flange x thickness), 400 long": a catalogue's size.
+    let list: Vec<usize> =
+        r.free_dims(t).into_iter().filter(|k| r.dim(*k).list.is_some() && !r.dim(*k).paren).collect();
+    let catalogue = if let [a, b, c] = list.as_slice() {
+        let v = [r.dim(*a).mm, r.dim(*b).mm, r.dim(*c).mm];
+        for k in [a, b, c] {
+            r.used_dims[*k] = true;
+        }
+        for i in 0..r.doc.len() {
+            if (matches!(r.doc.word(i), Some("web" | "flange" | "thickness" | "x")) || r.doc.sym(i, 'x'))
+                && r.doc.depth[i] > 0
+            {
+                r.doc.mark(i);
+            }
+        }
+        Some(v)
+    } else {
+        None
+    };
     let (len, axis) = length(r, t)?;
-    let w = need(r.take(t, &[Role::Width], &[], &[]), "width", r, t)?;
-    let h = need(r.take(t, &[Role::Height], &[], &[]), "height", r, t)?;
-    let tw = piece(r, t, "wall", &[Role::Thickness]).or_else(|| r.take(t, &[Role::Thickness], &[], &["base"]));
-    let tw = need(tw, "wall thickness", r, t)?;
-    let tb = piece(r, t, "base", &[Role::Thickness]).unwrap_or(tw);
+    let (w, h, tw, tb) = if let Some([w, h, th]) = catalogue {
+        (w, h, th, th)
+    } else {
+        let w = need(r.take(t, &[Role::Width], &[], &[]), "width", r, t)?;
+        let h = need(r.take(t, &[Role::Height], &[], &[]), "height", r, t)?;
+        let tw = piece(r, t, "wall", &[Role::Thickness]).or_else(|| r.take(t, &[Role::Thickness], &[], &["base"]));
+        let tw = need(tw, "wall thickness", r, t)?;
+        let tb = piece(r, t, "base", &[Role::Thickness]).unwrap_or(tw);
+        (w, h, tw, tb)
+    };
     if 2.0 * tw >= w || tb >= h {
         return Err(Refusal::new(r.quote_element(t), "its walls do not fit its width and height"));
     }
@@ -223,7 +247,65 @@ fn rect_tube(r: &mut Reader<'_>, t: usize) -> Res<()> {
 
 /// An L of a wall and a base, each given as a box: the base runs from the inside corner
 /// along +Y, the wall stands behind the corner (at −Y of it) and rises along +Z.
+/// An angle section by its legs and thickness ("equal angle 50 x 50 x 6, 1 m length",
+/// "60 by 40 legs, 6 mm thick, 250 long", "3 in and 2 in legs, 1/4 in plate, 2 in wide"):
+/// the L of two legs (outside sizes) and its thickness, extruded along its length.
+fn angle(r: &mut Reader<'_>, t: usize) -> Res<bool> {
+    let dims = r.free_dims(t);
+    let list: Vec<usize> =
+        dims.iter().copied().filter(|k| r.dim(*k).list.is_some() && r.dim(*k).role == Role::Bare).collect();
+    let legs: Vec<usize> = dims.iter().copied().filter(|k| r.dim(*k).has("leg") && !list.contains(k)).collect();
+    let (a, b, mut th) = match (list.as_slice(), legs.as_slice()) {
+        ([a, b, c], _) => (*a, *b, Some(r.dim(*c).mm)),
+        ([a, b], _) => (*a, *b, None),
+        ([], [a, b]) => (*a, *b, None),
+        _ => return Ok(false),
+    };
+    let (la, lb) = (r.dim(a).mm, r.dim(b).mm);
+    if th.is_none() {
+        th = r.take(t, &[Role::Thickness], &[], &["wall"]);
+    } else if let [_, _, c] = list.as_slice() {
+        r.used_dims[*c] = true;
+    }
+    let th = need(th, "thickness", r, t)?;
+    let len = r.take(t, &[Role::Length], &[], &[]).or_else(|| r.take(t, &[Role::Width], &[], &[]));
+    let len = need(len, "length", r, t)?;
+    if th >= la.min(lb) {
+        return Err(Refusal::new(r.quote_element(t), "its thickness does not fit its legs"));
+    }
+    r.used_dims[a] = true;
+    r.used_dims[b] = true;
+    let pts = vec![[0.0, 0.0], [la, 0.0], [la, th], [th, th], [th, lb], [0.0, lb]];
+    let bi = r.model.adds.len();
+    r.model.adds.push(Body::new(
+        "angle",
+        Shape::Prism { profile: Profile::Poly(pts), axis: Axis::Z, at: [0.0, 0.0], rot: 0.0, from: 0.0, to: len },
+    ));
+    r.known.extend([th, la - th, lb - th]);
+    r.built[t] = Some(Built {
+        axis: Axis::Z,
+        span: [0.0, len],
+        at: vec![[0.0, 0.0]],
+        od: None,
+        id: None,
+        size: Some([la, lb]),
+        bodies: vec![bi],
+        cut: false,
+    });
+    r.mark_element(t);
+    mark_pieces(r, &["leg", "plate"]);
+    for i in 0..r.doc.len() {
+        if matches!(r.doc.word(i), Some("leg" | "outside" | "equal" | "unequal" | "each")) {
+            r.doc.mark(i);
+        }
+    }
+    Ok(true)
+}
+
 fn l_bracket(r: &mut Reader<'_>, t: usize) -> Res<()> {
+    if angle(r, t)? {
+        return Ok(());
+    }
     let walls = r.elements_named("wall");
     let bases = r.elements_named("base");
     let (Some(&wl), Some(&bs)) = (walls.first(), bases.first()) else {

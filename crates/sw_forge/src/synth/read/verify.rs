@@ -121,15 +121,40 @@ fn approx_near(r: &Reader<'_>, tok: usize) -> bool {
         .any(|i| matches!(r.doc.word(i), Some("approximately" | "about" | "approx" | "roughly" | "around" | "nearly")))
 }
 
+/// Distances that place things on the finished part: from each side of the part to each
+/// body's and cut's sides and centre, and to each copy's centre.
+fn placements(r: &Reader<'_>) -> Vec<f64> {
+    let b = r.model.bounds();
+    let mut v = Vec::new();
+    for body in r.model.adds.iter().chain(r.model.cuts.iter()) {
+        let q = body.bounds();
+        for k in 0..3 {
+            for x in [q[0][k], q[1][k], (q[0][k] + q[1][k]) / 2.0] {
+                v.extend([(x - b[0][k]).abs(), (b[1][k] - x).abs(), (x - (b[0][k] + b[1][k]) / 2.0).abs()]);
+            }
+        }
+    }
+    for built in r.built.iter().flatten() {
+        for p in &built.at {
+            v.extend([p[0] - b[0][0], b[1][0] - p[0], p[1] - b[0][1], b[1][1] - p[1], p[0].abs(), p[1].abs()]);
+        }
+    }
+    v
+}
+
 pub fn check(r: &mut Reader<'_>) -> Res<()> {
     let d = r.doc;
     let lens = lengths(r);
+    let places = placements(r);
     // Lengths not used.
     for k in 0..d.dims.len() {
         let dm = &d.dims[k];
         if !r.used_dims[k] {
             let tol = if approx_near(r, dm.tok) { 0.02 } else { 0.005 };
-            if !lens.iter().any(|c| close(dm.mm, *c, tol)) {
+            // A length that places something ("30 above the base", "10 from the edges")
+            // restates only a place on the part, not any size it has.
+            let candidates = if dm.role == super::super::doc::Role::Inset { &places } else { &lens };
+            if !candidates.iter().any(|c| close(dm.mm, *c, tol)) {
                 if std::env::var_os("SW_SYNTH_DEBUG").is_some() {
                     eprintln!("unplaced length {} ({:?}); candidates {lens:?}", dm.mm, dm.role);
                 }
@@ -149,7 +174,11 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
         }
         for i in dm.phrase.0..dm.phrase.1.min(d.len()) {
             if let Some(w) = d.word(i)
-                && (role_of(w).is_some() || QUALS.contains(&w) || is_filler(w) || matches!(w, "x" | "y" | "z"))
+                && (role_of(w).is_some()
+                    || QUALS.contains(&w)
+                    || is_filler(w)
+                    || matches!(w, "x" | "y" | "z")
+                    || (w == "square" && (dm.role == super::super::doc::Role::Side || dm.has("square"))))
             {
                 d.mark(i);
             }
@@ -235,8 +264,26 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                         x.prep.as_deref().is_some_and(|p| p != "with")
                             || (x.definite && x.prep.as_deref() != Some("with"))
                     });
+                    // "no chamfers", "without a hole": said not to be there, and not made.
+                    let negated = m.iter().all(|mi| {
+                        let x = &r.mentions[*mi];
+                        x.start > 0 && matches!(d.word(x.start - 1), Some("no" | "without" | "not"))
+                    });
+                    if negated {
+                        r.mark_element(e);
+                        continue;
+                    }
+                    // Or the shape of a thing made ("what a hexagon gives" of a hex bar).
+                    let shape = match r.els[e].kind {
+                        Noun::Body(h) if r.els[e].dims.is_empty() => Some(h),
+                        _ => None,
+                    };
                     let same_noun_made = (0..r.els.len()).any(|o| {
-                        o != e && r.done[o] && (r.els[o].noun == r.els[e].noun || r.els[o].has_mod(&r.els[e].noun))
+                        o != e
+                            && r.done[o]
+                            && (r.els[o].noun == r.els[e].noun
+                                || r.els[o].has_mod(&r.els[e].noun)
+                                || (shape.is_some() && r.built[o].is_some() && r.shape_of(o) == shape))
                     });
                     if referenced
                         || same_noun_made
@@ -316,13 +363,58 @@ pub fn check(r: &mut Reader<'_>) -> Res<()> {
                 || matches!(w.as_str(), "x" | "y" | "z" | "xy" | "xz" | "yz" | "degree" | "mm")
         }
         Tk::Sym(_) => true,
-        Tk::Num { unit: None, .. } => true,
+        // A number without a unit is read only as a count ("4x", "six holes", "16 teeth")
+        // or an enumeration "(1)"; any other is a size that was not read.
+        Tk::Num { unit: None, .. } => is_count(d, i),
         _ => false,
     });
+    // "… for the cable", "for weld clearance": what the part is for, no geometry.
+    let runs: Vec<(usize, usize)> = runs
+        .into_iter()
+        .filter(|(a, b)| {
+            let mut p = *a;
+            while p > 0 && matches!(d.word(p - 1), Some("the" | "a" | "an")) {
+                p -= 1;
+            }
+            let purpose = p > 0 && d.is(p - 1, "for");
+            !(purpose && (*a..=*b).all(|i| d.word(i).is_some()))
+        })
+        .collect();
     if let Some((a, b)) = runs.first() {
         return Err(Refusal::new(d.quote(*a, *b), "the synthesizer does not know what these words ask for"));
     }
     Ok(())
+}
+
+/// Whether the unitless number at `i` counts something: before "x", before the noun it
+/// counts (past fillers and labels: "6 equally spaced holes"), or numbering an item "(1)".
+fn is_count(d: &super::super::doc::Doc, i: usize) -> bool {
+    if d.sym(i + 1, 'x') || (i > 0 && d.sym(i - 1, '=')) || (i > 0 && d.sym(i - 1, '(') && d.sym(i + 1, ')')) {
+        return true;
+    }
+    // The counted noun follows, past words of its own phrase only ("6 equally spaced
+    // holes", "4 M6 clearance holes"), never past a preposition ("30 above the base").
+    for j in i + 1..(i + 5).min(d.len()) {
+        match (d.word(j), &d.toks[j].kind) {
+            (Some(w), _) if super::super::lexicon::noun(w).is_some() => return true,
+            (
+                Some(
+                    "tooth" | "vertex" | "point" | "side" | "sided" | "per" | "row" | "time" | "spoke" | "step"
+                    | "turn",
+                ),
+                _,
+            ) => {
+                return true;
+            }
+            (Some(w), _)
+                if super::super::lexicon::shape_adjective(w).is_some()
+                    || super::super::mention::LABELS.contains(&w)
+                    || matches!(w, "metric" | "equally" | "evenly" | "spaced" | "whole" | "more" | "identical") => {}
+            (None, Tk::Num { .. } | Tk::Sym('-')) => {}
+            _ => return false,
+        }
+    }
+    false
 }
 
 /// Nouns that, said of a made part, name a place on it rather than a new body.

@@ -1,0 +1,260 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! Families of wordings: the same part said in the manners engineers write it (drawing
+//! notes, shop shorthand, catalogue lines, forum questions, British English, inches),
+//! generated over several sizes, must read as one part whose size and volume are worked out
+//! here by closed formulas; words that only say again what was said add nothing; words that
+//! contradict each other are refused with them. Pure Rust (no CadQuery): what the forge
+//! promises is checked against the executed code by `bench cad` and `tests/synth.rs`.
+//!
+//! A failure prints what each stage made of the words — the lengths with their roles
+//! (`doc`), the things they belong to (`mention`), the second reading (`takeoff`) — so it
+//! says which stage lost the word.
+
+use std::f64::consts::PI;
+
+use sw_forge::synth::doc::Doc;
+use sw_forge::synth::mention;
+use sw_forge::synth::takeoff::Takeoff;
+use sw_forge::synth::{SynthError, Synthesis, synthesize};
+
+/// What each stage read of a prompt.
+fn stages(prompt: &str) -> String {
+    let d = Doc::new(prompt);
+    let mut s = String::from("  doc (lengths, roles, qualifiers):\n");
+    for x in &d.dims {
+        s.push_str(&format!("    {} mm {:?} {:?} list {:?}\n", x.mm, x.role, x.quals, x.list));
+    }
+    s.push_str("  mention (things and their lengths):\n");
+    let (_, els) = mention::read(&d);
+    for e in &els {
+        let mm: Vec<f64> = e.dims.iter().map(|k| d.dims[*k].mm).collect();
+        s.push_str(&format!("    {} {:?} shape {:?} count {:?} {mm:?}\n", e.noun, e.kind, e.shape, e.count));
+    }
+    s.push_str("  takeoff (the second reading):\n");
+    let t = Takeoff::read(&d);
+    for (k, th) in t.things.iter().enumerate() {
+        s.push_str(&format!("    {} {:?} {:?}\n", th.noun, th.kind, t.solid(k)));
+    }
+    s
+}
+
+fn sorted(mut v: [f64; 3]) -> [f64; 3] {
+    v.sort_by(f64::total_cmp);
+    v
+}
+
+/// The prompt reads as a part of these extents (any order) and this volume.
+fn made(prompt: &str, size: [f64; 3], volume: f64) -> Result<(), String> {
+    let s: Synthesis = synthesize(prompt).map_err(|e| format!("{prompt}\n  refused: {e}\n{}", stages(prompt)))?;
+    let (a, b) = (sorted(s.size), sorted(size));
+    let size_ok = a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1e-3 * y.max(1.0));
+    let vol_ok = s.volume.is_none_or(|v| (v - volume).abs() <= 1e-3 * volume);
+    if size_ok && vol_ok {
+        Ok(())
+    } else {
+        Err(format!(
+            "{prompt}\n  made {:?} ({:?} mm³), the words say {size:?} ({volume:.1} mm³)\n{}",
+            s.size,
+            s.volume,
+            stages(prompt)
+        ))
+    }
+}
+
+/// The prompt is refused, quoting one of these words.
+fn refused(prompt: &str, words: &[&str]) -> Result<(), String> {
+    match synthesize(prompt) {
+        Err(SynthError::Unread { phrase, .. }) if words.iter().any(|w| phrase.contains(w)) => Ok(()),
+        other => {
+            Err(format!("{prompt}\n  expected a refusal quoting one of {words:?}, got {other:?}\n{}", stages(prompt)))
+        }
+    }
+}
+
+fn check(results: Vec<Result<(), String>>) {
+    let failed: Vec<String> = results.into_iter().filter_map(Result::err).collect();
+    assert!(failed.is_empty(), "{} of the family failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+fn tube(od: f64, id: f64, l: f64) -> f64 {
+    PI / 4.0 * (od * od - id * id) * l
+}
+
+#[test]
+fn a_tube_by_its_diameters_and_length() {
+    let mut r = Vec::new();
+    for (od, id, l) in [(42.0, 36.0, 120.0), (50.0, 40.0, 100.0), (25.0, 19.0, 300.0)] {
+        let w = (od - id) / 2.0;
+        for p in [
+            format!("{od} OD x {id} ID x {l} long tube"),
+            format!("{od} OD x {id} ID x {l} LG TUBE"),
+            format!("Tube, {od} mm OD, {id} mm ID, {l} mm long"),
+            format!("{l} long tube, OD {od}, ID {id}"),
+            format!("tube Ø{od} x {l} lg, {w} wall"),
+            format!("A length of tube, {od} outside diameter and {w} wall, {l} long."),
+            format!("how do I make a hollow cylinder? {od} outside diameter, {id} inside, {l} tall"),
+        ] {
+            r.push(made(&p, [od, od, l], tube(od, id, l)));
+        }
+    }
+    // In inches: the same tube.
+    r.push(made("1.5 in OD x 1.25 in ID x 4 in long tube", [38.1, 38.1, 101.6], tube(38.1, 31.75, 101.6)));
+    r.push(made("1-1/2\" OD x 1-1/4\" ID x 4\" long tube", [38.1, 38.1, 101.6], tube(38.1, 31.75, 101.6)));
+    check(r);
+}
+
+#[test]
+fn a_bar_or_pin_by_diameter_and_length_with_chamfered_ends() {
+    let mut r = Vec::new();
+    for (d, l, c) in [(20.0, 50.0, 1.0), (25.0, 60.0, 0.5), (12.0, 40.0, 1.0)] {
+        let rr = d / 2.0;
+        let one_end = 2.0 * PI * (rr - c / 3.0) * (c * c / 2.0);
+        let v = PI * rr * rr * l - 2.0 * one_end;
+        for p in [
+            format!("Ø{d} x {l} pin, {c}x45° chamfer both ends"),
+            format!("pin Ø{d} x {l} lg, {c}x45 chfr both ends"),
+            format!("{d} mm diameter pin, {l} mm long, with a {c} mm x 45° chamfer on each end"),
+            format!("Ø{d} x {l} pin with a {c} x 45° chamfer on each end. Both ends chamfered, same size, {c} mm."),
+        ] {
+            r.push(made(&p, [d, d, l], v));
+        }
+        // At one end only (either end gives the same part).
+        for p in [
+            format!("A rod {d} mm in diameter and {l} mm long with a {c} mm chamfer at one end."),
+            format!("Ø{d} x {l} pin, {c}x45° chamfer one end"),
+        ] {
+            r.push(made(&p, [d, d, l], PI * rr * rr * l - one_end));
+        }
+        for p in [
+            format!("rd bar Ø{d} x {l} lg"),
+            format!("{d}\u{2300} x {l} long round bar"),
+            format!("A {d} mm round bar, {l} long."),
+        ] {
+            r.push(made(&p, [d, d, l], PI * rr * rr * l));
+        }
+    }
+    check(r);
+}
+
+#[test]
+fn a_plate_with_a_hole_at_each_corner() {
+    let mut r = Vec::new();
+    for (a, b, t, h, i) in [(100.0, 60.0, 8.0, 6.6, 10.0), (150.0, 100.0, 10.0, 11.0, 15.0)] {
+        let v = a * b * t - 4.0 * PI * h * h / 4.0 * t;
+        for p in [
+            format!("PLATE {a} x {b} x {t}, 4X Ø{h} THRU, {i} FROM EDGES"),
+            format!("plt {a}x{b}x{t}, 4x Ø{h} thru {i} from edges"),
+            format!("A {a} x {b} x {t} plate with four {h} mm holes, {i} mm from each edge at the corners"),
+            format!("a {a} x {b} x {t} mm plate with a {h} mm hole {i} mm in from each corner (four holes)"),
+            format!("PLATE {a} x {b} x {t}, 4X Ø{h} THRU ON {} x {} CENTRES", a - 2.0 * i, b - 2.0 * i),
+            format!(
+                "A {a} by {b} by {t} plate with four {h} mm holes on a {} by {} rectangle",
+                a - 2.0 * i,
+                b - 2.0 * i
+            ),
+        ] {
+            r.push(made(&p, [a, b, t], v));
+        }
+    }
+    check(r);
+}
+
+#[test]
+fn polygonal_bars_across_flats_and_corners() {
+    let mut r = Vec::new();
+    for (af, l) in [(22.0, 40.0), (17.0, 30.0), (19.0, 60.0)] {
+        let ac = af / (PI / 6.0).cos();
+        let v = 3.0 * 3f64.sqrt() / 2.0 * (ac / 2.0).powi(2) * l;
+        for p in [
+            format!("hex {af} A/F x {l} lg"),
+            format!("Hex bar {af} across flats, {l} long"),
+            format!("A hexagonal bar {af} mm across the flats and {l} mm long"),
+            format!("Hex bar {af} across flats, {l} long. Across the corners it is what a hexagon gives."),
+        ] {
+            r.push(made(&p, [ac, af, l], v));
+        }
+    }
+    // An octagon given across its flats lies on a flat: across flats both ways.
+    let (af, l) = (30.0, 60.0);
+    let side = af * (PI / 8.0).tan();
+    r.push(made(&format!("An octagonal bar {af} across flats and {l} long."), [af, af, l], 2.0 * af * side * l));
+    check(r);
+}
+
+#[test]
+fn words_that_say_again_what_was_said_add_nothing() {
+    let mut r = Vec::new();
+    for (x, y, z) in [(80.0, 40.0, 20.0), (50.0, 30.0, 20.0)] {
+        let base = format!("A block {x} x {y} x {z}.");
+        for again in [
+            String::new(),
+            format!(" It is {x} long, {y} wide and {z} thick."),
+            " One block, lying flat.".to_string(),
+            format!(" The block is {z} mm thick."),
+            format!(" Its length is {x} and its width {y}."),
+        ] {
+            r.push(made(&format!("{base}{again}"), [x, y, z], x * y * z));
+        }
+    }
+    for (d, l) in [(30.0, 60.0), (20.0, 45.0)] {
+        let v = PI * d * d / 4.0 * l;
+        for again in ["", " Its diameter is {d} and its length {l}.", " A single cylinder, standing upright."] {
+            let again = again.replace("{d}", &d.to_string()).replace("{l}", &l.to_string());
+            r.push(made(
+                &format!("A cylinder {d} mm in diameter and {l} mm long, with its axis along Z.{again}"),
+                [d, d, l],
+                v,
+            ));
+        }
+    }
+    check(r);
+}
+
+#[test]
+fn words_that_contradict_each_other_are_refused_with_them() {
+    let mut r = Vec::new();
+    for (a, b) in [(50.0, 40.0), (30.0, 25.0)] {
+        r.push(refused(&format!("A {a} mm cube, {a} x {a} x {b}."), &[&b.to_string()]));
+    }
+    for (od, id) in [(10.0, 12.0), (20.0, 25.0)] {
+        r.push(refused(&format!("Washer {od} OD, {id} ID, 2 thick."), &[&id.to_string()]));
+    }
+    for (od, w, id) in [(30.0, 3.0, 26.0), (50.0, 5.0, 30.0)] {
+        r.push(refused(&format!("Tube {od} OD, {w} wall, {id} ID, 50 long."), &["wall", "ID"]));
+    }
+    for (d, t) in [(25.0, 20.0), (30.0, 12.0)] {
+        r.push(refused(&format!("Blind hole Ø8 x {d} dp in a 60 x 60 x {t} plate."), &["Blind hole", &d.to_string()]));
+    }
+    for (pin, hole) in [(20.0, 25.0), (10.0, 10.0)] {
+        r.push(refused(&format!("Ø{pin} x 60 pin with a Ø{hole} cross hole through the middle."), &["cross hole"]));
+    }
+    check(r);
+}
+
+#[test]
+fn screw_sizes_read_as_clearance_holes_or_tap_drills() {
+    // ISO 273 medium clearance and ISO coarse tap drills.
+    let mut r = Vec::new();
+    for (m, clear, tap) in [(4.0, 4.5, 3.3), (5.0, 5.5, 4.2), (6.0, 6.6, 5.0), (8.0, 9.0, 6.8)] {
+        let disc = PI * 20.0 * 20.0 * 10.0;
+        for (p, h) in [
+            (format!("Ø40 x 10 disc, M{m} clearance hole thru ctr"), clear),
+            (format!("Ø40 x 10 disc, M{m} clr thru ctr"), clear),
+            (format!("Ø40 x 10 disc, M{m} tapped thru ctr"), tap),
+        ] {
+            r.push(made(&p, [40.0, 40.0, 10.0], disc - PI * h * h / 4.0 * 10.0));
+        }
+    }
+    check(r);
+}
+
+#[test]
+fn a_part_of_a_catalog_object_is_never_the_whole_object() {
+    for p in ["a lamp shade", "a table leg", "a chair back", "a mug handle"] {
+        match sw_forge::freeform::offline(p) {
+            Err(SynthError::Unread { reason, .. }) => assert!(reason.contains("part of"), "{p}: {reason}"),
+            Err(e) => panic!("{p}: {e}"),
+            Ok(_) => panic!("{p}: made an object for a part of one"),
+        }
+    }
+}
