@@ -265,11 +265,15 @@ async function main() {
     assert(panel.includes('rests on') && panel.includes('size'), `the panel: ${panel}`);
     // F frames the selected object: the camera turns about it; Reset view goes back.
     const cam0 = await page.evaluate(() => window.__sw.camera());
+    // Keys go to the page, not to a focused button (Space presses a focused button).
+    await page.evaluate(() => document.activeElement?.blur?.());
     await page.keyboard.press('f');
     const cam1 = await page.evaluate(() => window.__sw.camera());
-    const tgt = await page.evaluate((n) => window.__sw.bodyPosition(n), target.name);
+    // About the middle of the object: its origin is at its foot, half its height below.
+    const foot = await page.evaluate((n) => window.__sw.bodyPosition(n), target.name);
+    const tgt = [foot[0], foot[1], foot[2] + target.size[2] / 2];
     const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-    assert(dist(cam1.target, tgt) < 0.6, `F framed around ${cam1.target}, the object is at ${tgt}`);
+    assert(dist(cam1.target, tgt) < 0.25, `F framed around ${cam1.target}, the object's middle is at ${tgt}`);
     assert(dist(cam1.position, cam1.target) < dist(cam0.position, cam0.target), 'F moved the camera closer');
     await page.click('#reset-view');
     const cam2 = await page.evaluate(() => window.__sw.camera());
@@ -279,6 +283,8 @@ async function main() {
     const posesNow = () =>
       page.evaluate(() => Object.fromEntries(window.__sw.bodies().slice(1).map((n) => [n, window.__sw.bodyPosition(n)])));
     const atHome = await posesNow();
+    // (The Reset view button has the focus: Space would press it.)
+    await page.evaluate(() => document.activeElement?.blur?.());
     await page.keyboard.press(' ');
     await page.waitForFunction(() => /t = (0\.[7-9]|[1-9])/.test(document.getElementById('clock').textContent), null, { timeout: 30_000 });
     await shot(page, '04-scene-viewer');
@@ -302,6 +308,7 @@ async function main() {
     // --- Delete removes the selected object (an edit: a new version) ---
     await page.mouse.click(at.x, at.y);
     await page.locator(`#object-panel[data-object="${target.name}"]`).waitFor();
+    await page.evaluate(() => document.activeElement?.blur?.());
     await page.keyboard.press('Delete');
     const v2 = await waitForNewScene(page, sceneId);
     const layout2 = (await api(server, token, 'GET', `/api/scenes/${v2}/files/layout.json`)).json;
@@ -496,6 +503,18 @@ async function main() {
     const cA = check(mj, 'the anomaly scene', readZip(Buffer.from(await zipA.arrayBuffer())), 10);
     assert(cA.ok, `the anomaly scene in MuJoCo 3.14: ${cA.error}`);
 
+    // --- Variations: one request, a job per seed, one card with a row per seed ---
+    const varied = (await api(server, token, 'POST', '/api/jobs', { prompt: 'a small office with a desk and a chair', seed: 11, variations: 2 })).json;
+    assert(varied.job_ids.length === 2, `variations: ${JSON.stringify(varied)}`);
+    for (const j of varied.job_ids) {
+      for (let k = 0; k < 600; k++) {
+        const st = (await api(server, token, 'GET', `/api/jobs/${j}`)).json.state;
+        if (st === 'succeeded') break;
+        assert(st !== 'failed' && st !== 'cancelled', `variation job ${j}: ${st}`);
+        await new Promise((r) => setTimeout(r, 200));
+      }
+    }
+
     // --- My scenes: one card per description, its versions under it; search; delete ---
     page.on('dialog', (d) => void d.accept());
     await page.click('a[href="/scenes"]');
@@ -511,6 +530,8 @@ async function main() {
     assert((await labCard.locator('.variation').count()) === 1, 'the lab is one variation');
     const labRow = await labCard.locator('.variation').innerText();
     assert(/5 versions/.test(labRow) && /seed 0/.test(labRow) && /v5/.test(labRow), `the lab's row: ${labRow}`);
+    const officeRows = await page.locator('.scene-card', { hasText: 'a small office with a desk' }).locator('.variation').allInnerTexts();
+    assert(officeRows.length === 2 && /seed 11/.test(officeRows[0]) && /seed 12/.test(officeRows[1]), `the office's variations: ${officeRows}`);
     await shot(page, '08-my-scenes');
     await page.fill('#scene-search', 'storage room');
     await page.waitForFunction(() => document.querySelectorAll('.scene-card').length === 1);

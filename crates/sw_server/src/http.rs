@@ -7,7 +7,9 @@
 //! - Shutdown stops accepting, lets requests in flight finish for a grace period, then
 //!   drops what is left (an open WebSocket included).
 //! - Every answer carries a Content-Security-Policy (scripts, workers and WebAssembly from
-//!   this origin only, no framing), `X-Content-Type-Options: nosniff` and no referrer.
+//!   this origin only, no string evaluation, no framing; the simulation worker's script
+//!   alone may evaluate strings, which MuJoCo's WebAssembly bindings need),
+//!   `X-Content-Type-Options: nosniff` and no referrer.
 
 use std::convert::Infallible;
 use std::net::{IpAddr, SocketAddr};
@@ -119,11 +121,21 @@ const CSP: &str = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; wor
     connect-src 'self'; img-src 'self' blob: data:; style-src 'self' 'unsafe-inline'; object-src 'none'; \
     base-uri 'none'; form-action 'self'; frame-ancestors 'none'";
 
+/// The simulation worker's own policy (a dedicated worker runs under the policy its script
+/// is served with): MuJoCo's WebAssembly glue (Emscripten's embind) builds its bindings
+/// with `Function(…)`, so that script alone may evaluate strings; the pages may not.
+const WORKER_CSP: &str = "default-src 'self'; script-src 'self' 'unsafe-eval' 'wasm-unsafe-eval'; \
+    connect-src 'self'; object-src 'none'; base-uri 'none'";
+
 /// Adds the security headers to every answer.
 pub async fn security_headers(req: Request, next: Next) -> Response {
+    let worker = {
+        let path = req.uri().path();
+        path.starts_with("/assets/") && path.contains(".worker") && path.ends_with(".js")
+    };
     let mut r = next.run(req).await;
     let h = r.headers_mut();
-    h.insert(header::CONTENT_SECURITY_POLICY, HeaderValue::from_static(CSP));
+    h.insert(header::CONTENT_SECURITY_POLICY, HeaderValue::from_static(if worker { WORKER_CSP } else { CSP }));
     h.insert(header::X_CONTENT_TYPE_OPTIONS, HeaderValue::from_static("nosniff"));
     h.insert(header::X_FRAME_OPTIONS, HeaderValue::from_static("DENY"));
     h.insert(header::REFERRER_POLICY, HeaderValue::from_static("no-referrer"));

@@ -254,9 +254,9 @@ async fn run_job(state: &AppState, claim: Claim, work: &Path, stopping: &Arc<Ato
     heartbeat.abort();
 
     if stopping.load(Ordering::Relaxed) {
-        // The process is stopping: the job runs again in the next one (unless it finished).
-        let finished = matches!(&result, Ok(_)) && !lost.load(Ordering::Relaxed);
-        if !finished {
+        // The process is stopping: a job its pipeline did not finish runs again in the next
+        // one (a finished one is stored below, as usual).
+        if result.is_err() {
             match state.store.release(&claim, "the server stopped while it ran; it runs again").await {
                 Ok(true) => {
                     tracing::info!("job given back to the queue");

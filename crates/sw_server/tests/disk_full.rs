@@ -121,7 +121,14 @@ async fn writes_recover_when_the_disk_has_room_again() {
     };
     acknowledged.push(key);
     let (s, _, v) = http(addr, "GET", "/healthz", None, None).await;
-    assert_eq!(s, 200, "{v}");
+    if s != 200 {
+        let probes: Vec<String> = futures_util::future::join_all((0..20).map(|_| a.state.store.probe_write()))
+            .await
+            .into_iter()
+            .map(|r| format!("{r:?}"))
+            .collect();
+        panic!("health after space returned: {v}; 20 write probes: {probes:?}");
+    }
     let (s, _, v) = http(addr, "POST", "/api/jobs", Some(&token), Some(json!({"prompt": "a lab with a table"}))).await;
     assert_eq!(s, 202, "{v}");
     let job_after = v["job_id"].as_str().unwrap().to_string();

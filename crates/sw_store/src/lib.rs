@@ -82,6 +82,23 @@ impl StoreError {
 
 pub type Result<T> = std::result::Result<T, StoreError>;
 
+/// Whether a SQLite connection back from use may serve the next caller: it is in no
+/// transaction. A write that failed for want of space can leave one open — SQLite keeps a
+/// transaction whose COMMIT failed with SQLITE_FULL, or ends one itself while sqlx still
+/// counts it — and such a connection holds an old snapshot and its lock: every later write
+/// through it, or anyone else's, answers "database is locked" until the process restarts.
+/// A connection that cannot start a transaction of its own is closed instead (the pool
+/// opens a fresh one).
+async fn sqlite_connection_is_clean(conn: &mut sqlx::AnyConnection) -> bool {
+    if conn.is_in_transaction() {
+        return false;
+    }
+    if sqlx::query("BEGIN").execute(&mut *conn).await.is_err() {
+        return false;
+    }
+    sqlx::query("ROLLBACK").execute(&mut *conn).await.is_ok()
+}
+
 /// Which database a store is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Backend {
@@ -135,6 +152,14 @@ impl Store {
                         }
                     }
                     Ok(())
+                })
+            })
+            .after_release(move |conn, _| {
+                Box::pin(async move {
+                    if backend != Backend::Sqlite {
+                        return Ok(true);
+                    }
+                    Ok(sqlite_connection_is_clean(conn).await)
                 })
             })
             .connect(url)

@@ -126,7 +126,7 @@ export const sceneView: View = (root, params, query) => {
     playBtn,
     h('button', { id: 'step', text: 'Step', title: 'one step (.)', on: { click: step } }),
     h('button', { id: 'reset', text: 'Reset to home', title: 'reset to the home keyframe (R)', on: { click: reset } }),
-    h('button', { id: 'frame', text: '⌖ Frame', title: 'frame the selected object, or the whole scene (F)', on: { click: frame } }),
+    h('button', { id: 'frame', text: 'Frame', title: 'frame the selected object, or the whole scene (F)', on: { click: frame } }),
     h('button', { id: 'reset-view', text: 'Reset view', title: 'the first view of the whole scene', on: { click: () => viewer.resetCamera() } }),
     speed,
     clock,
@@ -405,6 +405,8 @@ export const sceneView: View = (root, params, query) => {
     if (e.ctrlKey || e.metaKey || e.altKey) return;
     switch (key) {
       case ' ':
+        // Space on a focused button or link presses it, as everywhere.
+        if (t && ['BUTTON', 'A', 'SUMMARY'].includes(t.tagName)) return;
         e.preventDefault();
         togglePlay();
         return;
