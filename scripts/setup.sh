@@ -292,9 +292,13 @@ fi
 
 # --- The USD exporter: mujoco-usd-converter (PyPI) in a venv of its own ---
 # It needs MuJoCo < 3.17 and ships an OpenUSD build that conflicts with usd-core, so it
-# cannot share the tests' venv; `scenewright export` runs it as a subprocess.
+# cannot share the tests' venv; `scenewright export` runs it as a subprocess. With
+# SCENEWRIGHT_USD_VENV=DIR the venv goes there instead of into the checkout (a read-only
+# or shared checkout); `scenewright export` finds it by the same variable.
 if [ "$want_usd" = 1 ]; then
-  pinned_venv "$cache/usd-venv" mujoco-usd-converter 0.8.0 "mujoco-usd-converter==0.8.0" "" \
+  usd_venv="${SCENEWRIGHT_USD_VENV:-$cache/usd-venv}"
+  mkdir -p "$(dirname "$usd_venv")"
+  pinned_venv "$usd_venv" mujoco-usd-converter 0.8.0 "mujoco-usd-converter==0.8.0" "" \
     "the USD exporter" "mujoco==3.16.0" "usd-exchange==3.0.1"
 fi
 

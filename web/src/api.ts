@@ -74,7 +74,7 @@ async function call(method: string, path: string, opts: Options = {}): Promise<R
   const t = session.token();
   if (opts.auth !== false) {
     if (!t) {
-      session.expire('Sign in to continue.');
+      session.expire('signin');
       throw new ApiError(401, 'you are not signed in');
     }
     headers.authorization = `Bearer ${t}`;
@@ -86,7 +86,7 @@ async function call(method: string, path: string, opts: Options = {}): Promise<R
   const r = await fetch(path, init);
   if (!r.ok) {
     const err = await errorOf(r);
-    if (r.status === 401 && opts.auth !== false) session.expire(`Your session ended: ${err.message}.`);
+    if (r.status === 401 && opts.auth !== false) session.expire(session.reasonOf(err.message));
     throw err;
   }
   return r;
@@ -103,9 +103,17 @@ export async function register(username: string, password: string): Promise<User
   return decodeUser(await json('POST', '/api/auth/register', { body: { username, password }, auth: false }));
 }
 
-export async function login(username: string, password: string): Promise<string> {
+/** Signs in: the token, and the user name as registered (names are one whatever their case). */
+export async function login(username: string, password: string): Promise<{ token: string; username: string }> {
   const o = obj(await json('POST', '/api/auth/login', { body: { username, password }, auth: false }), 'login');
-  return str(o, 'token', 'login');
+  return { token: str(o, 'token', 'login'), username: optStr(o, 'username') ?? username };
+}
+
+/** Signs out on the server too: the token stops working now (best effort; the page forgets it either way). */
+export async function logout(): Promise<void> {
+  const t = session.token();
+  if (!t) return;
+  await fetch('/api/auth/logout', { method: 'POST', headers: { authorization: `Bearer ${t}` } }).catch(() => undefined);
 }
 
 export async function me(): Promise<User> {
@@ -114,6 +122,11 @@ export async function me(): Promise<User> {
 
 export async function keys(): Promise<ApiKey[]> {
   return list(obj(await json('GET', '/api/auth/keys'), 'keys'), 'keys', decodeKey);
+}
+
+/** Revokes an API key: it stops working at once. */
+export async function revokeKey(id: string): Promise<void> {
+  await call('DELETE', `/api/auth/keys/${enc(id)}`);
 }
 
 export async function createKey(name: string): Promise<{ key: ApiKey; secret: string }> {
@@ -140,10 +153,15 @@ export interface JobRequest {
   seed?: number;
   robots?: string[];
   options?: { rules?: string; anomaly?: { kinds: string[]; rate: number } };
+  /** Scenes to make, one per seed from `seed` up (queued together, or none). */
+  variations?: number;
 }
 
-export async function submitJob(req: JobRequest): Promise<string> {
-  return str(obj(await json('POST', '/api/jobs', { body: req }), 'job'), 'job_id', 'job');
+/** Queues a request; answers the ids of its jobs (one per variation). */
+export async function submitJob(req: JobRequest): Promise<string[]> {
+  const o = obj(await json('POST', '/api/jobs', { body: req }), 'job');
+  const ids = strList(o, 'job_ids');
+  return ids.length ? ids : [str(o, 'job_id', 'job')];
 }
 
 export async function job(id: string): Promise<Job> {
@@ -160,6 +178,11 @@ export async function cancelJob(id: string): Promise<Job> {
 
 export async function scenes(): Promise<SceneSummary[]> {
   return list(obj(await json('GET', '/api/scenes'), 'scenes'), 'scenes', decodeSceneSummary);
+}
+
+/** Deletes a scene with every version of its lineage; answers the ids deleted. */
+export async function deleteScene(id: string): Promise<string[]> {
+  return strList(obj(await json('DELETE', `/api/scenes/${enc(id)}`), 'deleted'), 'deleted');
 }
 
 export async function scene(id: string): Promise<SceneDetail> {

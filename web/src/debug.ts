@@ -22,6 +22,8 @@ export interface Probe {
   renderInfo: () => { geometries: number; textures: number };
   /** The last real-time factor the worker measured while playing. */
   realtime: number;
+  /** Where the viewer's camera is and looks. */
+  camera: () => { position: [number, number, number]; target: [number, number, number] };
 }
 
 declare global {

@@ -1,4 +1,7 @@
-// A small helper for building DOM nodes (the app uses no framework).
+// A small helper for building DOM nodes (the app uses no framework). Text put in through
+// it never carries the controls that reorder a line (see `plain`).
+
+import { plain } from './json';
 
 type Child = Node | string | null | undefined | false;
 
@@ -24,7 +27,7 @@ export function h<K extends keyof HTMLElementTagNameMap>(
 ): HTMLElementTagNameMap[K] {
   const el = document.createElement(tag);
   if (a.class) el.className = a.class;
-  if (a.text !== undefined) el.textContent = a.text;
+  if (a.text !== undefined) el.textContent = plain(a.text);
   if (a.title) el.title = a.title;
   if (a.id) el.id = a.id;
   if (a.href !== undefined) el.setAttribute('href', a.href);
@@ -35,13 +38,20 @@ export function h<K extends keyof HTMLElementTagNameMap>(
   for (const [k, v] of Object.entries(a.data ?? {})) el.dataset[k] = v;
   for (const [k, v] of Object.entries(a.attrs ?? {})) el.setAttribute(k, v);
   for (const [name, fn] of Object.entries(a.on ?? {})) el.addEventListener(name, fn as EventListener);
-  for (const c of children) if (c !== null && c !== undefined && c !== false) el.append(c);
+  for (const c of children) if (c !== null && c !== undefined && c !== false) el.append(typeof c === 'string' ? plain(c) : c);
   return el;
+}
+
+/** Sets an element's text (cleaned as `h` cleans it). */
+export function setText(el: Element, text: string): void {
+  el.textContent = plain(text);
 }
 
 /** Replaces an element's children. */
 export function fill(el: Element, ...children: Child[]): void {
-  el.replaceChildren(...children.filter((c): c is Node | string => c !== null && c !== undefined && c !== false));
+  el.replaceChildren(
+    ...children.filter((c): c is Node | string => c !== null && c !== undefined && c !== false).map((c) => (typeof c === 'string' ? plain(c) : c)),
+  );
 }
 
 /** A message box: `kind` is error, info or ok. */

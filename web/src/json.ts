@@ -10,6 +10,15 @@ export class DecodeError extends Error {
 
 export type Obj = Record<string, unknown>;
 
+/**
+ * Text as the page shows it: without the Unicode controls that reorder what follows them
+ * (bidirectional embeddings, overrides and isolates). A prompt holding U+202E would
+ * otherwise turn the rest of its line, and the page around it, backwards.
+ */
+export function plain(s: string): string {
+  return s.replace(/[\u202A-\u202E\u2066-\u2069]/g, '');
+}
+
 export function isObj(v: unknown): v is Obj {
   return typeof v === 'object' && v !== null && !Array.isArray(v);
 }
@@ -22,12 +31,12 @@ export function obj(v: unknown, what: string): Obj {
 export function str(o: Obj, key: string, what = 'value'): string {
   const v = o[key];
   if (typeof v !== 'string') throw new DecodeError(`${what}.${key}: expected text`);
-  return v;
+  return plain(v);
 }
 
 export function optStr(o: Obj, key: string): string | null {
   const v = o[key];
-  return typeof v === 'string' ? v : null;
+  return typeof v === 'string' ? plain(v) : null;
 }
 
 export function num(o: Obj, key: string, what = 'value'): number {
@@ -71,7 +80,7 @@ export function listLenient<T>(o: Obj, key: string, each: (v: unknown, what: str
 
 export function strList(o: Obj, key: string): string[] {
   const v = o[key];
-  return Array.isArray(v) ? v.filter((x): x is string => typeof x === 'string') : [];
+  return Array.isArray(v) ? v.filter((x): x is string => typeof x === 'string').map(plain) : [];
 }
 
 export function numTuple(o: Obj, key: string, n: number, what = 'value'): number[] {
@@ -84,7 +93,7 @@ export function numTuple(o: Obj, key: string, n: number, what = 'value'): number
 
 export function asStr(v: unknown, what: string): string {
   if (typeof v !== 'string') throw new DecodeError(`${what}: expected text`);
-  return v;
+  return plain(v);
 }
 
 /** A tuple of `n` numbers, or null when the field is missing or not one. */

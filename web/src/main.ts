@@ -2,6 +2,7 @@
 // uncaught failure into a visible message (never a blank page).
 
 import './style.css';
+import * as api from './api';
 import { h } from './dom';
 import { navigate, route, start } from './router';
 import * as session from './session';
@@ -29,8 +30,11 @@ const out = h('button', {
   id: 'signout',
   on: {
     click: () => {
-      session.signOut();
-      navigate('/signin');
+      // The token is revoked on the server, not only forgotten here.
+      void api.logout().finally(() => {
+        session.signOut();
+        navigate('/signin');
+      });
     },
   },
 });

@@ -50,7 +50,8 @@ export function start(root: HTMLElement, changed: (path: string) => void): void 
   session.whenExpired((reason) => {
     const here = location.pathname + location.search;
     if (location.pathname === '/signin') return;
-    navigate(`/signin?next=${encodeURIComponent(here)}&reason=${encodeURIComponent(reason)}`, true);
+    // The address carries a reason code only; the page words it (never text from the URL).
+    navigate(`/signin?next=${encodeURIComponent(here)}&reason=${reason}`, true);
   });
   render();
 }
@@ -89,9 +90,24 @@ function errorBox(e: unknown): HTMLElement {
   return div;
 }
 
-const notFound: View = (root) => {
+/** The page for something that does not exist here (or is not the visitor's). */
+export function notFoundPage(root: HTMLElement, title: string, text: string): void {
   const div = document.createElement('div');
-  div.className = 'page';
-  div.innerHTML = '<h1>Not found</h1><p>There is no page at this address. <a href="/">Start a new scene</a>.</p>';
+  div.className = 'page not-found';
+  div.id = 'not-found';
+  const h1 = document.createElement('h1');
+  h1.textContent = title;
+  const p = document.createElement('p');
+  p.textContent = `${text} `;
+  const mine = document.createElement('a');
+  mine.href = '/scenes';
+  mine.textContent = 'Your scenes';
+  const start = document.createElement('a');
+  start.href = '/';
+  start.textContent = 'describe a new one';
+  p.append(mine, ' · ', start, '.');
+  div.append(h1, p);
   root.append(div);
-};
+}
+
+const notFound: View = (root) => notFoundPage(root, 'Not found', 'There is no page at this address.');

@@ -4,7 +4,31 @@
 const KEY = 'scenewright.token';
 const USER = 'scenewright.user';
 
-type Listener = (reason: string) => void;
+/** Why a session ended, as the sign-in page's address says it (a code, never free text). */
+export type EndReason = 'expired' | 'revoked' | 'signin';
+
+/** The sign-in page's sentence for a reason code; anything else in the address is ignored. */
+export function reasonText(code: string | null): string | null {
+  switch (code) {
+    case 'expired':
+      return 'Your session expired; sign in again.';
+    case 'revoked':
+      return 'Your session was signed out; sign in again.';
+    case 'signin':
+      return 'Sign in to continue.';
+    default:
+      return null;
+  }
+}
+
+/** The reason code for the server's message refusing a token. */
+export function reasonOf(message: string): EndReason {
+  if (/expired/i.test(message)) return 'expired';
+  if (/revoked|signed out/i.test(message)) return 'revoked';
+  return 'signin';
+}
+
+type Listener = (reason: EndReason) => void;
 let onExpired: Listener | null = null;
 
 export function token(): string | null {
@@ -30,7 +54,7 @@ export function whenExpired(l: Listener): void {
   onExpired = l;
 }
 
-export function expire(reason: string): void {
+export function expire(reason: EndReason): void {
   signOut();
   onExpired?.(reason);
 }

@@ -123,6 +123,8 @@ export interface SceneSummary {
   scene_prompt: string;
   status: string;
   created_at: number;
+  /** The seed it was generated with (its variation). */
+  seed: number | null;
 }
 
 export function decodeSceneSummary(v: unknown, what = 'scene'): SceneSummary {
@@ -136,6 +138,7 @@ export function decodeSceneSummary(v: unknown, what = 'scene'): SceneSummary {
     scene_prompt: optStr(o, 'scene_prompt') ?? optStr(o, 'prompt') ?? '',
     status: optStr(o, 'status') ?? 'unknown',
     created_at: optNum(o, 'created_at') ?? 0,
+    seed: optNum(o, 'seed'),
   };
 }
 
@@ -225,7 +228,11 @@ export interface Verification {
   compiled: boolean;
   failures: string[];
   expected: string[];
+  /** Every contact MuJoCo reported at t = 0 (resting things touch). */
   contacts: number | null;
+  /** Contacts between different bodies deeper than `threshold` (m): the finding. */
+  deep: number;
+  threshold: number | null;
   maxDepth: number | null;
   maxDisplacement: number | null;
   worstBody: string | null;
@@ -244,6 +251,8 @@ function decodeVerification(v: unknown): Verification | null {
     failures: strList(v, 'failures'),
     expected: strList(v, 'expected'),
     contacts: optNum(ic, 'contacts'),
+    deep: Array.isArray(ic.deep) ? ic.deep.length : 0,
+    threshold: optNum(ic, 'threshold_m'),
     maxDepth: optNum(ic, 'max_depth_m'),
     maxDisplacement: optNum(st, 'max_displacement_m'),
     worstBody: optStr(st, 'worst_body'),

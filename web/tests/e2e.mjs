@@ -7,6 +7,12 @@
 // in the studio and drag it in → versions and the way back → download the zip and load it
 // with MuJoCo (WASM). Bad input: a dropped socket, a refused edit, a part that cannot be
 // made, an expired token, another user's scene — each a clear message, never a blank page.
+// Issue 22: a double-clicked Generate makes one job; the scene opens when its job ends;
+// the report's contacts; keys (Space, ., F, Delete, Ctrl+Z) and the camera's frame and
+// reset; a cancelled job's heading; another user's job and scene are "not found"; text
+// with direction overrides cannot reorder the page; the sign-in page shows no text from
+// its address; CSP and nosniff on every answer; My scenes grouped, searched and deleted
+// from; an API key revoked; signing out revokes the token; the pages at 390 px.
 // Screenshots of every page go to docs/web/ (SCREENSHOTS=0 skips writing them).
 //
 //   node tests/e2e.mjs          (SCENEWRIGHT_BIN picks the binary; CHROMIUM the browser)
@@ -137,6 +143,19 @@ async function main() {
     const pageErrors = [];
     page.on('pageerror', (e) => pageErrors.push(e.message));
 
+    // --- The sign-in page words its reason itself: text in its address is never shown ---
+    await page.goto(`${server.url}/signin?reason=${encodeURIComponent('Your account is locked: call 555-0100 now')}`);
+    await page.locator('#username').waitFor();
+    assert(!(await page.locator('body').innerText()).includes('555-0100'), 'the sign-in page printed text from its URL');
+    // Every answer carries the security headers (the app's page, an asset, the API).
+    for (const u of ['/', '/api/openapi.json', '/healthz']) {
+      const r = await fetch(`${server.url}${u}`);
+      const csp = r.headers.get('content-security-policy') ?? '';
+      assert(csp.includes("frame-ancestors 'none'") && csp.includes("script-src 'self'"), `${u}: CSP ${csp}`);
+      assert(r.headers.get('x-content-type-options') === 'nosniff', `${u}: no nosniff`);
+    }
+    log('sign-in shows no text from its URL; CSP, nosniff and frame-ancestors on every answer');
+
     // --- A signed-out visitor is sent to sign in, then back ---
     await page.goto(`${server.url}/scenes`);
     await page.waitForURL(/\/signin\?next=%2Fscenes/);
@@ -176,12 +195,23 @@ async function main() {
     assert((await page.inputValue('#prompt')) === final, 'the accepted prompt is in the box');
     log(`refined in ${turns} turn(s): ${final}`);
 
-    // --- Generate with a robot ---
+    // --- Generate with a robot (double-clicked: one job) ---
+    const jobsBefore = (await api(server, token, 'GET', '/api/jobs')).json.jobs.length;
     await page.fill('#prompt', `${final} Six boxes on the workbench and a cabinet.`);
     await page.locator('#robots [data-robot="ur5e"]').click();
-    await page.click('#generate');
+    await page.dblclick('#generate');
     await page.waitForURL(/\/jobs\//);
-    await page.locator('#open-scene').waitFor({ timeout: 120_000 });
+    const firstJob = await page.evaluate(() => location.pathname.split('/')[2]);
+    // Watched to its end, the scene opens by itself.
+    await page.waitForURL(/\/scenes\//, { timeout: 150_000 });
+    await waitReady(page);
+    const jobsAfter = (await api(server, token, 'GET', '/api/jobs')).json.jobs.length;
+    assert(jobsAfter === jobsBefore + 1, `a double click made ${jobsAfter - jobsBefore} jobs`);
+    log('a double-clicked Generate made one job; the scene opened when it was done');
+    // Its job page afterwards: the whole timeline, and a link (no second jump).
+    await page.goto(`${server.url}/jobs/${firstJob}`);
+    await page.locator('#open-scene').waitFor({ timeout: 30_000 });
+    assert((await page.locator('#job-heading').innerText()) === 'The scene is built', 'the heading says it is built');
     for (const s of ['plan', 'forge', 'layout', 'bridge', 'verify']) {
       const cls = await page.locator(`.stage[data-stage="${s}"]`).getAttribute('class');
       assert(cls.includes('done'), `stage ${s} is ${cls}`);
@@ -219,20 +249,50 @@ async function main() {
     assert(stats.colours > 40 && stats.std > 12, `the canvas looks blank: ${JSON.stringify(stats)}`);
     log(`canvas: ${stats.colours} colours, luminance σ ${stats.std.toFixed(1)}; at ${target.name} ${stats.at[0]} vs corner ${stats.at[1]}`);
 
+    // The report says how many contacts there are and how many are deep — not "N deeper".
+    const detail = (await api(server, token, 'GET', `/api/scenes/${sceneId}`)).json;
+    const deep = detail.report.verification.initial_contacts.deep.length;
+    await page.locator('button[data-tab="report"]').click();
+    const contactsLine = await page.locator('#report-panel dd').nth(await page.locator('#report-panel dt').allInnerTexts().then((t) => t.indexOf('at t = 0'))).innerText();
+    assert(deep === 0 ? /none deeper than 1 mm/.test(contactsLine) : contactsLine.includes(`${deep} deeper than 1 mm`), `report: "${contactsLine}" with ${deep} deep`);
+    log(`report: "${contactsLine}"`);
+
     // Click the object: its panel.
     await page.mouse.click(at.x, at.y);
     await page.locator(`#object-panel[data-object="${target.name}"]`).waitFor();
     const panel = await page.locator('#object-panel').innerText();
     assert(panel.includes(target.name) && panel.includes(target.support?.on === 'floor' ? 'the floor' : ''), `the panel names it: ${panel}`);
     assert(panel.includes('rests on') && panel.includes('size'), `the panel: ${panel}`);
-    // Play: the robot holds its home pose as in native MuJoCo, and everything stays put.
+    // F frames the selected object: the camera turns about it; Reset view goes back.
+    const cam0 = await page.evaluate(() => window.__sw.camera());
+    // Keys go to the page, not to a focused button (Space presses a focused button).
+    await page.evaluate(() => document.activeElement?.blur?.());
+    await page.keyboard.press('f');
+    const cam1 = await page.evaluate(() => window.__sw.camera());
+    // About the middle of the object: its origin is at its foot, half its height below.
+    const foot = await page.evaluate((n) => window.__sw.bodyPosition(n), target.name);
+    const tgt = [foot[0], foot[1], foot[2] + target.size[2] / 2];
+    const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+    assert(dist(cam1.target, tgt) < 0.25, `F framed around ${cam1.target}, the object's middle is at ${tgt}`);
+    assert(dist(cam1.position, cam1.target) < dist(cam0.position, cam0.target), 'F moved the camera closer');
+    await page.click('#reset-view');
+    const cam2 = await page.evaluate(() => window.__sw.camera());
+    assert(dist(cam2.position, cam0.position) < 1e-6 && dist(cam2.target, cam0.target) < 1e-6, 'Reset view is the first view');
+    log('F framed the selected object; Reset view went back to the first view');
+    // Play (Space): the robot holds its home pose as in native MuJoCo, and everything stays put.
     const posesNow = () =>
       page.evaluate(() => Object.fromEntries(window.__sw.bodies().slice(1).map((n) => [n, window.__sw.bodyPosition(n)])));
     const atHome = await posesNow();
-    await page.click('#play');
+    // (The Reset view button has the focus: Space would press it.)
+    await page.evaluate(() => document.activeElement?.blur?.());
+    await page.keyboard.press(' ');
     await page.waitForFunction(() => /t = (0\.[7-9]|[1-9])/.test(document.getElementById('clock').textContent), null, { timeout: 30_000 });
     await shot(page, '04-scene-viewer');
-    await page.click('#play');
+    await page.keyboard.press(' ');
+    const pausedAt = await page.locator('#clock').innerText();
+    await page.keyboard.press('.');
+    await page.waitForFunction((c) => document.getElementById('clock').textContent !== c, pausedAt, { timeout: 10_000 });
+    assert((await page.locator('#play').innerText()).includes('Play'), 'Space paused it');
     const clock = await page.locator('#clock').innerText();
     const played = await posesNow();
     let worst = ['', 0];
@@ -245,15 +305,19 @@ async function main() {
     log(`object panel read; played to ${clock.replace(/\s+/g, ' ')}: no body (robot links included) moved more than ${(worst[1] * 1000).toFixed(2)} mm`);
     await page.click('#reset');
 
-    // --- A sentence removes the clicked object ---
-    await page.locator('button[data-tab="edit"]').click();
-    await page.fill('#edit-command', `remove ${target.name}`);
-    await page.click('#apply-edit');
+    // --- Delete removes the selected object (an edit: a new version) ---
+    await page.mouse.click(at.x, at.y);
+    await page.locator(`#object-panel[data-object="${target.name}"]`).waitFor();
+    await page.evaluate(() => document.activeElement?.blur?.());
+    await page.keyboard.press('Delete');
     const v2 = await waitForNewScene(page, sceneId);
     const layout2 = (await api(server, token, 'GET', `/api/scenes/${v2}/files/layout.json`)).json;
     assert(!layout2.objects.some((o) => o.name === target.name), `${target.name} is still in the layout`);
     assert((await page.evaluate((n) => window.__sw.bodyPosition(n), target.name)) === null, `${target.name} is still drawn`);
-    log(`"remove ${target.name}" made v2 without it`);
+    // The edited scene keeps its relation checks (issue 22: an edit dropped them).
+    const v2report = (await api(server, token, 'GET', `/api/scenes/${v2}`)).json.report;
+    assert(v2report.relations.length >= detail.report.relations.length - 1 && v2report.relations.length > 0, `v2 lists ${v2report.relations.length} relations, v1 ${detail.report.relations.length}`);
+    log(`Delete removed ${target.name}: v2 without it, its report still measures ${v2report.relations.length} relations`);
 
     // --- A refused edit says why and keeps the scene ---
     await page.locator('button[data-tab="edit"]').click();
@@ -305,22 +369,28 @@ async function main() {
     assert(Math.hypot(turnedTo.pos[0] - before3.pos[0], turnedTo.pos[1] - before3.pos[1]) < 1e-6, 'turning kept its place');
     log(`shift-dragged ${dragged.name}: turned ${dYaw.toFixed(1)}° in place → v4`);
 
-    // --- Asset studio: a part made, one that cannot be made ---
+    // --- Asset studio: a part made, then one that cannot be made (the preview is cleared) ---
     await page.click('a[href="/studio"]');
-    await page.fill('#part-description', 'a sentient teapot that sings opera');
-    await page.click('#make-part');
-    await page.locator('#forge-status .notice.error').waitFor({ timeout: 200_000 });
-    const notMade = await page.locator('#forge-status').innerText();
-    const kinds = await page.locator('#forge-progress li.bad').count();
-    assert(/could not be made/.test(notMade), `the failure: ${notMade}`);
-    await shot(page, '06a-part-not-made');
-    log(`a part that cannot be made: ${notMade.replace(/\s+/g, ' ').slice(0, 160)} (${kinds} failed attempt(s) listed)`);
     await page.fill('#part-description', 'a flat washer: outer diameter 120mm, inner diameter 40mm, thickness 10mm');
     await page.click('#make-part');
     await page.locator('#mesh-size').waitFor({ timeout: 200_000 });
     const meshSize = await page.locator('#mesh-size').innerText();
     assert(/120\.0 × 120\.0 × 10\.0/.test(meshSize), `the preview's size: ${meshSize}`);
+    assert((await page.locator('#preview').getAttribute('data-part')) !== '', 'the washer is previewed');
     await shot(page, '06-asset-studio');
+    await page.fill('#part-description', 'a sentient teapot that sings opera');
+    await page.click('#make-part');
+    // The washer's preview goes at once: it is not the part asked for.
+    assert((await page.locator('#preview').getAttribute('data-part')) === '', 'the previous part stayed in the preview');
+    assert((await page.locator('#mesh-size').count()) === 0, "the previous part's size stayed");
+    await page.locator('#forge-status .notice.error').waitFor({ timeout: 200_000 });
+    const notMade = await page.locator('#forge-status').innerText();
+    const kinds = await page.locator('#forge-progress li.bad').count();
+    assert(/could not be made/.test(notMade), `the failure: ${notMade}`);
+    assert(!/\/(work|tmp|root|home)\//.test(notMade), `a server path in the answer: ${notMade}`);
+    assert((await page.locator('#preview').getAttribute('data-part')) === '', 'a failed part left a preview');
+    await shot(page, '06a-part-not-made');
+    log(`a part that cannot be made: ${notMade.replace(/\s+/g, ' ').slice(0, 160)} (${kinds} failed attempt(s) listed); the washer's preview was cleared`);
     const assets = (await api(server, token, 'GET', `/api/assets?q=${encodeURIComponent('a big ring-shaped spacer')}`)).json;
     const plate = [...assets.similar, ...assets.mine].find((a) => a.meta?.asset_id);
     assert(plate, 'the washer is in the library');
@@ -378,10 +448,19 @@ async function main() {
     await page.click('#cancel');
     await page.getByText('The job was cancelled').waitFor({ timeout: 30_000 });
     assert((await api(server, token, 'GET', `/api/jobs/${doomed}`)).json.state === 'cancelled', 'the job is cancelled');
-    log('a queued job cancelled from its page');
+    const cancelledHeading = await page.locator('#job-heading').innerText();
+    assert(cancelledHeading === 'The build was cancelled', `the heading after cancelling: ${cancelledHeading}`);
+    assert(!(await page.locator('#cancel').isVisible()), 'a cancelled job still offers Cancel');
+    log(`a queued job cancelled from its page: "${cancelledHeading}"`);
     await page.goto(`${server.url}/jobs/${packJob}`);
-    await page.locator('#open-scene').waitFor({ timeout: 180_000 });
-    await page.click('#open-scene');
+    // Opens by itself when it ends while watched (or offers the link when it had ended).
+    await page.waitForFunction(
+      () => location.pathname.startsWith('/scenes/') || (document.querySelector('#open-scene') && !/opening it/.test(document.getElementById('result')?.textContent ?? '')),
+      null,
+      { timeout: 180_000 },
+    );
+    if (!page.url().includes('/scenes/')) await page.click('#open-scene');
+    await page.waitForURL(/\/scenes\//);
     await waitReady(page);
     const packId = await page.evaluate(() => location.pathname.split('/')[2]);
     const packLayout = (await api(server, token, 'GET', `/api/scenes/${packId}/files/layout.json`)).json;
@@ -424,13 +503,47 @@ async function main() {
     const cA = check(mj, 'the anomaly scene', readZip(Buffer.from(await zipA.arrayBuffer())), 10);
     assert(cA.ok, `the anomaly scene in MuJoCo 3.14: ${cA.error}`);
 
-    // --- My scenes, settings ---
+    // --- Variations: one request, a job per seed, one card with a row per seed ---
+    const varied = (await api(server, token, 'POST', '/api/jobs', { prompt: 'a small office with a desk and a chair', seed: 11, variations: 2 })).json;
+    assert(varied.job_ids.length === 2, `variations: ${JSON.stringify(varied)}`);
+    for (const j of varied.job_ids) {
+      for (let k = 0; k < 600; k++) {
+        const st = (await api(server, token, 'GET', `/api/jobs/${j}`)).json.state;
+        if (st === 'succeeded') break;
+        assert(st !== 'failed' && st !== 'cancelled', `variation job ${j}: ${st}`);
+        await new Promise((r) => setTimeout(r, 200));
+      }
+    }
+
+    // --- My scenes: one card per description, its versions under it; search; delete ---
+    page.on('dialog', (d) => void d.accept());
     await page.click('a[href="/scenes"]');
     await page.waitForFunction(() => {
       const imgs = [...document.querySelectorAll('img.thumb')];
-      return imgs.length >= 7 && imgs.every((i) => i.complete && i.naturalWidth > 0);
+      return imgs.length >= 3 && imgs.every((i) => i.complete && i.naturalWidth > 0);
     }, null, { timeout: 60_000 });
+    const cards = await page.locator('.scene-card').count();
+    const all = (await api(server, token, 'GET', '/api/scenes')).json.scenes;
+    const descriptions = new Set(all.map((x) => x.scene_prompt));
+    assert(cards === descriptions.size, `${cards} cards for ${descriptions.size} descriptions (${all.length} scenes)`);
+    const labCard = page.locator('.scene-card', { hasText: final.slice(0, 30) });
+    assert((await labCard.locator('.variation').count()) === 1, 'the lab is one variation');
+    const labRow = await labCard.locator('.variation').innerText();
+    assert(/5 versions/.test(labRow) && /seed 0/.test(labRow) && /v5/.test(labRow), `the lab's row: ${labRow}`);
+    const officeRows = await page.locator('.scene-card', { hasText: 'a small office with a desk' }).locator('.variation').allInnerTexts();
+    assert(officeRows.length === 2 && /seed 11/.test(officeRows[0]) && /seed 12/.test(officeRows[1]), `the office's variations: ${officeRows}`);
     await shot(page, '08-my-scenes');
+    await page.fill('#scene-search', 'storage room');
+    await page.waitForFunction(() => document.querySelectorAll('.scene-card').length === 1);
+    await page.locator('.scene-card', { hasText: 'storage room' }).locator('button.delete').click();
+    await page.getByText('Deleted 1 version').waitFor({ timeout: 20_000 });
+    assert((await api(server, token, 'GET', `/api/scenes/${anomScene}`)).status === 404, 'the deleted scene is gone');
+    assert((await page.locator('.scene-card').count()) === 0, 'the deleted card is gone');
+    await page.fill('#scene-search', '');
+    await page.waitForFunction((n) => document.querySelectorAll('.scene-card').length === n, cards - 1);
+    log(`My scenes: ${cards} cards for ${all.length} scenes (the lab's 5 versions in one); search found the storage room, deleted it`);
+
+    // --- Settings: a key made, used, revoked ---
     await page.click('a[href="/settings"]');
     await page.fill('#key-name', 'e2e script');
     await page.click('#create-key');
@@ -439,7 +552,20 @@ async function main() {
     assert((await api(server, key, 'GET', '/api/me')).json.username === 'ann', 'the key works');
     await page.locator('#keys li', { hasText: 'e2e script' }).waitFor();
     await shot(page, '09-settings');
-    log('thumbnails on My scenes; an API key made and used');
+    await page.locator('#keys li', { hasText: 'e2e script' }).locator('button.revoke').click();
+    await page.getByText('is revoked').waitFor({ timeout: 10_000 });
+    assert((await api(server, key, 'GET', '/api/me')).status === 401, 'a revoked key still works');
+    log('an API key made, used and revoked from the settings page');
+
+    // --- Text with direction overrides cannot reorder the page ---
+    const rtl = (await api(server, token, 'POST', '/api/jobs', { prompt: 'a lab with a table \u202Eelbat a dna\u202C and a shelf' })).json.job_id;
+    await page.goto(`${server.url}/jobs/${rtl}`);
+    await page.locator('.prompt-line').waitFor();
+    await page.waitForFunction(() => document.querySelector('.prompt-line').textContent.includes('and a shelf'));
+    const bodyText = await page.evaluate(() => document.body.innerText);
+    assert(!/[\u202A-\u202E\u2066-\u2069]/.test(bodyText), 'a direction override reached the page');
+    await api(server, token, 'DELETE', `/api/jobs/${rtl}`);
+    log('a prompt holding U+202E is shown without it');
 
     // --- Bad input: a socket dropped mid-job catches up on reconnection ---
     let dropped = false;
@@ -483,15 +609,18 @@ async function main() {
     await page2.fill('#password', PASSWORD);
     await page2.click('#register');
     await page2.waitForURL(`${server.url}/scenes/${sceneId}`);
-    await page2.locator('#viewer-status .notice.error').waitFor({ timeout: 30_000 });
-    const other = await page2.locator('#viewer-status').innerText();
-    assert(/cannot be shown: no such scene/.test(other), `another user's scene: ${other}`);
+    await page2.locator('#not-found').waitFor({ timeout: 30_000 });
+    const other = await page2.locator('#not-found').innerText();
+    assert(/No such scene here/.test(other), `another user's scene: ${other}`);
+    assert((await page2.locator('#viewer').count()) === 0, "another user's scene shows a viewer");
     await notBlank(page2, "another user's scene");
     await shot(page2, '11-not-your-scene');
     await page2.goto(`${server.url}/jobs/${job2}`);
-    await page2.getByText('cannot be followed').or(page2.getByText('No such job')).first().waitFor({ timeout: 20_000 });
+    await page2.locator('#not-found').waitFor({ timeout: 20_000 });
+    assert(/No such job here/.test(await page2.locator('#not-found').innerText()), "another user's job");
+    assert((await page2.locator('#cancel').count()) === 0 && (await page2.locator('#timeline').count()) === 0, "another user's job shows a live page");
     await notBlank(page2, "another user's job");
-    log(`another user's scene and job: "${other.trim()}"`);
+    log(`another user's scene and job: "${other.split('\n')[0]}" and "No such job here", no viewer, no Cancel`);
 
     // --- Bad input: an expired token ends the session with the reason ---
     const me = (await api(server, token, 'GET', '/api/me')).json;
@@ -523,6 +652,34 @@ async function main() {
     } finally {
       await noGl.close();
     }
+
+    // --- At 390 px (a phone): nothing wider than the screen, the top bar included ---
+    const session = await page.evaluate(() => ({ t: sessionStorage.getItem('scenewright.token'), u: sessionStorage.getItem('scenewright.user') }));
+    const phone = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 1 });
+    const p4 = await phone.newPage();
+    p4.on('pageerror', (e) => pageErrors.push(e.message));
+    await p4.goto(`${server.url}/signin`);
+    await p4.evaluate((x) => (sessionStorage.setItem('scenewright.token', x.t), sessionStorage.setItem('scenewright.user', x.u)), session);
+    for (const [where, shotName] of [['/', '15-phone-compose'], ['/scenes', '16-phone-scenes'], [`/scenes/${v3}`, '17-phone-scene'], ['/studio', null], ['/settings', null]]) {
+      await p4.goto(`${server.url}${where}`);
+      if (where.startsWith('/scenes/')) await waitReady(p4);
+      else await p4.waitForTimeout(800);
+      const widths = await p4.evaluate(() => ({ doc: document.documentElement.scrollWidth, header: document.querySelector('header.top').scrollWidth, headerBox: document.querySelector('header.top').clientWidth }));
+      assert(widths.doc <= 390 && widths.header <= widths.headerBox, `${where} at 390 px: ${JSON.stringify(widths)}`);
+      if (shotName) await shot(p4, shotName);
+    }
+    await phone.close();
+    log('at 390 px: no page and no top bar wider than the screen');
+
+    // --- Signing out revokes the token on the server ---
+    await page.goto(`${server.url}/scenes`);
+    await page.locator('#scene-grid').waitFor();
+    const live = await page.evaluate(() => sessionStorage.getItem('scenewright.token'));
+    assert((await api(server, live, 'GET', '/api/me')).status === 200, 'the session works before signing out');
+    await page.click('#signout');
+    await page.waitForURL(/\/signin/);
+    assert((await api(server, live, 'GET', '/api/me')).status === 401, 'a signed-out token still works');
+    log('signing out revoked the token');
 
     assert(pageErrors.length === 0, `uncaught page errors: ${pageErrors.join('; ')}`);
     await ctx2.close();

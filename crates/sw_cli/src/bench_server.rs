@@ -128,7 +128,11 @@ struct WsResult {
 
 async fn websockets(clients: usize, workers: usize, verify: bool, json_out: bool) -> Result<u8, Failure> {
     let dir = tempfile::tempdir().map_err(|e| Failure::internal(e.to_string()))?;
-    let limits = QueueLimits { queue_cap: clients.max(100) as i64, per_user_running: 5 };
+    let limits = QueueLimits {
+        queue_cap: clients.max(100) as i64,
+        per_user_running: 5,
+        per_user_queued: clients.max(100) as i64,
+    };
     let st = state(dir.path(), None, limits).await?;
     let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.map_err(|e| Failure::internal(e.to_string()))?;
     let addr = listener.local_addr().map_err(|e| Failure::internal(e.to_string()))?;
@@ -284,7 +288,8 @@ async fn queue(
     json_out: bool,
 ) -> Result<u8, Failure> {
     let dir = tempfile::tempdir().map_err(|e| Failure::internal(e.to_string()))?;
-    let limits = QueueLimits { queue_cap: jobs as i64 + 1, per_user_running: workers as i64 };
+    let limits =
+        QueueLimits { queue_cap: jobs as i64 + 1, per_user_running: workers as i64, per_user_queued: jobs as i64 + 1 };
     let st = state(dir.path(), database.as_deref(), limits).await?;
     let store = st.store.clone();
     let ie = |e: sw_store::StoreError| Failure::internal(e.to_string());

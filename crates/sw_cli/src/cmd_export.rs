@@ -6,9 +6,16 @@
 //! The converter reads `scene.xml` with MuJoCo and writes an asset directory (an
 //! interface layer `scenewright.usda` with payloaded geometry, materials and physics).
 //! What it cannot express it drops with a warning — MuJoCo 3.16 / converter 0.8.0 on our
-//! packages: cameras, lights, keyframes (the `home` pose: robot joints stand at their
-//! zero position in USD), the floor's checker texture. Those warnings are returned as
-//! `dropped` and written to `export.json` beside the stage.
+//! packages: cameras, lights, keyframes, the floor's checker texture. Those warnings are
+//! returned as `dropped` and written to `export.json` beside the stage, with every file.
+//!
+//! The converter keeps MuJoCo's actuators as `MjcActuator` prims, which PhysX ignores: a
+//! robot would hang limp in Isaac Sim. So each joint a position servo drives gets a USD
+//! `PhysicsDriveAPI` (angular or linear) with the servo's stiffness and damping (per
+//! degree for angular drives, as USD physics counts them), its force limit, and as target
+//! the `home` keyframe's control: PhysX holds the arm at home, as MuJoCo does. The drives
+//! are written into the physics layer by the converter's own OpenUSD (`DRIVES`), and
+//! listed as `drives` in `export.json`.
 
 use std::ffi::OsString;
 use std::io::Read as _;
@@ -48,15 +55,83 @@ struct Exported {
     converter: String,
     /// What the converter could not express (its warnings, one line each).
     dropped: Vec<String>,
+    /// The joints given a PhysX drive, from their MuJoCo position servos.
+    drives: Vec<serde_json::Value>,
+    /// Every file written (export.json included), relative to `out_dir`.
     files: Vec<String>,
     seconds: f64,
 }
 
-/// The Python that has `mujoco_usd_converter`: SCENEWRIGHT_USD_PYTHON, else the
-/// checkout's `.cache/usd-venv` (set up by `scripts/setup.sh --usd`).
+/// Writes a `PhysicsDriveAPI` on each joint a MuJoCo position servo drives (argv: the
+/// scene.xml, the physics layer); prints the drives as JSON. Run by the converter's venv.
+const DRIVES: &str = r#"
+import json, math, sys
+import mujoco
+from pxr import Usd, UsdPhysics
+
+scene, physics = sys.argv[1], sys.argv[2]
+m = mujoco.MjModel.from_xml_path(scene)
+key = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_KEY, "home")
+stage = Usd.Stage.Open(physics)
+done = []
+for prim in stage.Traverse():
+    if prim.GetTypeName() != "MjcActuator":
+        continue
+    targets = prim.GetRelationship("mjc:target").GetTargets()
+    joint = stage.GetPrimAtPath(targets[0]) if targets else None
+    a = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_ACTUATOR, prim.GetName())
+    if joint is None or not joint.IsValid() or a < 0:
+        continue
+    gain, bias = float(m.actuator_gainprm[a][0]), m.actuator_biasprm[a]
+    # A position servo: force = kp * (ctrl - q) - kv * qdot.
+    servo = int(m.actuator_biastype[a]) == int(mujoco.mjtBias.mjBIAS_AFFINE) and gain > 0
+    if not servo or abs(bias[1] + gain) > 1e-9 * max(1.0, gain):
+        continue
+    angular, linear = joint.IsA(UsdPhysics.RevoluteJoint), joint.IsA(UsdPhysics.PrismaticJoint)
+    if not (angular or linear):
+        continue
+    per = math.pi / 180.0 if angular else 1.0
+    target = float(m.key_ctrl[key][a]) if key >= 0 else 0.0
+    drive = UsdPhysics.DriveAPI.Apply(joint, "angular" if angular else "linear")
+    drive.CreateTypeAttr("force")
+    drive.CreateStiffnessAttr(gain * per)
+    drive.CreateDampingAttr(-float(bias[2]) * per)
+    drive.CreateTargetPositionAttr(target / per)
+    entry = {"joint": joint.GetName(), "kind": "angular" if angular else "linear", "stiffness": gain * per,
+             "damping": -float(bias[2]) * per, "target": target / per}
+    if m.actuator_forcelimited[a]:
+        drive.CreateMaxForceAttr(float(m.actuator_forcerange[a][1]))
+        entry["max_force"] = float(m.actuator_forcerange[a][1])
+    done.append(entry)
+stage.GetRootLayer().Save()
+print("DRIVES " + json.dumps(done))
+"#;
+
+/// The Python that has `mujoco_usd_converter`: SCENEWRIGHT_USD_PYTHON, else the venv at
+/// SCENEWRIGHT_USD_VENV, else the checkout's `.cache/usd-venv` (both made by `scripts/setup.sh
+/// --usd`). Not set up is a problem of the set-up, said in one line (exit 2).
 fn converter_python() -> Result<OsString, Failure> {
-    if let Some(p) = std::env::var_os("SCENEWRIGHT_USD_PYTHON") {
-        return Ok(p);
+    let missing = "USD export needs mujoco-usd-converter 0.8.0: run scripts/setup.sh --usd (SCENEWRIGHT_USD_VENV=DIR puts it outside the checkout), or set SCENEWRIGHT_USD_PYTHON to a Python that has it";
+    if let Some(p) = std::env::var_os("SCENEWRIGHT_USD_PYTHON").filter(|p| !p.is_empty()) {
+        return if Path::new(&p).is_file() {
+            Ok(p)
+        } else {
+            Err(Failure::input(format!(
+                "SCENEWRIGHT_USD_PYTHON is {}, which does not exist. {missing}",
+                Path::new(&p).display()
+            )))
+        };
+    }
+    if let Some(v) = std::env::var_os("SCENEWRIGHT_USD_VENV").filter(|v| !v.is_empty()) {
+        let py = Path::new(&v).join("bin/python");
+        return if py.is_file() {
+            Ok(py.into_os_string())
+        } else {
+            Err(Failure::input(format!(
+                "SCENEWRIGHT_USD_VENV is {}, which holds no bin/python. {missing}",
+                Path::new(&v).display()
+            )))
+        };
     }
     let exe = std::env::current_exe().map_err(|e| Failure::internal(e.to_string()))?;
     for dir in exe.ancestors().skip(1) {
@@ -65,9 +140,7 @@ fn converter_python() -> Result<OsString, Failure> {
             return Ok(py.into_os_string());
         }
     }
-    Err(Failure::internal(
-        "USD export needs mujoco-usd-converter 0.8.0: run scripts/setup.sh --usd, or set SCENEWRIGHT_USD_PYTHON to a Python that has it",
-    ))
+    Err(Failure::input(missing))
 }
 
 pub(crate) fn run(a: ExportArgs) -> Result<u8, Failure> {
@@ -104,6 +177,9 @@ pub(crate) fn run(a: ExportArgs) -> Result<u8, Failure> {
         let last = log.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("no output").trim().to_string();
         return Err(Failure::internal(format!("mujoco-usd-converter failed on {}: {last}", scene.display())));
     }
+    // PhysX drives for the joints MuJoCo's servos drive, at the home pose.
+    let physics = stage_dir.join("Payload").join("Physics.usda");
+    let drives = if physics.is_file() { add_drives(&python, &scene, &physics)? } else { Vec::new() };
     let dropped: Vec<String> = log
         .lines()
         .filter(|l| l.starts_with("[Warning]"))
@@ -119,9 +195,19 @@ pub(crate) fn run(a: ExportArgs) -> Result<u8, Failure> {
         out_dir: out.clone(),
         converter,
         dropped,
+        drives,
         files: Vec::new(),
         seconds: 0.0,
     };
+    // The record lists every file, itself included.
+    let mut files: Vec<String> = sw_pipeline::manifest::file_list(&stage_dir)
+        .map_err(|e| Failure::internal(e.to_string()))?
+        .into_iter()
+        .map(|f| f.path)
+        .collect();
+    files.push("export.json".into());
+    files.sort();
+    done.files = files;
     done.seconds = (started.elapsed().as_secs_f64() * 1000.0).round() / 1000.0;
     let mut record = serde_json::to_string_pretty(&done).map_err(|e| Failure::internal(e.to_string()))?;
     record.push('\n');
@@ -130,11 +216,6 @@ pub(crate) fn run(a: ExportArgs) -> Result<u8, Failure> {
         fs_err::remove_dir(&out).map_err(|e| Failure::input(e.to_string()))?;
     }
     fs_err::rename(&stage_dir, &out).map_err(|e| Failure::input(e.to_string()))?;
-    done.files = sw_pipeline::manifest::file_list(&out)
-        .map_err(|e| Failure::internal(e.to_string()))?
-        .into_iter()
-        .map(|f| f.path)
-        .collect();
     if a.json {
         print_json(&done);
     } else {
@@ -142,8 +223,32 @@ pub(crate) fn run(a: ExportArgs) -> Result<u8, Failure> {
         for d in &done.dropped {
             print(&format!("dropped  {d}"));
         }
+        if !done.drives.is_empty() {
+            print(&format!("drives   {} joints driven to the home pose", done.drives.len()));
+        }
     }
     Ok(0)
+}
+
+/// Adds the PhysX drives (see [`DRIVES`]); the joints driven.
+fn add_drives(python: &OsString, scene: &Path, physics: &Path) -> Result<Vec<serde_json::Value>, Failure> {
+    let out = Command::new(python)
+        .args(["-c", DRIVES])
+        .arg(scene)
+        .arg(physics)
+        .stdin(Stdio::null())
+        .output()
+        .map_err(|e| Failure::internal(format!("cannot run the USD exporter's Python: {e}")))?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let line = text.lines().find_map(|l| l.strip_prefix("DRIVES "));
+    match (out.status.success(), line) {
+        (true, Some(json)) => serde_json::from_str(json).map_err(|e| Failure::internal(format!("the drives: {e}"))),
+        _ => {
+            let err = String::from_utf8_lossy(&out.stderr);
+            let last = err.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("no output").trim().to_string();
+            Err(Failure::internal(format!("writing the joints' drives into the USD stage failed: {last}")))
+        }
+    }
 }
 
 /// `out` must not exist or be an empty directory.
@@ -173,7 +278,12 @@ fn run_converter(python: &OsString, scene: &Path, out: &Path) -> Result<(Option<
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .map_err(|e| Failure::internal(format!("cannot run {}: {e}", PathBuf::from(python).display())))?;
+        .map_err(|e| {
+            Failure::input(format!(
+                "cannot run the USD exporter's Python {} ({e}); run scripts/setup.sh --usd",
+                PathBuf::from(python).display()
+            ))
+        })?;
     let mut pipes = Vec::new();
     for pipe in [
         child.stdout.take().map(|p| Box::new(p) as Box<dyn std::io::Read + Send>),

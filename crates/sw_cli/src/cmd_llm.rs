@@ -89,6 +89,8 @@ fn need(cfg: &LlmConfig, stage: LlmStage) -> Result<(), Failure> {
 pub(crate) fn failure(e: sw_pipeline::PipelineError) -> Failure {
     match e.exit_code() {
         2 => Failure::input(e.to_string()),
+        // The model's failure, named as such (not an internal error).
+        3 => Failure { code: 3, message: e.to_string() },
         _ => Failure::internal(e.to_string()),
     }
 }

@@ -52,6 +52,10 @@ pub(crate) struct QueueArgs {
     /// Jobs of one user that may run at once.
     #[arg(long, default_value_t = 5)]
     per_user: i64,
+    /// Jobs of one user that may wait in the queue at once (more are answered 429): one
+    /// user cannot fill the queue for everyone. Users are served in turn either way.
+    #[arg(long, default_value_t = 20)]
+    per_user_queue: i64,
     /// A job running longer than this fails, seconds.
     #[arg(long, default_value_t = 600)]
     job_timeout: u64,
@@ -86,7 +90,11 @@ impl QueueArgs {
     }
 
     fn limits(&self) -> QueueLimits {
-        QueueLimits { queue_cap: self.queue_cap, per_user_running: self.per_user }
+        QueueLimits {
+            queue_cap: self.queue_cap,
+            per_user_running: self.per_user,
+            per_user_queued: self.per_user_queue.clamp(1, self.queue_cap.max(1)),
+        }
     }
 
     fn runner(&self) -> RunnerConfig {
@@ -113,6 +121,10 @@ pub(crate) struct ServeArgs {
     /// built by scripts/setup.sh --web).
     #[arg(long, value_name = "DIR")]
     web: Option<PathBuf>,
+    /// A connection must send a request's headers within this many seconds (idle
+    /// keep-alive connections close after it too).
+    #[arg(long, default_value_t = 10)]
+    header_timeout: u64,
 }
 
 impl ServeArgs {
@@ -150,14 +162,21 @@ pub(crate) fn serve(a: ServeArgs) -> Result<u8, Failure> {
     config.web_dir = a.web.or_else(sw_server::web::default_dir);
     // With JSON logs every stderr line is JSON: the address is the `serving` event's `addr`.
     config.listen_line = format == LogFormat::Text;
-    runtime()?.block_on(sw_server::serve(config)).map_err(|e| Failure::input(e.to_string()))?;
+    config.http.header_timeout = std::time::Duration::from_secs(a.header_timeout.max(1));
+    let rt = runtime()?;
+    let served = rt.block_on(sw_server::serve(config));
+    // A pipeline thread stops at its next cancellation check; one inside a single long
+    // call (MuJoCo compiling a huge scene) is not waited for past this.
+    rt.shutdown_timeout(std::time::Duration::from_secs(3));
+    served.map_err(|e| Failure::input(e.to_string()))?;
     Ok(0)
 }
 
 pub(crate) fn worker(a: WorkerArgs) -> Result<u8, Failure> {
     a.log_format()?;
     let q = a.queue;
-    runtime()?.block_on(async move {
+    let rt = runtime()?;
+    let done = rt.block_on(async move {
         let (store, blobs) =
             sw_server::open_data(&q.data, q.database().as_deref()).await.map_err(|e| Failure::input(e.to_string()))?;
         let state = AppState::new(store, blobs, q.limits(), q.runner(), 3600)
@@ -166,6 +185,8 @@ pub(crate) fn worker(a: WorkerArgs) -> Result<u8, Failure> {
         sw_server::run_workers(state, q.workers, sw_server::shutdown_signal())
             .await
             .map_err(|e| Failure::input(e.to_string()))
-    })?;
+    });
+    rt.shutdown_timeout(std::time::Duration::from_secs(3));
+    done?;
     Ok(0)
 }

@@ -61,18 +61,12 @@ pub(crate) fn run(
     if stored != text {
         return Err(Failure::input(format!("the database holds dataset {id} with other prompts or options")));
     }
-    let user = rt.block_on(async {
-        match store.user_by_name(USER).await? {
-            Some(u) => Ok(u),
-            None => match store.create_user(USER, "!", Some(sw_store::Role::User)).await {
-                Err(StoreError::Conflict(_)) => {
-                    store.user_by_name(USER).await?.ok_or(StoreError::Conflict(USER.into()))
-                }
-                other => other,
-            },
-        }
-    });
-    let user = user.map_err(internal)?;
+    // The service account: never one somebody registered over the API (its name is
+    // reserved there; an older login account of that name is refused).
+    let user = rt.block_on(store.service_account(USER)).map_err(|e| match e {
+        StoreError::Conflict(m) => Failure::input(m),
+        e => internal(e),
+    })?;
     ACTIVE.store(true, Ordering::SeqCst);
     let result = lead(&rt, &store, &*blobs, &dir, &user.id);
     ACTIVE.store(false, Ordering::SeqCst);

@@ -6,6 +6,7 @@
 //! Pure: no I/O beyond writing bytes to a caller-supplied writer.
 
 mod asset;
+pub mod cancel;
 mod mesh;
 mod pose;
 mod primitives;

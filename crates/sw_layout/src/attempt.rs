@@ -256,6 +256,9 @@ fn place_group(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) {
         );
     }
     for &idx in idxs {
+        if sw_geom::cancel::requested() {
+            return;
+        }
         if ctx.placed[idx].is_none() {
             floor::place(ctx, idx);
         }
@@ -331,6 +334,10 @@ pub(crate) fn run_pinned(input: &LayoutInput<'_>, size: Dims, pins: Option<&crat
         })
         .collect();
     for unit in crate::order::units(&ctx, &furniture) {
+        // A cancelled job's layout stops here; its caller discards the partial result.
+        if sw_geom::cancel::requested() {
+            break;
+        }
         match unit {
             crate::order::Unit::Group(group, idxs) => place_group(&mut ctx, &group, &idxs),
             crate::order::Unit::Robot(ri) => robots::place_one(&mut ctx, ri),

@@ -133,7 +133,8 @@ pub fn solve(input: &LayoutInput<'_>) -> LaidOutScene {
             );
         }
         let short = result.floor_failures > 0;
-        if !short || input.plan.room.size_fixed || steps >= MAX_GROWTH_STEPS {
+        // A cancelled job does not grow the room again (`sw_geom::cancel`).
+        if !short || input.plan.room.size_fixed || steps >= MAX_GROWTH_STEPS || sw_geom::cancel::requested() {
             let mut scene = result.scene;
             if steps > 0 {
                 scene.warnings.insert(

@@ -73,6 +73,9 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
         place_loose(ctx, &hosts);
     }
     for idx in in_stack_order(ctx, items) {
+        if sw_geom::cancel::requested() {
+            return;
+        }
         let Some(target) = surface_target(ctx, idx) else {
             continue;
         };
@@ -238,6 +241,9 @@ pub(crate) fn place_loose(ctx: &mut Ctx<'_>, items: &[usize]) {
     let work_hosts = hosts_tagged(ctx, true);
     let storage_hosts = hosts_tagged(ctx, false);
     for &idx in items {
+        if sw_geom::cancel::requested() {
+            return;
+        }
         let o = &ctx.input.objects[idx];
         // "a bin under the table", "a crate next to the door": where it goes was said.
         let placed_by_relation = !ctx.relations(&o.group).is_empty();

@@ -4,12 +4,14 @@
 //! for a server that is loading its model or restarting), and every call, however it
 //! ends, becomes one telemetry record with each failed attempt's error.
 //!
-//! Bounds: a token limit per stage (`max_tokens`), the server's silence (until the first
-//! byte and between pieces of a stream; a stream that keeps coming is not cut), a hard
-//! limit per attempt, a number of places per server ([`crate::limits`]), and cancellation
-//! ([`crate::cancel`]). An answer cut off at the token limit is its own outcome
-//! (`length`) and, like a first-byte timeout at temperature 0, is never asked again
-//! unchanged: the same request would end the same way.
+//! Bounds: a token limit sized from the request ([`crate::budget`]), the server's silence
+//! (until the first byte and between pieces of a stream; a stream that keeps coming is not
+//! cut), a hard limit per attempt, a number of places per server ([`crate::limits`]), and
+//! cancellation ([`crate::cancel`]). An answer cut off at the token limit is its own
+//! outcome (`length`) and, like a first-byte timeout at temperature 0, is never asked
+//! again unchanged: one that ends in a loop is refused as a loop; a long one is asked
+//! once more with twice the room (up to [`crate::budget::CEILING`]) unless the endpoint's
+//! own limit was set, and otherwise refused saying which limit to raise.
 
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -17,8 +19,9 @@ use std::time::{Duration, Instant};
 use sw_plan::{LlmCall, LlmOutcome, LlmStage};
 use tracing::{debug, info_span};
 
+use crate::budget;
 use crate::cancel::{self, CancelToken, any_cancelled};
-use crate::config::{Endpoint, LlmConfig, default_max_tokens};
+use crate::config::{Endpoint, LlmConfig};
 use crate::dialect::{self, Learnt, Refusal, refusal};
 use crate::exchange::attempt;
 use crate::limits;
@@ -258,7 +261,8 @@ impl Client {
         let tokens = cancel::current();
         let agent = self.agent(stage, ep);
         let mut learnt = dialect::learnt(ep);
-        let max_tokens = ep.max_tokens.or(req.max_tokens).or_else(|| default_max_tokens(stage));
+        let fixed = ep.max_tokens.or(req.max_tokens);
+        let mut max_tokens = fixed.or_else(|| budget::max_tokens_for(stage, req));
         let mut log = CallLog {
             stage,
             ep,
@@ -302,11 +306,35 @@ impl Client {
                     };
                     if a.finish_reason.as_deref() == Some("length") {
                         let limit = max_tokens.map_or_else(|| "the server's".to_string(), |n| n.to_string());
-                        let message = format!(
-                            "the answer was cut off at the token limit ({limit} tokens) after {} bytes: the model \
-                             loops or rambles; not asked again unchanged",
-                            a.content.len()
-                        );
+                        let looped = budget::repetition(&a.content);
+                        // A long answer, not a loop, under a limit we chose: once more with
+                        // twice the room (a different request, not the same one again).
+                        if looped.is_none()
+                            && fixed.is_none()
+                            && let Some(n) = max_tokens.filter(|n| *n < budget::CEILING)
+                        {
+                            max_tokens = Some((n * 2).min(budget::CEILING));
+                            log.max_tokens = max_tokens;
+                            log.attempt_errors.push(format!(
+                                "the answer was longer than {n} tokens; asked again with {} tokens",
+                                (n * 2).min(budget::CEILING)
+                            ));
+                            log.retries += 1;
+                            continue;
+                        }
+                        let message = match &looped {
+                            Some(r) => format!(
+                                "the model looped: its answer repeats «{}» {} times and was cut off at the token \
+                                 limit ({limit} tokens); not asked again unchanged",
+                                r.unit.trim(),
+                                r.times
+                            ),
+                            None => format!(
+                                "the answer was longer than the token limit ({limit} tokens, {} bytes written) and \
+                                 is not a loop; raise SCENEWRIGHT_LLM_MAX_TOKENS (or the stage's) above {limit}",
+                                a.content.len()
+                            ),
+                        };
                         let attempts = log.retries + 1;
                         let mut call = log.call(
                             LlmOutcome::Length,

@@ -29,6 +29,7 @@
 //! parse and validate.
 
 mod answer;
+pub mod budget;
 pub mod cancel;
 mod client;
 mod config;

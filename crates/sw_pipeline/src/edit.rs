@@ -91,7 +91,7 @@ fn read_with_llm(command: &str, view: &SceneView<'_>, client: &Client) -> Result
         let purpose = if round == 0 { "edit" } else { "edit (repair)" };
         let answer = client.complete(LlmStage::Edit, &req, purpose).map_err(|e| {
             let how = if e.unreachable() { "could not be reached" } else { "failed" };
-            PipelineError::Internal(format!("the edit LLM {how} ({e})"))
+            PipelineError::Upstream(format!("the edit LLM {how} ({e})"))
         })?;
         match extract_json(&answer.content).map_err(|e| e.to_string()).and_then(|v| sw_edit::llm::read_edit(&v)) {
             Ok(c) => return Ok(c),
@@ -344,6 +344,9 @@ fn build_package(
         .collect();
     warnings.extend(work.warnings.iter().cloned());
     let mut rep = report::assemble(&work.plan, layout, pkg.layout.seed, warnings, Some(v));
+    // The stated relations are measured again on the edited scene, as on a generated one:
+    // an edit never drops them from the report.
+    crate::relations_check::attach(&mut rep, &work.plan, staging.path());
     rep.llm_calls = pkg.report.llm_calls.clone();
     // How the scene's assets came about is the generation's story.
     rep.asset_cache = pkg.report.asset_cache;

@@ -144,6 +144,10 @@ pub enum PipelineError {
     /// A bug or an environment failure (exit code 1).
     #[error("internal error: {0}")]
     Internal(String),
+    /// The configured model (an upstream service) failed or answered unusably, and there
+    /// was no fallback (exit code 3); the message names the stage, the endpoint and why.
+    #[error("{0}")]
+    Upstream(String),
     /// Stopped through [`Options::cancel`] (exit code 130); nothing was written.
     #[error("cancelled")]
     Cancelled,
@@ -155,6 +159,7 @@ impl PipelineError {
         match self {
             PipelineError::Input(_) | PipelineError::Output(_) => 2,
             PipelineError::Internal(_) => 1,
+            PipelineError::Upstream(_) => 3,
             PipelineError::Cancelled => 130,
         }
     }

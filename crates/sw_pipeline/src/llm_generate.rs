@@ -225,7 +225,7 @@ fn plan_inner(
     };
     on(PlanEvent::Discard);
     if !fallback {
-        return Err(PipelineError::Internal(format!("the LLM planner {why}")));
+        return Err(PipelineError::Upstream(format!("the LLM planner {why}")));
     }
     match sw_planner::plan(prompt) {
         Ok(plan) => Ok((

@@ -313,8 +313,9 @@ mod with_an_llm {
                 2,
             ),
             (Reply::answer(r#"{"ops": [{"op": "remove", "target": {"noun": "spaceship"}}]}"#), 2),
-            (Reply::status(500, "down"), 1),
-            (Reply::Hang(Duration::from_secs(30)), 1),
+            // The model failing is the model's failure (exit 3), not an internal error.
+            (Reply::status(500, "down"), 3),
+            (Reply::Hang(Duration::from_secs(30)), 3),
         ];
         for (reply, code) in cases {
             let server = MockServer::start(script(vec![reply.clone()])).unwrap();

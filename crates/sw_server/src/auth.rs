@@ -28,13 +28,16 @@ pub fn verify_password(password: &str, hash: &str) -> bool {
 }
 
 /// A JWT's claims.
-#[derive(Debug, Serialize, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Claims {
     /// The user's id.
     pub sub: String,
     pub role: String,
     pub iat: i64,
     pub exp: i64,
+    /// The token's own id: signing out revokes it (tokens made before it existed have none).
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub jti: String,
 }
 
 /// Signs and checks access tokens.
@@ -58,8 +61,13 @@ impl Tokens {
 
     /// An access token for a user, valid for `ttl_s` seconds from `now_s`.
     pub fn issue_at(&self, user: &User, now_s: i64) -> Result<String, ApiError> {
-        let claims =
-            Claims { sub: user.id.clone(), role: user.role.as_str().into(), iat: now_s, exp: now_s + self.ttl_s };
+        let claims = Claims {
+            sub: user.id.clone(),
+            role: user.role.as_str().into(),
+            iat: now_s,
+            exp: now_s + self.ttl_s,
+            jti: sw_store::new_id(),
+        };
         jsonwebtoken::encode(&Header::new(Algorithm::HS256), &claims, &self.encoding).map_err(ApiError::internal)
     }
 
@@ -96,11 +104,14 @@ pub fn api_key_hash(key: &str) -> String {
 }
 
 /// The authenticated user of a request: `Authorization: Bearer <JWT or API key>`,
-/// `X-API-Key: <key>`, or (for WebSockets, which browsers cannot give headers)
-/// `?token=<JWT>` in the query.
+/// `X-API-Key: <key>`, or — on a job's WebSocket only, which browsers cannot give headers —
+/// `?token=<JWT>` in the query. A token in the query of any other request is refused: URLs
+/// end up in logs and histories.
 #[derive(Debug, Clone)]
 pub struct Caller {
     pub user: User,
+    /// The access token's claims (`None` for an API key).
+    pub claims: Option<Claims>,
 }
 
 impl Caller {
@@ -126,6 +137,11 @@ fn credential(parts: &Parts) -> Result<String, ApiError> {
     if let Some(q) = parts.uri.query() {
         for pair in q.split('&') {
             if let Some(t) = pair.strip_prefix("token=") {
+                if !is_websocket_route(parts) {
+                    return Err(ApiError::unauthorized(
+                        "a token in the URL is accepted only by a job's WebSocket; send it as Authorization: Bearer <token>",
+                    ));
+                }
                 return Ok(t.to_string());
             }
         }
@@ -133,26 +149,42 @@ fn credential(parts: &Parts) -> Result<String, ApiError> {
     Err(ApiError::unauthorized("this needs an access token (Authorization: Bearer <token>) or an API key"))
 }
 
+/// A WebSocket handshake for a job's events (`GET /api/jobs/{id}/events`, `Upgrade: websocket`).
+fn is_websocket_route(parts: &Parts) -> bool {
+    let upgrade = parts
+        .headers
+        .get(axum::http::header::UPGRADE)
+        .and_then(|v| v.to_str().ok())
+        .is_some_and(|v| v.eq_ignore_ascii_case("websocket"));
+    let path = parts.uri.path();
+    upgrade && path.starts_with("/api/jobs/") && path.ends_with("/events")
+}
+
 impl FromRequestParts<AppState> for Caller {
     type Rejection = ApiError;
 
     async fn from_request_parts(parts: &mut Parts, state: &AppState) -> Result<Self, Self::Rejection> {
         let cred = credential(parts)?;
-        let user = if cred.starts_with("swk_") {
-            state
+        let (user, claims) = if cred.starts_with("swk_") {
+            let user = state
                 .store
                 .user_by_api_key(&api_key_hash(&cred))
                 .await?
-                .ok_or_else(|| ApiError::unauthorized("unknown API key"))?
+                .ok_or_else(|| ApiError::unauthorized("unknown or revoked API key"))?;
+            (user, None)
         } else {
             let claims = state.tokens.check(&cred)?;
-            state
+            if !claims.jti.is_empty() && state.store.token_revoked(&claims.jti).await? {
+                return Err(ApiError::unauthorized("the access token was revoked (signed out); sign in again"));
+            }
+            let user = state
                 .store
                 .user(&claims.sub)
                 .await?
-                .ok_or_else(|| ApiError::unauthorized("the access token's user no longer exists"))?
+                .ok_or_else(|| ApiError::unauthorized("the access token's user no longer exists"))?;
+            (user, Some(claims))
         };
         tracing::Span::current().record("user", user.id.as_str());
-        Ok(Caller { user })
+        Ok(Caller { user, claims })
     }
 }

@@ -68,7 +68,9 @@ async fn seeds(
             let mut on_event = |e: &Event| {
                 let _ = events.send(serde_json::to_value(e).unwrap_or_else(|_| json!({"event": "note"})));
             };
-            sw_pipeline::generate(&prompt, &dir, &opts, &mut on_event)
+            // The layout and the settle stop at their next check when the job is cancelled.
+            let flag = opts.cancel.clone().unwrap_or_default();
+            sw_geom::cancel::scope(&flag, || sw_pipeline::generate(&prompt, &dir, &opts, &mut on_event))
         })
         .await
         .map_err(|e| format!("the pipeline crashed: {e}"))?;

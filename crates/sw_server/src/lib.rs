@@ -13,6 +13,7 @@ mod dataset_jobs;
 mod edit_jobs;
 mod error;
 pub mod forge;
+pub mod http;
 mod metrics;
 mod openapi;
 mod routes_auth;
@@ -22,6 +23,7 @@ mod routes_misc;
 mod routes_refine;
 mod routes_scenes;
 mod scratch;
+mod throttle;
 mod thumbnail;
 pub mod web;
 mod worker;
@@ -41,12 +43,16 @@ use tokio::sync::broadcast;
 
 pub use auth::{Claims, Tokens, hash_password};
 pub use error::ApiError;
+pub use http::HttpOptions;
+pub use throttle::AuthLimits;
 pub use worker::{RunnerConfig, run_workers};
 
 /// The largest request body, bytes (a prompt may be at most [`PROMPT_LIMIT`]).
 pub const BODY_LIMIT: usize = 1 << 20;
-/// The largest prompt or edit command, bytes.
-pub const PROMPT_LIMIT: usize = 64 * 1024;
+/// The largest prompt or edit command, bytes (the offline planner's own bound).
+pub const PROMPT_LIMIT: usize = sw_planner::MAX_PROMPT_BYTES;
+/// The most scenes one request may ask for (`variations`).
+pub const MAX_VARIATIONS: u32 = 10;
 
 /// How the service runs.
 #[derive(Debug, Clone)]
@@ -68,6 +74,10 @@ pub struct ServerConfig {
     /// Print `listening on http://ADDR` on stderr, for scripts (off when every stderr line
     /// must be a JSON log record; the `serving` event carries `addr` too).
     pub listen_line: bool,
+    /// Header timeout and shutdown grace of connections.
+    pub http: HttpOptions,
+    /// Wrong sign-ins and registrations allowed per window.
+    pub auth_limits: AuthLimits,
 }
 
 impl ServerConfig {
@@ -82,6 +92,8 @@ impl ServerConfig {
             token_ttl_s: 3600,
             web_dir: web::default_dir(),
             listen_line: true,
+            http: HttpOptions::default(),
+            auth_limits: AuthLimits::default(),
         }
     }
 }
@@ -106,6 +118,9 @@ pub struct AppState {
     pub forge: Arc<forge::AssetForge>,
     /// Compressed bodies of immutable answers (scene files), shared by every request.
     pub gzip: Arc<compress::GzipCache>,
+    /// Wrong sign-ins and registrations seen (per name and client address).
+    pub throttle: Arc<throttle::Throttle>,
+    pub auth_limits: AuthLimits,
 }
 
 /// A problem starting the service.
@@ -129,9 +144,23 @@ pub async fn open_data(
     database_url: Option<&str>,
 ) -> Result<(Store, Arc<dyn BlobStore>), StartError> {
     fs_err::create_dir_all(data_dir).map_err(|e| StartError::Io { path: data_dir.display().to_string(), source: e })?;
+    // Only the service's own user reads the data: the database holds the token secret and
+    // every user's password hash.
+    private(data_dir, 0o700)?;
     let store = match database_url {
         Some(url) => Store::open(url).await?,
-        None => Store::open_sqlite(&data_dir.join("scenewright.db")).await?,
+        None => {
+            let db = data_dir.join("scenewright.db");
+            let store = Store::open_sqlite(&db).await?;
+            // SQLite makes its -wal and -shm files with the database's own mode.
+            for f in ["scenewright.db", "scenewright.db-wal", "scenewright.db-shm"] {
+                let p = data_dir.join(f);
+                if p.exists() {
+                    private(&p, 0o600)?;
+                }
+            }
+            store
+        }
     };
     let blobs: Arc<dyn BlobStore> = match S3Config::from_env() {
         Some(config) => {
@@ -145,6 +174,19 @@ pub async fn open_data(
         None => Arc::new(LocalBlobs::new(data_dir.join("blobs"))?),
     };
     Ok((store, blobs))
+}
+
+/// Makes `path` readable by its owner only (`mode`: 0o700 for a directory, 0o600 a file).
+fn private(path: &std::path::Path, mode: u32) -> Result<(), StartError> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(path, std::fs::Permissions::from_mode(mode))
+            .map_err(|e| StartError::Io { path: path.display().to_string(), source: e })?;
+    }
+    #[cfg(not(unix))]
+    let _ = (path, mode);
+    Ok(())
 }
 
 impl AppState {
@@ -179,6 +221,8 @@ impl AppState {
             forge,
             gzip: Arc::new(compress::GzipCache::default()),
             wake: Arc::new(tokio::sync::Notify::new()),
+            throttle: Arc::new(throttle::Throttle::default()),
+            auth_limits: AuthLimits::default(),
         })
     }
 }
@@ -191,7 +235,9 @@ pub fn router(state: AppState) -> Router {
         .route("/api/openapi.json", get(openapi::document))
         .route("/api/auth/register", post(routes_auth::register))
         .route("/api/auth/login", post(routes_auth::login))
+        .route("/api/auth/logout", post(routes_auth::logout))
         .route("/api/auth/keys", post(routes_auth::create_key).get(routes_auth::list_keys))
+        .route("/api/auth/keys/{id}", axum::routing::delete(routes_auth::delete_key))
         .route("/api/me", get(routes_auth::me))
         .route("/api/options", get(routes_misc::options))
         .route("/api/refine", post(routes_refine::refine))
@@ -199,7 +245,7 @@ pub fn router(state: AppState) -> Router {
         .route("/api/jobs/{id}", get(routes_jobs::show).delete(routes_jobs::cancel))
         .route("/api/jobs/{id}/events", get(ws::events))
         .route("/api/scenes", get(routes_scenes::list))
-        .route("/api/scenes/{id}", get(routes_scenes::show))
+        .route("/api/scenes/{id}", get(routes_scenes::show).delete(routes_scenes::delete))
         .route("/api/scenes/{id}/files/{*path}", get(routes_scenes::file))
         .route("/api/scenes/{id}/package.zip", get(routes_scenes::package_zip))
         .route("/api/scenes/{id}/edits", post(routes_edits::edit))
@@ -214,6 +260,7 @@ pub fn router(state: AppState) -> Router {
         .layer(axum::middleware::from_fn_with_state(Arc::clone(&state.gzip), compress::layer))
         .layer(axum::middleware::from_fn_with_state(state.clone(), metrics::track))
         .layer(DefaultBodyLimit::max(BODY_LIMIT))
+        .layer(axum::middleware::from_fn(http::security_headers))
         .with_state(state)
 }
 
@@ -224,6 +271,7 @@ pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
     let mut state = AppState::new(store, blobs, config.limits, config.runner.clone(), config.token_ttl_s)
         .await?
         .with_asset_store(forge::store_location(&config.data_dir));
+    state.auth_limits = config.auth_limits;
     state.web_dir = config.web_dir.clone().filter(|d| d.join("index.html").is_file());
     match &state.web_dir {
         Some(d) => tracing::info!(dir = %d.display(), "serving the web app"),
@@ -233,8 +281,23 @@ pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
     if !recovered.requeued.is_empty() || !recovered.failed.is_empty() {
         tracing::warn!(requeued = ?recovered.requeued, failed = ?recovered.failed, "recovered jobs of lost runners");
     }
+    // One shutdown for both halves: SIGTERM or Ctrl-C stops accepting, ends the jobs this
+    // process runs (their pipelines stop at their next check and the jobs go back to the
+    // queue) and closes what is left after the grace period.
+    let (stop_tx, stop_rx) = tokio::sync::watch::channel(false);
+    tokio::spawn(async move {
+        shutdown_signal().await;
+        tracing::info!("stopping");
+        let _ = stop_tx.send(true);
+    });
+    let stopped = move || {
+        let mut rx = stop_rx.clone();
+        async move {
+            let _ = rx.wait_for(|s| *s).await;
+        }
+    };
     // The scratch of dead processes is gone before the address is announced.
-    let runners = worker::start_workers(state.clone(), config.workers, shutdown_signal())?;
+    let runners = worker::start_workers(state.clone(), config.workers, stopped())?;
     let app = router(state.clone());
     let listener = tokio::net::TcpListener::bind(config.addr)
         .await
@@ -245,11 +308,12 @@ pub async fn serve(config: ServerConfig) -> Result<(), StartError> {
         // Scripts (and the tests) read the address from this line.
         eprintln!("listening on http://{local}");
     }
-    axum::serve(listener, app)
-        .with_graceful_shutdown(shutdown_signal())
+    http::serve(listener, app, config.http, stopped())
         .await
         .map_err(|e| StartError::Io { path: local.to_string(), source: e })?;
-    let _ = tokio::time::timeout(Duration::from_secs(5), runners).await;
+    if tokio::time::timeout(Duration::from_secs(10), runners).await.is_err() {
+        tracing::warn!("job runners still busy after 10 s; their jobs run again after their lease");
+    }
     Ok(())
 }
 

@@ -11,7 +11,8 @@ use axum::middleware::Next;
 use axum::response::{IntoResponse, Response};
 
 use crate::AppState;
-use crate::error::ApiResult;
+use crate::auth::Caller;
+use crate::error::{ApiError, ApiResult};
 
 /// This process's counters.
 #[derive(Debug, Default)]
@@ -19,6 +20,8 @@ pub struct Counters {
     pub requests: AtomicU64,
     pub client_errors: AtomicU64,
     pub server_errors: AtomicU64,
+    /// Pipeline threads running in this process (a cancelled job's stop within a second).
+    pub pipelines: std::sync::Arc<std::sync::atomic::AtomicI64>,
 }
 
 /// Counts requests by outcome and logs each with its status.
@@ -37,7 +40,12 @@ pub async fn track(State(s): State<AppState>, req: Request, next: Next) -> Respo
     r
 }
 
-pub async fn metrics(State(s): State<AppState>) -> ApiResult<Response> {
+/// `GET /metrics` (admins: an admin's token or API key, e.g. a scraper's
+/// `Authorization: Bearer swk_…`) → Prometheus text.
+pub async fn metrics(State(s): State<AppState>, caller: Caller) -> ApiResult<Response> {
+    if !caller.is_admin() {
+        return Err(ApiError::new(axum::http::StatusCode::FORBIDDEN, "the metrics need the admin role"));
+    }
     let mut out = String::new();
     let counts = s.store.count_by_state().await?;
     let _ = writeln!(out, "# HELP scenewright_jobs Jobs by state.\n# TYPE scenewright_jobs gauge");
@@ -50,6 +58,11 @@ pub async fn metrics(State(s): State<AppState>) -> ApiResult<Response> {
         "# HELP scenewright_queue_depth Jobs waiting to be claimed.\n# TYPE scenewright_queue_depth gauge"
     );
     let _ = writeln!(out, "scenewright_queue_depth {queued}");
+    let _ = writeln!(
+        out,
+        "# HELP scenewright_pipelines_running Pipeline threads working in this process (a cancelled or timed-out job's stop within a second).\n# TYPE scenewright_pipelines_running gauge"
+    );
+    let _ = writeln!(out, "scenewright_pipelines_running {}", s.metrics.pipelines.load(Ordering::SeqCst));
 
     let totals = s.store.telemetry_totals().await?;
     let _ = writeln!(

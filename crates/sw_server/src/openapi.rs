@@ -32,7 +32,8 @@ pub fn spec() -> Value {
     let job_req = json!({ "type": "object", "required": ["prompt"], "additionalProperties": false, "properties": {
         "prompt": { "type": "string", "maxLength": crate::PROMPT_LIMIT, "description": "what the scene holds, in English (at most 64 KiB)" },
         "seed": { "type": "integer", "minimum": 0 },
-        "robots": { "type": "array", "items": { "type": "string" }, "description": "registry robots instead of the prompt's" },
+        "variations": { "type": "integer", "minimum": 1, "maximum": crate::MAX_VARIATIONS, "description": "scenes to make, one per seed from `seed` up; queued together or not at all" },
+        "robots": { "type": "array", "maxItems": sw_plan::MAX_ROBOTS, "items": { "type": "string" }, "description": "registry robots instead of the prompt's (at most 16; \"none\" entries not counted)" },
         "options": { "type": "object", "additionalProperties": false, "properties": {
             "verify": { "type": "boolean", "default": true }, "rules": { "type": "string" },
             "anomaly": { "type": "object", "required": ["kinds", "rate"], "properties": {
@@ -44,27 +45,31 @@ pub fn spec() -> Value {
         "info": { "title": "scenewright", "version": env!("CARGO_PKG_VERSION"),
                   "description": "Plain-English descriptions in, verified MuJoCo scenes out. Another user's job, scene or asset answers 404 exactly as a missing one." },
         "paths": {
-            "/healthz": { "get": op("Health: 200 when the database answers", false, None, ("200", "ok"), &["500"]) },
-            "/metrics": { "get": op("Prometheus metrics", false, None, ("200", "text exposition format"), &[]) },
+            "/healthz": { "get": op("Health: 200 when the database answers and the database and package store can write; 503 (with Retry-After) naming which cannot", false, None, ("200", "ok"), &["503"]) },
+            "/metrics": { "get": op("Prometheus metrics (admins; a scraper uses an admin's API key)", true, None, ("200", "text exposition format"), &["401", "403"]) },
             "/api/openapi.json": { "get": op("This document", false, None, ("200", "OpenAPI 3.1"), &[]) },
             "/api/auth/register": { "post": op("Create a user (the first is the admin)", false, Some(creds.clone()), ("201", "the user"), &["400", "409", "415", "422"]) },
-            "/api/auth/login": { "post": op("Log in: an access token (JWT, HS256)", false, Some(creds), ("200", "{token, token_type, expires_in}"), &["400", "401", "422"]) },
+            "/api/auth/login": { "post": op("Log in (names in any case): an access token (JWT, HS256); 429 with Retry-After after repeated wrong passwords", false, Some(creds), ("200", "{token, token_type, expires_in, username}"), &["400", "401", "422", "429"]) },
+            "/api/auth/logout": { "post": op("Revoke the access token of this request (signing out)", true, None, ("204", "revoked"), &["401", "422"]) },
+            "/api/auth/keys/{id}": { "parameters": [id_param("id")],
+                "delete": op("Revoke one of the caller's API keys: it stops working at once", true, None, ("204", "revoked"), &["401", "404"]) },
             "/api/auth/keys": { "post": op("Create an API key for scripts (shown once)", true,
                 Some(json!({ "type": "object", "required": ["name"], "properties": { "name": { "type": "string" } } })), ("201", "{id, name, key}"), &["401", "422"]) },
             "/api/me": { "get": op("The caller", true, None, ("200", "the user"), &["401"]) },
             "/api/jobs": {
-                "post": op("Queue a scene generation", true, Some(job_req), ("202", "{job_id, state}"), &["400", "401", "413", "415", "422", "429"]),
-                "get": op("The caller's jobs, newest first", true, None, ("200", "{jobs}"), &["401"]) },
+                "post": op("Queue a scene generation (or `variations` of it); everything that scales the work is checked first (422 says which bound); 429 with Retry-After when the queue or the caller's share of it is full", true, Some(job_req), ("202", "{job_id, job_ids, state}"), &["400", "401", "413", "415", "422", "429", "503"]),
+                "get": op("The caller's jobs, newest first (?limit=1..200)", true, None, ("200", "{jobs}"), &["401", "422"]) },
             "/api/jobs/{id}": {
                 "parameters": [id_param("id")],
                 "get": op("A job: state, stage, attempts, queue wait, error, scene_id", true, None, ("200", "the job"), &jobs_auth),
                 "delete": op("Cancel a job (a queued job never runs; a running job's result is discarded)", true, None, ("200", "the job"), &jobs_auth) },
             "/api/jobs/{id}/events": {
                 "parameters": [id_param("id")],
-                "get": op("WebSocket: one JSON message per event (queued, started, stage_started, stage_finished, object, note, warning, requeued, error, cancelled, finished), then `result`; token in the header or ?token=", true, None, ("101", "switching protocols"), &jobs_auth) },
+                "get": op("WebSocket: one JSON message per event (queued, started, stage_started, stage_finished, object, note, warning, requeued, error, cancelled, finished), then `result`; token in the header or ?token= (the only route that takes one in the URL)", true, None, ("101", "switching protocols"), &jobs_auth) },
             "/api/scenes": { "get": op("The caller's scenes", true, None, ("200", "{scenes}"), &["401"]) },
             "/api/scenes/{id}": { "parameters": [id_param("id")],
-                "get": op("A scene: metadata, report.json, files, edit history", true, None, ("200", "the scene"), &jobs_auth) },
+                "get": op("A scene: metadata, report.json, files, edit history", true, None, ("200", "the scene"), &jobs_auth),
+                "delete": op("Delete the scene with every version of its lineage, and their files", true, None, ("200", "{deleted}"), &jobs_auth) },
             "/api/scenes/{id}/files/{path}": { "parameters": [id_param("id"), { "name": "path", "in": "path", "required": true, "schema": { "type": "string" } }],
                 "get": op("One file of the package (scene.xml, assets/…)", true, None, ("200", "the file"), &jobs_auth) },
             "/api/scenes/{id}/package.zip": { "parameters": [id_param("id")],

@@ -1,7 +1,7 @@
 //! Jobs: submit, list, show, cancel; the admin's overview.
 
 use axum::Json;
-use axum::extract::{Path, State};
+use axum::extract::{Path, Query, State};
 use axum::http::StatusCode;
 use serde::Deserialize;
 use serde_json::{Value, json};
@@ -24,6 +24,10 @@ pub struct JobRequest {
     robots: Option<Vec<String>>,
     #[serde(default)]
     options: Option<JobOptions>,
+    /// Scenes to make, one per seed from `seed` up (1 to [`crate::MAX_VARIATIONS`]); all
+    /// are queued or none.
+    #[serde(default)]
+    variations: Option<u32>,
 }
 
 /// Pipeline options a job may set.
@@ -65,13 +69,27 @@ pub fn job_json(j: &Job) -> Value {
     v
 }
 
-/// `POST /api/jobs` → 202 `{job_id, state}`; 429 when the queue is full.
+/// `POST /api/jobs` → 202 `{job_id, job_ids, state}`; 429 with `Retry-After` when the
+/// queue, or the caller's share of it, is full. Everything that scales the work is bounded
+/// here, before anything is queued: the prompt's length, the robots, the objects the
+/// prompt asks for, the variations.
 pub async fn create(
     State(s): State<AppState>,
     caller: Caller,
     Body(r): Body<JobRequest>,
 ) -> ApiResult<(StatusCode, Json<Value>)> {
     check_text("prompt", &r.prompt)?;
+    let variations = r.variations.unwrap_or(1);
+    if !(1..=crate::MAX_VARIATIONS).contains(&variations) {
+        return Err(ApiError::unprocessable(format!(
+            "variations: 1 to {} scenes per request, got {variations}",
+            crate::MAX_VARIATIONS
+        )));
+    }
+    let seed = r.seed.unwrap_or(0);
+    if seed.checked_add(u64::from(variations - 1)).is_none_or(|last| last > i64::MAX as u64) {
+        return Err(ApiError::unprocessable(format!("seed: at most {} (with its variations)", i64::MAX)));
+    }
     let opts = r.options.unwrap_or_default();
     if let Some(p) = &opts.rules
         && !sw_layout_profiles().contains(p)
@@ -90,7 +108,14 @@ pub async fn create(
         ));
     }
     if let Some(robots) = &r.robots {
-        for name in robots {
+        let wanted = robots.iter().filter(|n| !n.trim().eq_ignore_ascii_case("none")).count();
+        if wanted > sw_plan::MAX_ROBOTS as usize {
+            return Err(ApiError::unprocessable(format!(
+                "robots: at most {} per scene, got {wanted}",
+                sw_plan::MAX_ROBOTS
+            )));
+        }
+        for name in robots.iter().filter(|n| !n.trim().eq_ignore_ascii_case("none")) {
             if sw_robots::find(name).is_none() {
                 return Err(ApiError::new(
                     StatusCode::UNPROCESSABLE_ENTITY,
@@ -99,33 +124,68 @@ pub async fn create(
             }
         }
     }
+    // Without a plan model, the offline planner is the reader: a prompt it refuses, or one
+    // asking for more objects than a scene may hold, is answered now.
+    if s.runner.llm.as_ref().and_then(|c| c.endpoint(sw_llm::LlmStage::Plan)).is_none() {
+        let prompt = r.prompt.clone();
+        let read = tokio::task::spawn_blocking(move || sw_planner::plan(&prompt)).await.map_err(ApiError::internal)?;
+        match read {
+            Err(e) => return Err(ApiError::unprocessable(e.to_string())),
+            Ok(plan) => {
+                if let Some(cut) = plan.understanding.approximated.iter().find(|a| a.reason.ends_with("per scene")) {
+                    return Err(ApiError::unprocessable(format!(
+                        "\"{}\": {} (it would become {}); ask for fewer",
+                        cut.text, cut.reason, cut.became
+                    )));
+                }
+            }
+        }
+    }
     let mut options = json!(opts);
     if let Some(robots) = &r.robots {
         options["robots"] = json!(robots);
     }
-    let new = NewJob {
-        user_id: caller.user.id.clone(),
-        kind: JobKind::Generate,
-        prompt: r.prompt,
-        seed: r.seed.unwrap_or(0),
-        options,
-        parent_scene_id: None,
-        timeout_ms: s.runner.job_timeout_ms,
-        max_attempts: s.runner.max_attempts,
-    };
-    let job = s.store.enqueue(&new, s.limits).await?;
-    s.wake.notify_one();
-    tracing::info!(job = %job.id, user = %caller.user.id, "job queued");
-    Ok((StatusCode::ACCEPTED, Json(json!({ "job_id": job.id, "state": job.state }))))
+    let news: Vec<NewJob> = (0..u64::from(variations))
+        .map(|k| NewJob {
+            user_id: caller.user.id.clone(),
+            kind: JobKind::Generate,
+            prompt: r.prompt.clone(),
+            seed: seed + k,
+            options: options.clone(),
+            parent_scene_id: None,
+            timeout_ms: s.runner.job_timeout_ms,
+            max_attempts: s.runner.max_attempts,
+        })
+        .collect();
+    let jobs = s.store.enqueue_all(&news, s.limits).await?;
+    for _ in &jobs {
+        s.wake.notify_one();
+    }
+    let ids: Vec<&str> = jobs.iter().map(|j| j.id.as_str()).collect();
+    tracing::info!(jobs = ?ids, user = %caller.user.id, "job queued");
+    let first = jobs.first().ok_or_else(|| ApiError::internal("no job was queued"))?;
+    Ok((StatusCode::ACCEPTED, Json(json!({ "job_id": first.id, "job_ids": ids, "state": first.state }))))
 }
 
 fn sw_layout_profiles() -> Vec<String> {
     sw_layout::rules::profile_names()
 }
 
-/// `GET /api/jobs` → the caller's jobs, newest first.
-pub async fn list(State(s): State<AppState>, caller: Caller) -> ApiResult<Json<Value>> {
-    let jobs = s.store.jobs_of(&caller.user.id, 200).await?;
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ListQuery {
+    /// How many (1 to 200, default 200).
+    #[serde(default)]
+    limit: Option<i64>,
+}
+
+/// `GET /api/jobs?limit=N` → the caller's newest `N` jobs (1 to 200), newest first.
+pub async fn list(State(s): State<AppState>, caller: Caller, Query(q): Query<ListQuery>) -> ApiResult<Json<Value>> {
+    let limit = q.limit.unwrap_or(200);
+    if !(1..=200).contains(&limit) {
+        return Err(ApiError::unprocessable(format!("limit: 1 to 200, got {limit}")));
+    }
+    let jobs = s.store.jobs_of(&caller.user.id, limit).await?;
     Ok(Json(json!({ "jobs": jobs.iter().map(job_json).collect::<Vec<_>>() })))
 }
 

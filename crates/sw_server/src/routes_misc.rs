@@ -16,10 +16,29 @@ use crate::body::Body;
 use crate::error::{ApiError, ApiResult};
 use crate::forge::ForgeError;
 
-/// `GET /healthz` → 200 when the database answers.
-pub async fn healthz(State(s): State<AppState>) -> ApiResult<Json<Value>> {
-    s.store.count_by_state().await?;
-    Ok(Json(json!({ "status": "ok", "version": env!("CARGO_PKG_VERSION") })))
+/// `GET /healthz` → 200 when the database answers and can write (a write is tried each
+/// time: a full disk reads fine), else 503 saying which.
+pub async fn healthz(State(s): State<AppState>) -> Response {
+    let unhealthy = |what: &str, e: &dyn std::fmt::Display| {
+        tracing::warn!(error = %e, "health: {what}");
+        let body = json!({ "status": "unavailable", "problem": what, "version": env!("CARGO_PKG_VERSION") });
+        let mut r = (StatusCode::SERVICE_UNAVAILABLE, Json(body)).into_response();
+        r.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(crate::error::STORAGE_RETRY_S));
+        r
+    };
+    if let Err(e) = s.store.count_by_state().await {
+        return unhealthy("the database does not answer", &e);
+    }
+    if let Err(e) = s.store.probe_write().await {
+        return unhealthy("the database cannot write (is its disk full?)", &e);
+    }
+    let blobs = s.blobs.clone();
+    match tokio::task::spawn_blocking(move || blobs.put("health/probe", b"ok")).await {
+        Ok(Ok(())) => {}
+        Ok(Err(e)) => return unhealthy("the package store cannot write (is its disk full?)", &e),
+        Err(e) => return unhealthy("the package store's check crashed", &e),
+    }
+    Json(json!({ "status": "ok", "version": env!("CARGO_PKG_VERSION") })).into_response()
 }
 
 /// `GET /api/robots` → the registry's robots.
@@ -58,24 +77,20 @@ fn catalog_matches(q: &str) -> Vec<Value> {
         .collect()
 }
 
-/// The catalog category a description names: its registry name, display name or a
-/// synonym, exactly or as the longest phrase inside the description.
+/// The catalog category a description is of: the offline planner reads it as it reads a
+/// prompt, and the description is of its first object — "a trophy on a pedestal" is a
+/// trophy (the pedestal is where it stands), "a red office chair" is a chair. A first
+/// object the catalog does not hold (a proxy) is made by the forge.
 fn match_category(description: &str) -> Option<&'static sw_catalog::Category> {
-    let d = description.trim().to_lowercase();
-    let padded = format!(" {} ", d.replace(|c: char| !c.is_alphanumeric(), " "));
-    let mut best: Option<(&'static sw_catalog::Category, usize)> = None;
-    for c in sw_catalog::categories() {
-        let underscored = c.name.replace('_', " ");
-        for phrase in [c.display, underscored.as_str()].into_iter().chain(c.synonyms.iter().copied()) {
-            if phrase == d {
-                return Some(c);
-            }
-            if padded.contains(&format!(" {phrase} ")) && best.is_none_or(|b| phrase.len() > b.1) {
-                best = Some((c, phrase.len()));
-            }
-        }
+    let plan = sw_planner::plan(description).ok()?;
+    let first = plan.objects.iter().min_by_key(|o| {
+        let phrase = o.phrase.to_lowercase();
+        description.to_lowercase().find(&phrase).unwrap_or(usize::MAX)
+    })?;
+    if first.proxy.is_some() {
+        return None;
     }
-    best.map(|b| b.0)
+    sw_catalog::find(&first.category)
 }
 
 /// The caller's generated assets nearest in meaning to `q` (the asset library's
@@ -118,6 +133,7 @@ pub async fn assets(State(s): State<AppState>, caller: Caller, Query(q): Query<A
         match similar(&s, &caller.user.id, q.q.trim()).await {
             Ok(v) => (v, None),
             Err(e) => {
+                let e = crate::error::scrub_paths(&e);
                 (Vec::new(), Some(format!("search by meaning is unavailable ({e}); parts are matched by their words")))
             }
         }
@@ -174,8 +190,12 @@ async fn make_asset(s: &AppState, user_id: &str, r: AssetRequest, report: Report
                     return Err(ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, e.to_string()));
                 }
                 Err(e @ ForgeError::Unavailable(_)) => {
+                    // Logged in full; answered with what to run, never the server's paths.
                     tracing::error!("{e}");
-                    return Err(ApiError::new(StatusCode::SERVICE_UNAVAILABLE, e.to_string()));
+                    return Err(ApiError::new(
+                        StatusCode::SERVICE_UNAVAILABLE,
+                        format!("the asset studio cannot make parts on this server: {e}"),
+                    ));
                 }
             }
         }
@@ -296,4 +316,24 @@ pub async fn options(_caller: Caller) -> Json<Value> {
         "rules_profiles": sw_layout::rules::profile_names(),
         "anomaly_kinds": ["overlap", "scale", "misplacement", "floating", "rule_violation"],
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::match_category;
+
+    #[test]
+    fn a_description_is_of_its_first_object_not_of_what_it_stands_on() {
+        let cat = |d: &str| match_category(d).map(|c| c.name);
+        // What it stands on, beside or under is not what is described.
+        assert_eq!(cat("a trophy on a pedestal"), None, "a trophy, made by the forge");
+        assert_eq!(cat("a vase on a table"), None);
+        assert_ne!(cat("a lamp next to a shelf"), Some("shelf"), "a lamp, whatever it stands beside");
+        // The thing itself, in the catalog.
+        assert_eq!(cat("pedestal"), Some("pedestal"));
+        assert_eq!(cat("a red office chair"), Some("chair"));
+        assert_eq!(cat("a table with two mugs on it"), Some("table"));
+        // Dimensioned parts go to the forge.
+        assert_eq!(cat("a flat washer: outer diameter 120mm, inner diameter 40mm, thickness 10mm"), None);
+    }
 }

@@ -27,7 +27,7 @@ fn summary(sc: &Scene) -> Value {
     json!({
         "id": sc.id, "job_id": sc.job_id, "parent_id": sc.parent_id, "version": sc.version,
         "prompt": sc.prompt, "scene_prompt": sc.report.get("prompt").and_then(Value::as_str).unwrap_or(&sc.prompt),
-        "status": sc.status, "created_at": sc.created_at,
+        "status": sc.status, "created_at": sc.created_at, "seed": sc.report.get("seed").and_then(Value::as_u64),
     })
 }
 
@@ -86,7 +86,27 @@ pub async fn file(
     let blobs = s.blobs.clone();
     let data = tokio::task::spawn_blocking(move || blobs.get(&key)).await.map_err(ApiError::internal)??;
     let data = data.ok_or_else(|| ApiError::internal(format!("scene {} lost its file {path}", sc.id)))?;
+    check_stored(&s, &sc.id, &path, &data).await?;
     Ok(([(header::CONTENT_TYPE, content_type(&path).to_string()), cache, (header::ETAG, etag)], data).into_response())
+}
+
+/// Refuses to serve a stored file whose bytes are not the ones stored with the scene (a
+/// damaged disk, a hand-edited blob): 500 with what is wrong, never the wrong bytes.
+async fn check_stored(s: &AppState, scene: &str, path: &str, data: &[u8]) -> ApiResult<()> {
+    match s.store.file_hash(scene, path).await? {
+        Some(h) if h != crate::worker::sha256_hex(data) => {
+            tracing::error!(scene, file = path, "a stored file does not match its checksum");
+            Err(damaged(path))
+        }
+        _ => Ok(()),
+    }
+}
+
+fn damaged(path: &str) -> ApiError {
+    ApiError::new(
+        StatusCode::INTERNAL_SERVER_ERROR,
+        format!("the stored file {path} of this scene is damaged (its checksum does not match); it is not served"),
+    )
 }
 
 /// `GET /api/scenes/{id}/package.zip` → the package as a zip (stored, not compressed).
@@ -95,12 +115,17 @@ pub async fn package_zip(State(s): State<AppState>, caller: Caller, Path(id): Pa
     let blobs = s.blobs.clone();
     let scene_id = sc.id.clone();
     let files = sc.files.clone();
+    let hashes = s.store.file_hashes(&sc.id).await?;
     let zip = tokio::task::spawn_blocking(move || -> Result<Vec<u8>, ApiError> {
         let mut w = crate::zip::ZipWriter::default();
         for f in &files {
             let data = blobs
                 .get(&format!("scenes/{scene_id}/{f}"))?
                 .ok_or_else(|| ApiError::internal(format!("scene {scene_id} lost its file {f}")))?;
+            if hashes.get(f).is_some_and(|h| *h != crate::worker::sha256_hex(&data)) {
+                tracing::error!(scene = %scene_id, file = %f, "a stored file does not match its checksum");
+                return Err(damaged(f));
+            }
             w.add(f, &data);
         }
         Ok(w.finish())
@@ -110,4 +135,27 @@ pub async fn package_zip(State(s): State<AppState>, caller: Caller, Path(id): Pa
     let disposition = format!("attachment; filename=\"scene_{}.zip\"", sc.id);
     Ok(([(header::CONTENT_TYPE, "application/zip".to_string()), (header::CONTENT_DISPOSITION, disposition)], zip)
         .into_response())
+}
+
+/// `DELETE /api/scenes/{id}` → 200 `{deleted: [ids]}`: the scene and every version of its
+/// lineage (the first version and all edits of it), with their files.
+pub async fn delete(State(s): State<AppState>, caller: Caller, Path(id): Path<String>) -> ApiResult<Json<Value>> {
+    let sc = owned_scene(&s, &caller, &id).await?;
+    let ids = s.store.delete_lineage(&sc.id, &caller.user.id).await?;
+    let blobs = s.blobs.clone();
+    let gone = ids.clone();
+    let removed = tokio::task::spawn_blocking(move || {
+        for id in &gone {
+            blobs.delete_prefix(&format!("scenes/{id}/"))?;
+        }
+        Ok::<(), sw_store::BlobError>(())
+    })
+    .await
+    .map_err(ApiError::internal)?;
+    if let Err(e) = removed {
+        // The rows are gone; files left behind are only space, never served again.
+        tracing::warn!(error = %e, "removing a deleted scene's files failed");
+    }
+    tracing::info!(user = %caller.user.id, scenes = ?ids, "scenes deleted");
+    Ok(Json(json!({ "deleted": ids })))
 }

@@ -62,10 +62,11 @@ impl RunnerConfig {
     }
 }
 
-/// Runs `n` job runners and the recovery loop until `shutdown` resolves; each runner
-/// finishes the job it holds first (unless the process dies, when its lease expires and
-/// the job is run again elsewhere). Before they start, the scratch left in the work root
-/// by processes that died is removed.
+/// Runs `n` job runners and the recovery loop until `shutdown` resolves. A runner then
+/// stops the job it holds — its pipeline ends at its next cancellation check — and gives
+/// it back to the queue, so the next process to run jobs makes it (a process that dies
+/// instead loses its lease, and the job runs again elsewhere after it). Before they start,
+/// the scratch left in the work root by processes that died is removed.
 pub async fn run_workers(
     state: AppState,
     n: usize,
@@ -138,6 +139,7 @@ async fn run_loops(
     };
     shutdown.await;
     stop.store(true, Ordering::Relaxed);
+    tracing::info!("job runners stopping: the jobs they hold go back to the queue");
     for _ in 0..n {
         wake.notify_one();
     }
@@ -153,7 +155,7 @@ async fn runner(state: AppState, name: String, work: PathBuf, stop: Arc<AtomicBo
         match state.store.claim(&name, state.runner.lease_ms, state.limits).await {
             Ok(Some(claim)) => {
                 let span = tracing::info_span!("job", job = %claim.job.id, attempt = claim.attempt, worker = %name);
-                run_job(&state, claim, &work).instrument(span).await;
+                run_job(&state, claim, &work, &stop).instrument(span).await;
             }
             Ok(None) => {
                 let _ = tokio::time::timeout(Duration::from_millis(state.runner.poll_ms), state.wake.notified()).await;
@@ -182,21 +184,39 @@ struct Made {
     edit: Option<Value>,
 }
 
-async fn run_job(state: &AppState, claim: Claim, work: &Path) {
+async fn run_job(state: &AppState, claim: Claim, work: &Path, stopping: &Arc<AtomicBool>) {
     let job = claim.job.clone();
     tracing::info!(kind = job.kind.as_str(), "job started");
     emit(state, &job.id, json!({"event": "started", "attempt": claim.attempt})).await;
 
-    // Keep the lease alive; notice when the claim is lost (cancelled, timed out, taken over).
+    // Keep the lease alive; notice when the claim is lost (cancelled, timed out, taken
+    // over) or the process is stopping: either sets the pipeline's cancel flag, and the
+    // pipeline stops at its next check (between stages, and inside the layout's and the
+    // verification's loops).
     let lost = Arc::new(AtomicBool::new(false));
     let heartbeat = {
-        let (store, claim, lost) = (state.store.clone(), claim.clone(), lost.clone());
+        let (store, claim, lost, stopping) = (state.store.clone(), claim.clone(), lost.clone(), stopping.clone());
         let lease = state.runner.lease_ms;
+        let beat = Duration::from_millis((lease / 3).max(10) as u64);
         tokio::spawn(
             async move {
+                let mut last = tokio::time::Instant::now();
                 loop {
-                    tokio::time::sleep(Duration::from_millis((lease / 3).max(10) as u64)).await;
-                    match store.heartbeat(&claim, lease).await {
+                    // Looked at often: a cancelled job's runner learns of it within the
+                    // check interval, not a third of a lease later.
+                    tokio::time::sleep(CHECK_INTERVAL.min(beat)).await;
+                    if stopping.load(Ordering::Relaxed) {
+                        lost.store(true, Ordering::Relaxed);
+                        break;
+                    }
+                    let renew = last.elapsed() >= beat;
+                    let still = if renew {
+                        last = tokio::time::Instant::now();
+                        store.heartbeat(&claim, lease).await
+                    } else {
+                        store.still_running(&claim).await
+                    };
+                    match still {
                         Ok(true) => {}
                         Ok(false) => {
                             lost.store(true, Ordering::Relaxed);
@@ -233,8 +253,26 @@ async fn run_job(state: &AppState, claim: Claim, work: &Path) {
     let _ = forwarder.await;
     heartbeat.abort();
 
+    if stopping.load(Ordering::Relaxed) {
+        // The process is stopping: a job its pipeline did not finish runs again in the next
+        // one (a finished one is stored below, as usual).
+        if result.is_err() {
+            match state.store.release(&claim, "the server stopped while it ran; it runs again").await {
+                Ok(true) => {
+                    tracing::info!("job given back to the queue");
+                    let _ = state.events.send(job.id.clone());
+                }
+                Ok(false) => {}
+                Err(e) => tracing::warn!(error = %e, "giving the job back failed; it runs again after its lease"),
+            }
+            return;
+        }
+    }
+
     match result {
         Err(message) => {
+            // The user reads it: it names files, never where the server keeps them.
+            let message = crate::error::scrub_paths(&message);
             if claim_still_ours(state, &claim, &lost).await {
                 match state.store.fail(&claim, &message).await {
                     Ok(true) => {
@@ -249,7 +287,8 @@ async fn run_job(state: &AppState, claim: Claim, work: &Path) {
         Ok((made, _tmp)) => {
             if let Err(e) = finish(state, &claim, made).await {
                 tracing::error!(error = %e, "storing the package failed");
-                let _ = state.store.fail(&claim, &format!("storing the package failed: {e}")).await;
+                let why = crate::error::scrub_paths(&format!("storing the package failed: {e}"));
+                let _ = state.store.fail(&claim, &why).await;
                 let _ = state.events.send(job.id.clone());
             }
         }
@@ -263,11 +302,32 @@ async fn claim_still_ours(state: &AppState, claim: &Claim, lost: &AtomicBool) ->
     matches!(state.store.job(&claim.job.id).await, Ok(Some(j)) if j.state == sw_store::JobState::Running && j.attempts == claim.attempt)
 }
 
+/// How often a running job's runner looks whether the job was cancelled.
+const CHECK_INTERVAL: Duration = Duration::from_millis(500);
+
+/// Counts a pipeline thread while it lives (`scenewright_pipelines_running`).
+struct Running(Arc<std::sync::atomic::AtomicI64>);
+
+impl Running {
+    fn start(n: &Arc<std::sync::atomic::AtomicI64>) -> Self {
+        n.fetch_add(1, Ordering::SeqCst);
+        Self(Arc::clone(n))
+    }
+}
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::SeqCst);
+    }
+}
+
 /// Runs the pipeline on a blocking thread within the job's remaining time.
 ///
 /// `stop` is the pipeline's cancel flag: the heartbeat sets it when the claim is lost
-/// (cancelled, timed out, taken over), and the time limit sets it here, so the thread
-/// stops at the next stage instead of finishing work nobody will keep.
+/// (cancelled, timed out, taken over) or the process stops, and the time limit sets it
+/// here. The pipeline runs inside `sw_geom::cancel::scope(stop)`, so it stops at its next
+/// check — between stages, and inside the layout's and the verification's loops — instead
+/// of finishing work nobody will keep.
 async fn run_pipeline(
     state: &AppState,
     claim: &Claim,
@@ -287,64 +347,72 @@ async fn run_pipeline(
         return Ok((Made { report, timings, dir, edit: None }, tmp));
     }
     let blobs = state.blobs.clone();
-    let parent_files = match &job.parent_scene_id {
+    let (parent_files, parent_hashes) = match &job.parent_scene_id {
         Some(p) => match state.store.scene_of(p, &job.user_id).await {
-            Ok(Some(sc)) => sc.files,
+            Ok(Some(sc)) => {
+                let hashes = state.store.file_hashes(p).await.map_err(|e| e.to_string())?;
+                (sc.files, hashes)
+            }
             Ok(None) => return Err(format!("the scene {p} to edit no longer exists")),
             Err(e) => return Err(e.to_string()),
         },
-        None => Vec::new(),
+        None => (Vec::new(), Default::default()),
     };
     let cancel = stop.clone();
     let llm = state.runner.llm.clone();
     let forge = Arc::clone(&state.forge);
     // The pipeline's thread logs in the job's span too (its stage spans nest in it).
     let span = tracing::Span::current();
+    let running = Arc::clone(&state.metrics.pipelines);
     let handle = tokio::task::spawn_blocking(move || {
         let _job = span.enter();
-        let mut on_event = |e: &Event| {
-            log_event(e);
-            let _ = tx.send(serde_json::to_value(e).unwrap_or_else(|_| json!({"event": "note"})));
-        };
-        match job.kind {
-            JobKind::Generate => {
-                let opts = Options { cancel: Some(cancel), ..options(&job.options, job.seed) };
-                // With a plan stage model, the LLM pipeline (as `scenewright llm generate`),
-                // its assets from the forge when the CAD stage has a model too.
-                let o = match llm.as_ref().filter(|c| c.endpoint(LlmStage::Plan).is_some()) {
-                    Some(cfg) => {
-                        let client = sw_llm::Client::new(cfg.clone());
-                        let mut run = sw_pipeline::LlmRun::new(client.clone());
-                        if cfg.endpoint(LlmStage::Cad).is_some() {
-                            match forge.source_for_job(&client) {
-                                Ok(source) => run.assets = source,
-                                Err(e) => tracing::warn!("{e}; novel objects keep labelled proxies"),
+        let _running = Running::start(&running);
+        let scope_flag = Arc::clone(&cancel);
+        sw_geom::cancel::scope(&scope_flag, || {
+            let mut on_event = |e: &Event| {
+                log_event(e);
+                let _ = tx.send(serde_json::to_value(e).unwrap_or_else(|_| json!({"event": "note"})));
+            };
+            match job.kind {
+                JobKind::Generate => {
+                    let opts = Options { cancel: Some(cancel), ..options(&job.options, job.seed) };
+                    // With a plan stage model, the LLM pipeline (as `scenewright llm generate`),
+                    // its assets from the forge when the CAD stage has a model too.
+                    let o = match llm.as_ref().filter(|c| c.endpoint(LlmStage::Plan).is_some()) {
+                        Some(cfg) => {
+                            let client = sw_llm::Client::new(cfg.clone());
+                            let mut run = sw_pipeline::LlmRun::new(client.clone());
+                            if cfg.endpoint(LlmStage::Cad).is_some() {
+                                match forge.source_for_job(&client) {
+                                    Ok(source) => run.assets = source,
+                                    Err(e) => tracing::warn!("{e}; novel objects keep labelled proxies"),
+                                }
                             }
+                            sw_pipeline::generate_with_llm(&job.prompt, &out, &opts, &run, &mut on_event)
                         }
-                        sw_pipeline::generate_with_llm(&job.prompt, &out, &opts, &run, &mut on_event)
+                        None => sw_pipeline::generate(&job.prompt, &out, &opts, &mut on_event),
                     }
-                    None => sw_pipeline::generate(&job.prompt, &out, &opts, &mut on_event),
+                    .map_err(describe)?;
+                    Ok(Made { report: o.report, timings: o.timings, dir: o.out_dir, edit: None })
                 }
-                .map_err(describe)?;
-                Ok(Made { report: o.report, timings: o.timings, dir: o.out_dir, edit: None })
-            }
-            JobKind::Edit => {
-                let parent = job.parent_scene_id.clone().ok_or("an edit job without a scene")?;
-                download(&*blobs, &parent, &parent_files, &out)?;
-                // The offline grammar first; a command it cannot read goes to the edit stage's
-                // model when one is configured (as `scenewright edit`).
-                let client = llm.filter(|c| c.endpoint(LlmStage::Edit).is_some()).map(sw_llm::Client::new);
-                let reader = if client.is_some() { EditReader::GrammarThenLlm } else { EditReader::Grammar };
-                // A structured edit from the viewer (a move, a placed part), or a sentence.
-                let o = match crate::edit_jobs::spec(&job.options) {
-                    Some(spec) => crate::edit_jobs::run(&out, spec?, &job.prompt, &forge, &mut on_event),
-                    None => sw_pipeline::edit_package(&out, &job.prompt, reader, client.as_ref(), &mut on_event),
+                JobKind::Edit => {
+                    let parent = job.parent_scene_id.clone().ok_or("an edit job without a scene")?;
+                    download(&*blobs, &parent, &parent_files, &parent_hashes, &out)?;
+                    // The offline grammar first; a command it cannot read goes to the edit stage's
+                    // model when one is configured (as `scenewright edit`).
+                    let client = llm.filter(|c| c.endpoint(LlmStage::Edit).is_some()).map(sw_llm::Client::new);
+                    let reader = if client.is_some() { EditReader::GrammarThenLlm } else { EditReader::Grammar };
+                    // A structured edit from the viewer (a move, a placed part), or a sentence.
+                    let o = match crate::edit_jobs::spec(&job.options) {
+                        Some(spec) => crate::edit_jobs::run(&out, spec?, &job.prompt, &forge, &mut on_event),
+                        None => sw_pipeline::edit_package(&out, &job.prompt, reader, client.as_ref(), &mut on_event),
+                    }
+                    .map_err(describe)?;
+                    let record = serde_json::to_value(&o.record).unwrap_or(Value::Null);
+                    Ok(Made { report: o.report, timings: o.timings, dir: o.dir, edit: Some(record) })
                 }
-                .map_err(describe)?;
-                let record = serde_json::to_value(&o.record).unwrap_or(Value::Null);
-                Ok(Made { report: o.report, timings: o.timings, dir: o.dir, edit: Some(record) })
             }
-        }
+        })
     });
     let started = job.started_at.unwrap_or_else(sw_store::now_ms);
     let left = (started + job.timeout_ms - sw_store::now_ms()).max(0) as u64;
@@ -394,14 +462,30 @@ fn options(o: &Value, seed: u64) -> Options {
     }
 }
 
-/// Copies a stored scene's files into `dir`.
-fn download(blobs: &dyn BlobStore, scene: &str, files: &[String], dir: &Path) -> Result<(), String> {
+/// The SHA-256 of `data`, hex.
+pub(crate) fn sha256_hex(data: &[u8]) -> String {
+    use sha2::Digest;
+    sha2::Sha256::digest(data).iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// Copies a stored scene's files into `dir`, each checked against the checksum stored
+/// with it (`hashes`: path → SHA-256; scenes stored before checksums have none).
+fn download(
+    blobs: &dyn BlobStore,
+    scene: &str,
+    files: &[String],
+    hashes: &std::collections::BTreeMap<String, String>,
+    dir: &Path,
+) -> Result<(), String> {
     for f in files {
         sw_store::check_key(f).map_err(|e| e.to_string())?;
         let data = blobs
             .get(&format!("scenes/{scene}/{f}"))
             .map_err(|e| e.to_string())?
             .ok_or_else(|| format!("scene {scene} lost its file {f}"))?;
+        if hashes.get(f).is_some_and(|h| *h != sha256_hex(&data)) {
+            return Err(format!("the stored file {f} of scene {scene} is damaged (its checksum does not match)"));
+        }
         let path = dir.join(f);
         if let Some(p) = path.parent() {
             fs_err::create_dir_all(p).map_err(|e| e.to_string())?;
@@ -437,16 +521,23 @@ async fn finish(state: &AppState, claim: &Claim, made: Made) -> Result<(), Strin
     let blobs = state.blobs.clone();
     let dir = made.dir.clone();
     let sid = scene_id.clone();
-    let files = tokio::task::spawn_blocking(move || -> Result<Vec<String>, String> {
+    let uploaded = tokio::task::spawn_blocking(move || -> Result<Vec<(String, String)>, String> {
         let files = list_files(&dir).map_err(|e| e.to_string())?;
-        for f in &files {
-            let data = fs_err::read(dir.join(f)).map_err(|e| e.to_string())?;
-            blobs.put(&format!("scenes/{sid}/{f}"), &data).map_err(|e| e.to_string())?;
+        let mut hashes = Vec::with_capacity(files.len());
+        for f in files {
+            let data = fs_err::read(dir.join(&f)).map_err(|e| e.to_string())?;
+            if let Err(e) = blobs.put(&format!("scenes/{sid}/{f}"), &data) {
+                // Nothing half-stored stays behind.
+                let _ = blobs.delete_prefix(&format!("scenes/{sid}/"));
+                return Err(e.to_string());
+            }
+            hashes.push((f, sha256_hex(&data)));
         }
-        Ok(files)
+        Ok(hashes)
     })
     .await
     .map_err(|e| e.to_string())??;
+    let files: Vec<String> = uploaded.iter().map(|(f, _)| f.clone()).collect();
     let status = serde_json::to_value(made.report.status).ok().and_then(|v| v.as_str().map(str::to_string));
     // An edited scene's report keeps its generation's calls and asset story; the job's own
     // telemetry is the edit's calls, and only generation counts asset cache lookups.
@@ -475,13 +566,24 @@ async fn finish(state: &AppState, claim: &Claim, made: Made) -> Result<(), Strin
         status: status.clone().unwrap_or_else(|| "unknown".into()),
         report: serde_json::to_value(&made.report).map_err(|e| e.to_string())?,
         files: files.clone(),
+        hashes: uploaded,
         edit: made.edit.map(|r| (claim.job.prompt.clone(), r)),
     };
     for w in &made.report.warnings {
         emit(state, &claim.job.id, json!({"event": "warning", "stage": w.stage, "code": w.code, "message": w.message}))
             .await;
     }
-    if state.store.complete(claim, &new, &telemetry).await.map_err(|e| e.to_string())? {
+    let completed = match state.store.complete(claim, &new, &telemetry).await {
+        Ok(c) => c,
+        Err(e) => {
+            // Not stored (a full disk, say): the upload goes, the job fails or runs again.
+            let blobs = state.blobs.clone();
+            let prefix = format!("scenes/{scene_id}/");
+            let _ = tokio::task::spawn_blocking(move || blobs.delete_prefix(&prefix)).await;
+            return Err(e.to_string());
+        }
+    };
+    if completed {
         tracing::info!(scene = %scene_id, status = status.as_deref().unwrap_or("unknown"), "job succeeded");
         let _ = state.events.send(claim.job.id.clone());
     } else {

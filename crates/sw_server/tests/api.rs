@@ -184,13 +184,13 @@ async fn sql_in_a_prompt_is_only_text(db: Db) {
 }
 
 async fn a_full_queue_answers_429(db: Db) {
-    let a = app_on(&db, QueueLimits { queue_cap: 2, per_user_running: 5 }).await;
+    let a = app_on(&db, QueueLimits { queue_cap: 2, per_user_running: 5, per_user_queued: 2 }).await;
     let t = a.user("ann").await;
     for i in 0..2 {
         let (s, v) = a.post("/api/jobs", &t, json!({"prompt": format!("a lab with {i} tables")})).await;
         assert_eq!(s, StatusCode::ACCEPTED, "{v}");
     }
-    let (s, v) = a.post("/api/jobs", &t, json!({"prompt": "one more"})).await;
+    let (s, v) = a.post("/api/jobs", &t, json!({"prompt": "a lab with one more table"})).await;
     assert_eq!(s, StatusCode::TOO_MANY_REQUESTS);
     assert_eq!(err(&v), "the queue is full (2 jobs waiting); try again later");
     assert_eq!(a.jobs_stored().await, 2);

@@ -173,8 +173,8 @@ async fn owners_and_others(db: Db) {
     assert_eq!(bad["state"], "failed");
     assert!(bad["error"].as_str().unwrap().contains("unicorn"), "{bad}");
 
-    // Metrics cover what happened.
-    let (s, m) = a.raw(Method::GET, "/metrics", None, Payload::None).await;
+    // Metrics cover what happened (an admin reads them; ann is the first user).
+    let (s, m) = a.raw(Method::GET, "/metrics", Some(&ann), Payload::None).await;
     assert_eq!(s, StatusCode::OK);
     let m = String::from_utf8(m).unwrap();
     assert!(m.contains("scenewright_jobs{state=\"succeeded\"} 2"), "{m}");

@@ -1,5 +1,5 @@
-//! Over a real socket: clients submit jobs and follow them on the WebSocket until the
-//! result; a bad token is refused at the handshake.
+//! Over a real socket, through the service's own connection loop: clients submit jobs and
+//! follow them on the WebSocket until the result; a bad token is refused at the handshake.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -10,6 +10,7 @@ use serde_json::{Value, json};
 use sw_store::QueueLimits;
 use tokio_tungstenite::tungstenite::Message;
 
+/// The status and JSON body of a request over a real socket.
 async fn http(
     addr: std::net::SocketAddr,
     method: &str,
@@ -17,35 +18,15 @@ async fn http(
     token: Option<&str>,
     body: Option<Value>,
 ) -> (u16, Value) {
-    // A tiny HTTP/1.1 client over a real socket (keeps the test free of an HTTP crate).
-    use tokio::io::{AsyncReadExt, AsyncWriteExt};
-    let mut s = tokio::net::TcpStream::connect(addr).await.unwrap();
-    let body = body.map(|b| b.to_string()).unwrap_or_default();
-    let mut req =
-        format!("{method} {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\nContent-Length: {}\r\n", body.len());
-    if !body.is_empty() {
-        req.push_str("Content-Type: application/json\r\n");
-    }
-    if let Some(t) = token {
-        req.push_str(&format!("Authorization: Bearer {t}\r\n"));
-    }
-    req.push_str("\r\n");
-    req.push_str(&body);
-    s.write_all(req.as_bytes()).await.unwrap();
-    let mut buf = Vec::new();
-    s.read_to_end(&mut buf).await.unwrap();
-    let text = String::from_utf8_lossy(&buf);
-    let status: u16 = text.split(' ').nth(1).unwrap().parse().unwrap();
-    let (_, body) = text.split_once("\r\n\r\n").unwrap();
-    (status, serde_json::from_str(body).unwrap_or(Value::Null))
+    let (status, _, body) = common::http(addr, method, path, token, body).await;
+    (status, body)
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn clients_follow_their_jobs_over_websockets() {
     let a = common::app(QueueLimits::default()).await;
-    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
-    let addr = listener.local_addr().unwrap();
-    tokio::spawn(async move { axum::serve(listener, a.router.clone()).await });
+    // The service's own connection loop (header timeout, client addresses, upgrades).
+    let (addr, _stop, _served) = common::serve_on_socket(&a, sw_server::HttpOptions::default()).await;
     let state = a.state.clone();
     let _stop = common::start_workers(&state, 2);
 

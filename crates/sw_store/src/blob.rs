@@ -74,8 +74,11 @@ impl BlobStore for LocalBlobs {
             fs_err::create_dir_all(parent)?;
         }
         let tmp = path.with_file_name(format!(".{}.tmp-{}", crate::new_id(), std::process::id()));
-        fs_err::write(&tmp, data)?;
-        fs_err::rename(&tmp, &path)?;
+        // A write that fails (a full disk) leaves no partial file behind to fill it further.
+        if let Err(e) = fs_err::write(&tmp, data).and_then(|()| fs_err::rename(&tmp, &path)) {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(e.into());
+        }
         Ok(())
     }
 

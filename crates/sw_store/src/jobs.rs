@@ -154,11 +154,14 @@ pub struct QueueLimits {
     pub queue_cap: i64,
     /// Jobs of one user that may run at once (more wait in the queue).
     pub per_user_running: i64,
+    /// Jobs of one user that may wait in the queue at once: one user cannot fill the
+    /// queue for everyone (more are refused: HTTP 429).
+    pub per_user_queued: i64,
 }
 
 impl Default for QueueLimits {
     fn default() -> Self {
-        Self { queue_cap: 100, per_user_running: 5 }
+        Self { queue_cap: 100, per_user_running: 5, per_user_queued: 20 }
     }
 }
 
@@ -200,10 +203,26 @@ impl Store {
     /// under READ COMMITTED two transactions would otherwise both count the same free
     /// place and both insert.
     pub async fn enqueue(&self, new: &NewJob, limits: QueueLimits) -> Result<Job> {
+        let mut jobs = self.enqueue_all(std::slice::from_ref(new), limits).await?;
+        jobs.pop().ok_or_else(|| StoreError::Corrupt("no job after insert".into()))
+    }
+
+    /// Enqueues every job of `news` or none of them (variations of one request): the caps
+    /// are checked for each as it is inserted, in one transaction.
+    pub async fn enqueue_all(&self, news: &[NewJob], limits: QueueLimits) -> Result<Vec<Job>> {
         let mut tx = self.pool.begin().await?;
-        let id = self.insert_job(&mut tx, new, limits).await?;
+        let mut ids = Vec::with_capacity(news.len());
+        for new in news {
+            ids.push(self.insert_job(&mut tx, new, limits).await?);
+        }
         tx.commit().await?;
-        self.job(&id).await?.ok_or_else(|| StoreError::Corrupt(format!("job {id} vanished after insert")))
+        let mut jobs = Vec::with_capacity(ids.len());
+        for id in ids {
+            jobs.push(
+                self.job(&id).await?.ok_or_else(|| StoreError::Corrupt(format!("job {id} vanished after insert")))?,
+            );
+        }
+        Ok(jobs)
     }
 
     /// [`Store::enqueue`]'s work inside a transaction the caller commits (so that other rows
@@ -233,7 +252,8 @@ impl Store {
         let done = sqlx::query(
             "INSERT INTO jobs (id, user_id, kind, prompt_id, prompt, seed, options, parent_scene_id, state, max_attempts, timeout_ms, created_at, qseq)
              SELECT $1, $2, $3, $4, $5, $6, $7, $8, 'queued', $9, $10, $11, (SELECT COALESCE(MAX(qseq), 0) + 1 FROM jobs)
-             WHERE (SELECT COUNT(*) FROM jobs WHERE state = 'queued') < $12",
+             WHERE (SELECT COUNT(*) FROM jobs WHERE state = 'queued') < $12
+               AND (SELECT COUNT(*) FROM jobs WHERE state = 'queued' AND user_id = $13) < $14",
         )
         .bind(&id)
         .bind(&new.user_id)
@@ -247,10 +267,19 @@ impl Store {
         .bind(new.timeout_ms)
         .bind(now)
         .bind(limits.queue_cap)
+        .bind(&new.user_id)
+        .bind(limits.per_user_queued)
         .execute(&mut **tx)
         .await?;
         if done.rows_affected() == 0 {
-            return Err(StoreError::QueueFull { cap: limits.queue_cap });
+            // Which cap: the whole queue, else the user's share of it.
+            let (all,): (i64,) =
+                sqlx::query_as("SELECT COUNT(*) FROM jobs WHERE state = 'queued'").fetch_one(&mut **tx).await?;
+            return Err(if all >= limits.queue_cap {
+                StoreError::QueueFull { cap: limits.queue_cap, per_user: false }
+            } else {
+                StoreError::QueueFull { cap: limits.per_user_queued, per_user: true }
+            });
         }
         push_event(&mut **tx, &id, &serde_json::json!({"event": "queued", "job_id": id})).await?;
         Ok(id)
@@ -292,8 +321,13 @@ impl Store {
         rows.iter().map(Job::from_row).collect()
     }
 
-    /// Claims the oldest queued job whose owner runs fewer than `per_user_running` jobs,
-    /// with a lease of `lease_ms`. One statement: two claimers never get the same job.
+    /// Claims a queued job whose owner runs fewer than `per_user_running` jobs, with a
+    /// lease of `lease_ms`. One statement: two claimers never get the same job.
+    ///
+    /// Users are served in turn, not in arrival order: a job's rank is how many jobs of its
+    /// owner run or wait ahead of it, and the lowest rank goes first (arrival order among
+    /// equals). A user who queued fifty jobs gets one runner after another user's single
+    /// job has had its turn, not fifty runners before it.
     pub async fn claim(&self, worker: &str, lease_ms: i64, limits: QueueLimits) -> Result<Option<Claim>> {
         let now = now_ms();
         let sql = match self.backend {
@@ -303,7 +337,9 @@ impl Store {
                     SELECT q.id FROM jobs q
                     WHERE q.state = 'queued'
                       AND (SELECT COUNT(*) FROM jobs r WHERE r.user_id = q.user_id AND r.state = 'running') < $4
-                    ORDER BY q.qseq, q.id LIMIT 1)
+                    ORDER BY (SELECT COUNT(*) FROM jobs r WHERE r.user_id = q.user_id
+                                AND (r.state = 'running' OR (r.state = 'queued' AND r.qseq < q.qseq))),
+                             q.qseq, q.id LIMIT 1)
                    AND state = 'queued'
                  RETURNING ",
                 job_columns!()
@@ -315,7 +351,9 @@ impl Store {
                     SELECT q.id FROM jobs q
                     WHERE q.state = 'queued'
                       AND (SELECT COUNT(*) FROM jobs r WHERE r.user_id = q.user_id AND r.state = 'running') < $4
-                    ORDER BY q.qseq, q.id LIMIT 1
+                    ORDER BY (SELECT COUNT(*) FROM jobs r WHERE r.user_id = q.user_id
+                                AND (r.state = 'running' OR (r.state = 'queued' AND r.qseq < q.qseq))),
+                             q.qseq, q.id LIMIT 1
                     FOR UPDATE SKIP LOCKED)
                    AND state = 'queued'
                  RETURNING ",
@@ -354,6 +392,19 @@ impl Store {
         Ok(r.rows_affected() == 1)
     }
 
+    /// True while the claim is still the runner's (a read: the job was not cancelled,
+    /// failed by a timeout, or taken over).
+    pub async fn still_running(&self, claim: &Claim) -> Result<bool> {
+        let r: Option<(String,)> =
+            sqlx::query_as("SELECT id FROM jobs WHERE id = $1 AND worker = $2 AND attempts = $3 AND state = 'running'")
+                .bind(&claim.job.id)
+                .bind(&claim.worker)
+                .bind(claim.attempt)
+                .fetch_optional(&self.pool)
+                .await?;
+        Ok(r.is_some())
+    }
+
     /// Records the stage a claimed job is in.
     pub async fn set_stage(&self, claim: &Claim, stage: &str) -> Result<()> {
         sqlx::query("UPDATE jobs SET stage = $1 WHERE id = $2 AND worker = $3 AND attempts = $4 AND state = 'running'")
@@ -386,6 +437,30 @@ impl Store {
             return Ok(false);
         }
         push_event(&mut *tx, &claim.job.id, &serde_json::json!({"event": "error", "message": reason})).await?;
+        tx.commit().await?;
+        Ok(true)
+    }
+
+    /// Gives a claimed job back to the queue at once (this process is stopping): it runs
+    /// again, first in its owner's turn, and the claim does not count as a lost attempt.
+    /// `false` if the claim was no longer the runner's.
+    pub async fn release(&self, claim: &Claim, reason: &str) -> Result<bool> {
+        let mut tx = self.pool.begin().await?;
+        let r = sqlx::query(
+            "UPDATE jobs SET state = 'queued', worker = NULL, lease_until = NULL, stage = NULL,
+                 attempts = attempts - 1
+             WHERE id = $1 AND worker = $2 AND attempts = $3 AND state = 'running'",
+        )
+        .bind(&claim.job.id)
+        .bind(&claim.worker)
+        .bind(claim.attempt)
+        .execute(&mut *tx)
+        .await?;
+        if r.rows_affected() != 1 {
+            tx.rollback().await?;
+            return Ok(false);
+        }
+        push_event(&mut *tx, &claim.job.id, &serde_json::json!({"event": "requeued", "reason": reason})).await?;
         tx.commit().await?;
         Ok(true)
     }

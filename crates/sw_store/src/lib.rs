@@ -48,15 +48,56 @@ pub enum StoreError {
     /// A unique value (a user name) is taken.
     #[error("{0}")]
     Conflict(String),
-    /// The queue holds as many jobs as it may.
-    #[error("the queue is full ({cap} jobs waiting); try again later")]
-    QueueFull { cap: i64 },
+    /// The queue holds as many jobs as it may (all of them, or as many of one user's as
+    /// a user may have waiting: `per_user`).
+    #[error("{}", if *per_user {
+        format!("you have {cap} jobs waiting, as many as one user may; try again when one has started")
+    } else {
+        format!("the queue is full ({cap} jobs waiting); try again later")
+    })]
+    QueueFull { cap: i64, per_user: bool },
     /// A stored value is not what the code wrote.
     #[error("corrupt row: {0}")]
     Corrupt(String),
 }
 
+impl StoreError {
+    /// True when the database could not write because its disk is full or failing
+    /// (SQLite's SQLITE_FULL / SQLITE_IOERR, PostgreSQL's class 53 and 58 errors): the
+    /// write was not stored, and trying again once space is back will work.
+    pub fn is_storage_failure(&self) -> bool {
+        let StoreError::Db(e) = self else { return false };
+        match e {
+            sqlx::Error::Database(d) => {
+                let code = d.code().map(|c| c.to_string()).unwrap_or_default();
+                // SQLite's primary result code is the low byte of the extended one.
+                let sqlite = code.parse::<i64>().ok().map(|c| c & 0xff);
+                matches!(sqlite, Some(10 | 13)) || code.starts_with("53") || code.starts_with("58")
+            }
+            sqlx::Error::Io(_) => true,
+            _ => false,
+        }
+    }
+}
+
 pub type Result<T> = std::result::Result<T, StoreError>;
+
+/// Whether a SQLite connection back from use may serve the next caller: it is in no
+/// transaction. A write that failed for want of space can leave one open — SQLite keeps a
+/// transaction whose COMMIT failed with SQLITE_FULL, or ends one itself while sqlx still
+/// counts it — and such a connection holds an old snapshot and its lock: every later write
+/// through it, or anyone else's, answers "database is locked" until the process restarts.
+/// A connection that cannot start a transaction of its own is closed instead (the pool
+/// opens a fresh one).
+async fn sqlite_connection_is_clean(conn: &mut sqlx::AnyConnection) -> bool {
+    if conn.is_in_transaction() {
+        return false;
+    }
+    if sqlx::query("BEGIN").execute(&mut *conn).await.is_err() {
+        return false;
+    }
+    sqlx::query("ROLLBACK").execute(&mut *conn).await.is_ok()
+}
 
 /// Which database a store is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -113,6 +154,14 @@ impl Store {
                     Ok(())
                 })
             })
+            .after_release(move |conn, _| {
+                Box::pin(async move {
+                    if backend != Backend::Sqlite {
+                        return Ok(true);
+                    }
+                    Ok(sqlite_connection_is_clean(conn).await)
+                })
+            })
             .connect(url)
             .await?;
         schema::migrate(&pool, backend).await?;
@@ -126,6 +175,21 @@ impl Store {
 
     pub fn backend(&self) -> Backend {
         self.backend
+    }
+
+    /// Writes and commits one small row (the time of the probe): fails when the database
+    /// cannot write — a full disk reads fine but refuses this.
+    pub async fn probe_write(&self) -> Result<()> {
+        let mut tx = self.pool.begin().await?;
+        sqlx::query(
+            "INSERT INTO settings (name, value) VALUES ('health_probe', $1)
+             ON CONFLICT(name) DO UPDATE SET value = excluded.value",
+        )
+        .bind(format!("{}:{}", now_ms(), new_id()))
+        .execute(&mut *tx)
+        .await?;
+        tx.commit().await?;
+        Ok(())
     }
 
     /// A setting, created with `init` the first time it is asked for (e.g. the JWT secret,

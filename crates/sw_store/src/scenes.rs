@@ -51,6 +51,8 @@ pub struct NewScene {
     pub status: String,
     pub report: serde_json::Value,
     pub files: Vec<String>,
+    /// The SHA-256 (hex) of each file, by path: what is served is checked against it.
+    pub hashes: Vec<(String, String)>,
     /// For an edit: the command and its record (edits.json's entry).
     pub edit: Option<(String, serde_json::Value)>,
 }
@@ -149,6 +151,14 @@ impl Store {
         .bind(now)
         .execute(&mut *tx)
         .await?;
+        for (path, sha256) in &new.hashes {
+            sqlx::query("INSERT INTO scene_files (scene_id, path, sha256) VALUES ($1, $2, $3)")
+                .bind(&new.id)
+                .bind(path)
+                .bind(sha256)
+                .execute(&mut *tx)
+                .await?;
+        }
         if let (Some((command, record)), Some(parent)) = (&new.edit, &job.parent_scene_id) {
             sqlx::query(
                 "INSERT INTO edits (id, user_id, scene_id, new_scene_id, command, record, created_at) VALUES ($1, $2, $3, $4, $5, $6, $7)",
@@ -200,6 +210,26 @@ impl Store {
     }
 
     /// A scene if `user_id` owns it.
+    /// The SHA-256 recorded for a file of a scene when it was stored (`None` for scenes
+    /// stored before checksums were kept, and for paths the scene does not have).
+    pub async fn file_hash(&self, scene_id: &str, path: &str) -> Result<Option<String>> {
+        let r: Option<(String,)> = sqlx::query_as("SELECT sha256 FROM scene_files WHERE scene_id = $1 AND path = $2")
+            .bind(scene_id)
+            .bind(path)
+            .fetch_optional(&self.pool)
+            .await?;
+        Ok(r.map(|r| r.0))
+    }
+
+    /// Every stored checksum of a scene's files, by path.
+    pub async fn file_hashes(&self, scene_id: &str) -> Result<std::collections::BTreeMap<String, String>> {
+        let rows: Vec<(String, String)> = sqlx::query_as("SELECT path, sha256 FROM scene_files WHERE scene_id = $1")
+            .bind(scene_id)
+            .fetch_all(&self.pool)
+            .await?;
+        Ok(rows.into_iter().collect())
+    }
+
     pub async fn scene_of(&self, id: &str, user_id: &str) -> Result<Option<Scene>> {
         let r: Option<SceneRow> = sqlx::query_as(
             "SELECT id, user_id, job_id, parent_id, version, prompt, status, report, files, created_at
@@ -262,6 +292,38 @@ impl Store {
                 Ok((scene((r.0, r.1, r.2, r.3, r.4, r.5, r.6, r.7, r.8, r.9))?, command))
             })
             .collect()
+    }
+
+    /// Deletes a scene with every version of its lineage (its first version and all
+    /// edits of it), in one transaction; the ids deleted, for the caller to remove their
+    /// files. Empty when `user_id` owns no such scene.
+    pub async fn delete_lineage(&self, id: &str, user_id: &str) -> Result<Vec<String>> {
+        let mut versions = self.scene_versions(id, user_id).await?;
+        // Later versions first: each row goes before the parent it references.
+        versions.sort_by(|a, b| b.0.version.cmp(&a.0.version).then(b.0.created_at.cmp(&a.0.created_at)));
+        let mut tx = self.pool.begin().await?;
+        let mut ids = Vec::with_capacity(versions.len());
+        for (sc, _) in &versions {
+            sqlx::query("DELETE FROM edits WHERE (scene_id = $1 OR new_scene_id = $2) AND user_id = $3")
+                .bind(&sc.id)
+                .bind(&sc.id)
+                .bind(user_id)
+                .execute(&mut *tx)
+                .await?;
+            sqlx::query("DELETE FROM scene_files WHERE scene_id = $1").bind(&sc.id).execute(&mut *tx).await?;
+        }
+        for (sc, _) in &versions {
+            let r = sqlx::query("DELETE FROM scenes WHERE id = $1 AND user_id = $2")
+                .bind(&sc.id)
+                .bind(user_id)
+                .execute(&mut *tx)
+                .await?;
+            if r.rows_affected() == 1 {
+                ids.push(sc.id.clone());
+            }
+        }
+        tx.commit().await?;
+        Ok(ids)
     }
 
     /// The edits made from a scene or leading to it.

@@ -92,6 +92,18 @@ const STATEMENTS: &[&str] = &[
         tokens_out INTEGER NOT NULL DEFAULT 0,
         at INTEGER NOT NULL)",
     "CREATE INDEX IF NOT EXISTS telemetry_kind ON telemetry(kind, name)",
+    // The checksum of every stored file of a scene (what is served is checked against it).
+    "CREATE TABLE IF NOT EXISTS scene_files (
+        scene_id TEXT NOT NULL REFERENCES scenes(id),
+        path TEXT NOT NULL,
+        sha256 TEXT NOT NULL,
+        PRIMARY KEY (scene_id, path))",
+    // User names are one whatever their case: `Alice` and `alice` are the same user.
+    "CREATE UNIQUE INDEX IF NOT EXISTS users_name_nocase ON users (lower(username))",
+    // Access tokens revoked before they expire (signed out), by their `jti`.
+    "CREATE TABLE IF NOT EXISTS revoked_tokens (
+        jti TEXT PRIMARY KEY,
+        expires_at INTEGER NOT NULL)",
     // Datasets on the queue (`scenewright dataset --database`): the dataset, the job that
     // makes each scene slot (one at a time), and the structural fingerprints taken, each
     // by one slot (a scene whose fingerprint another slot holds is a duplicate).

@@ -42,6 +42,9 @@ pub struct User {
 
 type UserRow = (String, String, String, String, i64);
 
+/// The password hash of a service account: no PHC string, so no password matches it.
+const SERVICE_HASH: &str = "!";
+
 fn user(r: UserRow) -> Result<User> {
     Ok(User {
         id: r.0,
@@ -54,14 +57,15 @@ fn user(r: UserRow) -> Result<User> {
 
 impl Store {
     /// Creates a user. The first user of a database becomes an admin, unless `role` says
-    /// otherwise explicitly. A taken name is a [`StoreError::Conflict`].
+    /// otherwise explicitly. A taken name — in any case: `Alice` takes `alice` — is a
+    /// [`StoreError::Conflict`].
     pub async fn create_user(&self, username: &str, password_hash: &str, role: Option<Role>) -> Result<User> {
         let id = new_id();
         let now = now_ms();
         let r = sqlx::query(
             "INSERT INTO users (id, username, password_hash, role, created_at)
              SELECT $1, $2, $3, COALESCE($4, CASE WHEN (SELECT COUNT(*) FROM users) = 0 THEN 'admin' ELSE 'user' END), $5
-             WHERE NOT EXISTS (SELECT 1 FROM users WHERE username = $6)",
+             WHERE NOT EXISTS (SELECT 1 FROM users WHERE lower(username) = lower($6))",
         )
         .bind(&id)
         .bind(username)
@@ -91,13 +95,37 @@ impl Store {
         r.map(user).transpose()
     }
 
+    /// The user of a name, whatever its case.
     pub async fn user_by_name(&self, username: &str) -> Result<Option<User>> {
-        let r: Option<UserRow> =
-            sqlx::query_as("SELECT id, username, password_hash, role, created_at FROM users WHERE username = $1")
-                .bind(username)
-                .fetch_optional(&self.pool)
-                .await?;
+        let r: Option<UserRow> = sqlx::query_as(
+            "SELECT id, username, password_hash, role, created_at FROM users WHERE lower(username) = lower($1)",
+        )
+        .bind(username)
+        .fetch_optional(&self.pool)
+        .await?;
         r.map(user).transpose()
+    }
+
+    /// The service account `name` (no password: nobody can sign in as it), created the first
+    /// time. A login account of that name (registered before the name was reserved) is a
+    /// [`StoreError::Conflict`]: its owner would see and steer the service's jobs.
+    pub async fn service_account(&self, name: &str) -> Result<User> {
+        let found = match self.user_by_name(name).await? {
+            Some(u) => u,
+            None => match self.create_user(name, SERVICE_HASH, Some(Role::User)).await {
+                Err(StoreError::Conflict(_)) => {
+                    self.user_by_name(name).await?.ok_or_else(|| StoreError::Conflict(name.to_string()))?
+                }
+                other => other?,
+            },
+        };
+        if found.password_hash != SERVICE_HASH {
+            return Err(StoreError::Conflict(format!(
+                "the user '{}' is a login account, not the service account; rename it in the database",
+                found.username
+            )));
+        }
+        Ok(found)
     }
 
     /// Stores an API key's hash; returns the key's id.
@@ -120,6 +148,40 @@ impl Store {
             .bind(user_id)
             .fetch_all(&self.pool)
             .await?)
+    }
+
+    /// Revokes one of the user's API keys: it stops working at once. `false` when the user
+    /// has no key of that id.
+    pub async fn delete_api_key(&self, user_id: &str, key_id: &str) -> Result<bool> {
+        let r = sqlx::query("DELETE FROM api_keys WHERE id = $1 AND user_id = $2")
+            .bind(key_id)
+            .bind(user_id)
+            .execute(&self.pool)
+            .await?;
+        Ok(r.rows_affected() == 1)
+    }
+
+    /// Revokes an access token (by its `jti`) until it would have expired anyway; expired
+    /// revocations are forgotten on the way.
+    pub async fn revoke_token(&self, jti: &str, expires_at_ms: i64) -> Result<()> {
+        let mut tx = self.pool.begin().await?;
+        sqlx::query("DELETE FROM revoked_tokens WHERE expires_at < $1").bind(now_ms()).execute(&mut *tx).await?;
+        sqlx::query("INSERT INTO revoked_tokens (jti, expires_at) VALUES ($1, $2) ON CONFLICT(jti) DO NOTHING")
+            .bind(jti)
+            .bind(expires_at_ms)
+            .execute(&mut *tx)
+            .await?;
+        tx.commit().await?;
+        Ok(())
+    }
+
+    /// True when the token of this `jti` was revoked.
+    pub async fn token_revoked(&self, jti: &str) -> Result<bool> {
+        let r: Option<(String,)> = sqlx::query_as("SELECT jti FROM revoked_tokens WHERE jti = $1")
+            .bind(jti)
+            .fetch_optional(&self.pool)
+            .await?;
+        Ok(r.is_some())
     }
 
     /// The user an API key (by its hash) belongs to.

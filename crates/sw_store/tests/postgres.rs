@@ -40,5 +40,9 @@ async fn the_store_on_postgresql() {
         jobs_past_their_timeout_fail,
         events_are_ordered_per_job,
         hostile_strings_are_data,
+        users_are_served_in_turn,
+        one_user_holds_a_share_of_the_queue,
+        a_released_job_runs_again_without_losing_an_attempt,
+        accounts_names_keys_and_tokens,
     );
 }

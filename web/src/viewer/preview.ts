@@ -57,13 +57,24 @@ export class PartPreview {
     loop();
   }
 
-  /** Shows a mesh; answers its size (x, y, z extent), metres. */
-  show(geo: THREE.BufferGeometry): [number, number, number] {
+  /** Shows nothing (the part shown is no longer the one asked for). */
+  clear(): void {
     if (this.mesh) {
       this.scene.remove(this.mesh);
       this.mesh.geometry.dispose();
       (this.mesh.material as THREE.Material).dispose();
+      this.mesh = null;
     }
+  }
+
+  /** Whether a part is shown. */
+  get showing(): boolean {
+    return this.mesh !== null;
+  }
+
+  /** Shows a mesh; answers its size (x, y, z extent), metres. */
+  show(geo: THREE.BufferGeometry): [number, number, number] {
+    this.clear();
     const box = geo.boundingBox ?? new THREE.Box3().setFromBufferAttribute(geo.getAttribute('position') as THREE.BufferAttribute);
     const size = box.getSize(new THREE.Vector3());
     const center = box.getCenter(new THREE.Vector3());

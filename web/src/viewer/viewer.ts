@@ -146,6 +146,44 @@ export class Viewer {
     this.invalidate();
   }
 
+  /** Back to the first view of the whole scene. */
+  resetCamera(): void {
+    if (this.model) this.frame(this.model);
+  }
+
+  /**
+   * Frames one object or robot (a root body) from the camera's current side: it fills the
+   * view, the orbit turning about its centre. `false` when it has nothing drawn.
+   */
+  frameObject(root: number): boolean {
+    const meshes = this.byRoot.get(root);
+    if (!meshes?.length) return false;
+    this.root.updateMatrixWorld(true);
+    const box = new THREE.Box3();
+    for (const m of meshes) box.expandByObject(m);
+    if (box.isEmpty()) return false;
+    const c = box.getCenter(new THREE.Vector3());
+    const radius = Math.max(0.15, box.getSize(new THREE.Vector3()).length() / 2);
+    const fov = (this.camera.fov * Math.PI) / 180;
+    const dist = (radius / Math.sin(fov / 2)) * 1.15;
+    const dir = this.camera.position.clone().sub(this.controls.target);
+    if (dir.lengthSq() < 1e-9) dir.set(-1, -1, 1);
+    this.camera.position.copy(c).addScaledVector(dir.normalize(), dist);
+    this.camera.near = Math.max(0.005, dist / 500);
+    this.camera.updateProjectionMatrix();
+    this.controls.target.copy(c);
+    this.controls.update();
+    this.invalidate();
+    return true;
+  }
+
+  /** Where the camera is and looks (for the page's tests). */
+  cameraState(): { position: [number, number, number]; target: [number, number, number] } {
+    const p = this.camera.position;
+    const t = this.controls.target;
+    return { position: [p.x, p.y, p.z], target: [t.x, t.y, t.z] };
+  }
+
   setPoses(p: Float64Array): void {
     this.poses = p;
     const q = new THREE.Quaternion();

@@ -127,7 +127,11 @@ export const composeView: View = (root) => {
     .then((o) => rules.append(...o.rules_profiles.map((p) => h('option', { value: p, text: p }))))
     .catch(() => undefined);
 
+  // One request per press: the button is off from the press until the answer (a double
+  // click, or Enter pressed twice, makes one set of jobs).
+  let submitting = false;
   const generate = async () => {
+    if (submitting) return;
     const text = prompt.value.trim();
     if (!text) {
       fill(status, notice('error', 'Describe the workspace first.'));
@@ -141,21 +145,26 @@ export const composeView: View = (root) => {
     const chosen = kinds.filter((k) => k.checked).map((k) => k.value);
     if (chosen.length && !(r > 0 && r <= 1)) return fill(status, notice('error', 'The anomaly rate is above 0 and at most 1.'));
     const req: api.JobRequest = { prompt: text, seed: s };
+    if (n > 1) req.variations = n;
     if (picked.size) req.robots = [...picked];
     const options: NonNullable<api.JobRequest['options']> = {};
     if (rules.value) options.rules = rules.value;
     if (chosen.length) options.anomaly = { kinds: chosen, rate: r };
     if (Object.keys(options).length) req.options = options;
     fill(status, notice('info', 'Submitting…'));
+    submitting = true;
+    generateBtn.disabled = true;
     try {
-      const ids: string[] = [];
-      for (let k = 0; k < n; k++) ids.push(await api.submitJob({ ...req, seed: s + k }));
-      const [first, ...rest] = ids;
+      const [first, ...rest] = await api.submitJob(req);
       if (first) navigate(`/jobs/${first}${rest.length ? `?also=${rest.join(',')}` : ''}`);
     } catch (e) {
       fill(status, notice('error', `The job was not accepted: ${api.describe(e)}.`));
+    } finally {
+      submitting = false;
+      generateBtn.disabled = false;
     }
   };
+  const generateBtn = h('button', { id: 'generate', class: 'primary', text: 'Generate', on: { click: () => void generate() } });
 
   root.append(
     h(
@@ -169,7 +178,7 @@ export const composeView: View = (root) => {
         h(
           'div',
           { class: 'row' },
-          h('button', { id: 'generate', class: 'primary', text: 'Generate', on: { click: () => void generate() } }),
+          generateBtn,
           h('button', { id: 'refine', text: 'Refine in a chat', on: { click: startChat } }),
         ),
         status,

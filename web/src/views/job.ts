@@ -1,13 +1,14 @@
 // Watch it build: the job's WebSocket drives a stage timeline (plan, forge, layout,
 // bridge, verify) with each stage's time and summary, the per-object steps and warnings
 // as they come. A dropped socket is reopened and catches up from the job's events; the job
-// can be cancelled.
+// can be cancelled. The heading says where the job is; a job watched to its end opens its
+// scene. A job that is not the visitor's is "not found", never an empty timeline.
 
 import * as api from '../api';
-import { fill, fmtMs, h, notice } from '../dom';
-import type { View } from '../router';
+import { fill, fmtMs, h, notice, setText } from '../dom';
+import { navigate, notFoundPage, type View } from '../router';
 import { sim } from '../sim/client';
-import type { Job, JobEvent } from '../types';
+import { type Job, type JobEvent, isTerminal } from '../types';
 
 const STAGES = ['plan', 'forge', 'layout', 'bridge', 'verify'] as const;
 const STAGE_TITLES: Record<string, string> = {
@@ -27,11 +28,46 @@ interface StageRow {
   nsteps: number;
 }
 
+const HEADINGS: Record<string, string> = {
+  queued: 'Waiting to build the scene',
+  running: 'Building the scene',
+  succeeded: 'The scene is built',
+  failed: 'The build failed',
+  cancelled: 'The build was cancelled',
+};
+
 export const jobView: View = (root, params, query) => {
   const id = params.id ?? '';
+  let stopWatching: (() => void) | null = null;
+  let disposed = false;
+  const loading = h('div', { class: 'page' }, notice('info', 'Loading the job…'));
+  root.append(loading);
+  api
+    .job(id)
+    .then((job) => {
+      if (disposed) return;
+      loading.remove();
+      stopWatching = jobPage(root, id, job, query);
+    })
+    .catch((e: unknown) => {
+      if (disposed) return;
+      loading.remove();
+      if (e instanceof api.ApiError && e.status === 404) notFoundPage(root, 'No such job here', 'This job does not exist, or it is not yours.');
+      else root.append(h('div', { class: 'page' }, notice('error', `The job did not load: ${api.describe(e)}.`)));
+    });
+  return () => {
+    disposed = true;
+    stopWatching?.();
+  };
+};
+
+function jobPage(root: HTMLElement, id: string, initial: Job, query: URLSearchParams): () => void {
   // MuJoCo's WebAssembly compiles while the job runs, ready for the scene.
-  sim.warm();
-  const head = h('div', { class: 'job-head' }, h('h1', { text: 'Building the scene' }));
+  if (!isTerminal(initial.state)) sim.warm();
+  // Watched live (not opened after the end): the scene opens by itself when it is ready.
+  const live = !isTerminal(initial.state);
+  const heading = h('h1', { id: 'job-heading', text: HEADINGS[initial.state] ?? 'Building the scene' });
+  const head = h('div', { class: 'job-head' }, heading);
   const promptLine = h('p', { class: 'prompt-line' });
   const conn = h('div', { class: 'status', id: 'conn' });
   const result = h('div', { class: 'status', id: 'result' });
@@ -68,8 +104,10 @@ export const jobView: View = (root, params, query) => {
 
   let finishedJob: Job | null = null;
   const show = (job: Job) => {
-    promptLine.textContent = job.prompt;
+    setText(promptLine, job.prompt);
+    setText(heading, HEADINGS[job.state] ?? 'Building the scene');
     cancel.disabled = job.state !== 'queued' && job.state !== 'running';
+    cancel.hidden = isTerminal(job.state);
     if (job.state === 'queued') fill(result, notice('info', 'Waiting in the queue…'));
   };
   const onEvent = (e: JobEvent) => {
@@ -77,6 +115,7 @@ export const jobView: View = (root, params, query) => {
       case 'stage_started': {
         const r = rows.get(e.stage);
         if (r) r.el.className = 'stage running';
+        setText(heading, HEADINGS.running ?? '');
         fill(result);
         return;
       }
@@ -107,11 +146,14 @@ export const jobView: View = (root, params, query) => {
         show(e.job);
         fill(conn);
         if (e.job.state === 'succeeded' && e.scene_id) {
+          const sceneId = e.scene_id;
           fill(
             result,
-            notice('ok', 'The scene is ready and verified in MuJoCo.'),
-            h('a', { id: 'open-scene', class: 'button primary', href: `/scenes/${e.scene_id}`, text: 'Open the scene' }),
+            notice('ok', live ? 'The scene is ready and verified in MuJoCo; opening it…' : 'The scene is ready and verified in MuJoCo.'),
+            h('a', { id: 'open-scene', class: 'button primary', href: `/scenes/${sceneId}`, text: 'Open the scene' }),
           );
+          // Watched to its end: the scene opens (a moment to see the timeline complete).
+          if (live && !also.length) openTimer = setTimeout(() => navigate(`/scenes/${sceneId}`), OPEN_DELAY_MS);
         } else if (e.job.state === 'succeeded') {
           fill(result, notice('ok', `The ${e.job.kind} job finished.`));
         } else if (e.job.state === 'cancelled') {
@@ -128,6 +170,8 @@ export const jobView: View = (root, params, query) => {
     }
   };
 
+  let openTimer: ReturnType<typeof setTimeout> | null = null;
+  show(initial);
   const stop = api.watchJob(id, {
     onEvent,
     onDrop: (attempt, why) => {
@@ -137,10 +181,6 @@ export const jobView: View = (root, params, query) => {
     onReconnect: () => fill(conn, notice('ok', 'Reconnected; caught up with the job’s events.')),
     onFatal: (why) => fill(conn, notice('error', `This job cannot be followed: ${why}.`)),
   });
-  api
-    .job(id)
-    .then(show)
-    .catch((e: unknown) => fill(result, notice('error', `No such job here: ${api.describe(e)}.`)));
   cancel.addEventListener('click', () => {
     cancel.disabled = true;
     api
@@ -151,5 +191,11 @@ export const jobView: View = (root, params, query) => {
 
   head.append(cancel);
   root.append(h('div', { class: 'page job' }, head, promptLine, others, conn, timeline, result, h('h2', { text: 'Warnings' }), warnings));
-  return stop;
-};
+  return () => {
+    if (openTimer !== null) clearTimeout(openTimer);
+    stop();
+  };
+}
+
+/** How long a finished timeline stays on screen before its scene opens, ms. */
+const OPEN_DELAY_MS = 1500;

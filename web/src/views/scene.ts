@@ -1,12 +1,14 @@
 // See it, edit it: the package simulating in MuJoCo (WASM, in a worker) drawn by three.js,
-// with play / pause / step / reset to `home` / speed, geom groups, a click to inspect an
-// object, dragging to move it, parts dropped in from the library, natural-language edits,
-// the version history and the package's download.
+// with play / pause / step / reset to `home` / speed, geom groups, the camera framed on
+// the scene or the selected object, a click to inspect an object, dragging to move it,
+// parts dropped in from the library, natural-language edits, the version history and the
+// package's download. Keys: Space play/pause, . step, R reset, F frame, Delete remove the
+// selected object, Ctrl+Z back to the previous version, Esc deselect.
 
 import * as api from '../api';
 import { probe } from '../debug';
-import { fill, h, notice } from '../dom';
-import { navigate, type View } from '../router';
+import { fill, h, notice, setText } from '../dom';
+import { navigate, notFoundPage, type View } from '../router';
 import * as session from '../session';
 import { sim } from '../sim/client';
 import type { Layout, SceneDetail } from '../types';
@@ -70,6 +72,7 @@ export const sceneView: View = (root, params, query) => {
   p.renderInfo = () => viewer.info();
   p.bench = (s) => sim.bench(s);
   p.unload = () => sim.unload();
+  p.camera = () => viewer.cameraState();
   let model: { bodies: { name: string; root: number }[] } | null = null;
   const rootOf = (name: string) => model?.bodies.findIndex((b) => b.name === name) ?? -1;
   p.objectOnScreen = (name) => {
@@ -84,11 +87,8 @@ export const sceneView: View = (root, params, query) => {
     playing = on;
     playBtn.textContent = on ? '❚❚ Pause' : '▶ Play';
   };
-  playBtn.addEventListener('click', () => {
-    if (playing) sim.pause();
-    else sim.play();
-    setPlaying(!playing);
-  });
+  playBtn.addEventListener('click', () => togglePlay());
+  playBtn.title = 'play or pause (Space)';
   const speed = h(
     'select',
     { id: 'speed', title: 'simulation speed' },
@@ -102,15 +102,36 @@ export const sceneView: View = (root, params, query) => {
     box.addEventListener('change', () => viewer.setGroupVisible(g, box.checked));
     return h('label', { class: 'inline', title: `geom group ${g}` }, box, ` ${label}`);
   });
+  const togglePlay = () => {
+    if (playing) sim.pause();
+    else sim.play();
+    setPlaying(!playing);
+  };
+  const step = () => {
+    setPlaying(false);
+    sim.step(1);
+  };
+  const reset = () => {
+    setPlaying(false);
+    sim.reset();
+  };
+  // The selected object when there is one, else the whole scene.
+  const frame = () => {
+    const i = selected ? rootOf(selected) : -1;
+    if (!(i > 0 && viewer.frameObject(i))) viewer.resetCamera();
+  };
   const toolbar = h(
     'div',
     { class: 'toolbar' },
     playBtn,
-    h('button', { id: 'step', text: 'Step', on: { click: () => (setPlaying(false), sim.step(1)) } }),
-    h('button', { id: 'reset', text: 'Reset to home', on: { click: () => (setPlaying(false), sim.reset()) } }),
+    h('button', { id: 'step', text: 'Step', title: 'one step (.)', on: { click: step } }),
+    h('button', { id: 'reset', text: 'Reset to home', title: 'reset to the home keyframe (R)', on: { click: reset } }),
+    h('button', { id: 'frame', text: 'Frame', title: 'frame the selected object, or the whole scene (F)', on: { click: frame } }),
+    h('button', { id: 'reset-view', text: 'Reset view', title: 'the first view of the whole scene', on: { click: () => viewer.resetCamera() } }),
     speed,
     clock,
     h('details', { class: 'groups' }, h('summary', { text: 'Geom groups' }), ...groupBoxes),
+    h('span', { class: 'muted keys-hint', text: 'Space play · . step · R reset · F frame · Del remove · Ctrl+Z undo' }),
   );
 
   sim.onFrame = (f) => {
@@ -328,9 +349,9 @@ export const sceneView: View = (root, params, query) => {
       if (disposed) return;
       detail = d;
       layout = l;
-      title.textContent = d.scene_prompt;
+      setText(title, d.scene_prompt);
       title.append(h('span', { class: 'tag', text: `v${d.version}` }), h('span', { class: `badge ${d.status}`, text: d.status }));
-      if (d.version > 1) subtitle.textContent = `This version: ${d.prompt}`;
+      if (d.version > 1) setText(subtitle, `This version: ${d.prompt}`);
       show(query.get('tab') ?? 'report');
       const token = session.token() ?? '';
       const loaded = await sim.load(`/api/scenes/${encodeURIComponent(id)}/files`, token, d.files);
@@ -345,6 +366,12 @@ export const sceneView: View = (root, params, query) => {
     } catch (e) {
       if (disposed) return;
       stage.dataset.state = 'error';
+      if (!detail && e instanceof api.ApiError && e.status === 404) {
+        // Not the visitor's (or gone): a page that says so, not an empty viewer.
+        root.replaceChildren();
+        notFoundPage(root, 'No such scene here', 'This scene does not exist, or it is not yours.');
+        return;
+      }
       fill(status, notice('error', `This scene cannot be shown: ${api.describe(e)}.`), h('p', {}, h('a', { href: '/scenes', text: 'Your scenes' }), ' · ', h('a', { href: '/', text: 'describe a new one' })));
       if (!detail) body.hidden = true;
     }
@@ -361,8 +388,54 @@ export const sceneView: View = (root, params, query) => {
     ),
   );
 
+  // --- Keys (not while typing in a field) ---
+  const onKey = (e: KeyboardEvent) => {
+    const t = e.target as HTMLElement | null;
+    if (t && (t.isContentEditable || ['INPUT', 'TEXTAREA', 'SELECT'].includes(t.tagName))) return;
+    if (!model) return;
+    const key = e.key.toLowerCase();
+    if ((e.ctrlKey || e.metaKey) && key === 'z') {
+      // Undo: back to the version this one was made from.
+      if (detail?.parent_id) {
+        e.preventDefault();
+        navigate(`/scenes/${detail.parent_id}`);
+      }
+      return;
+    }
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    switch (key) {
+      case ' ':
+        // Space on a focused button or link presses it, as everywhere.
+        if (t && ['BUTTON', 'A', 'SUMMARY'].includes(t.tagName)) return;
+        e.preventDefault();
+        togglePlay();
+        return;
+      case '.':
+        step();
+        return;
+      case 'r':
+        reset();
+        return;
+      case 'f':
+        frame();
+        return;
+      case 'escape':
+        select(null);
+        return;
+      case 'delete':
+      case 'backspace':
+        if (selected && layout?.objects.some((o) => o.name === selected)) {
+          e.preventDefault();
+          void runEdit(`remove ${selected}`, `Removing ${selected}`);
+        }
+        return;
+    }
+  };
+  document.addEventListener('keydown', onKey);
+
   return () => {
     disposed = true;
+    document.removeEventListener('keydown', onKey);
     sim.pause();
     sim.onFrame = null;
     sim.onProgress = null;

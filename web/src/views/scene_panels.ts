@@ -71,7 +71,12 @@ export function reportPanel(detail: SceneDetail): HTMLElement {
   if (r.relations.length) facts.push(['relations', `${r.relations.filter((x) => x.held).length} of ${r.relations.length} hold`]);
   if (v) {
     facts.push(['engine', `${v.engine}, ${v.compiled ? 'compiled' : 'did not compile'}`]);
-    if (v.contacts !== null) facts.push(['at t = 0', `${v.contacts} contacts deeper than 1 mm${v.maxDepth ? `, deepest ${(v.maxDepth * 1000).toFixed(2)} mm` : ''}`]);
+    if (v.contacts !== null) {
+      // `contacts` counts every contact (things resting touch); only the deep ones are a finding.
+      const limit = `${((v.threshold ?? 0.001) * 1000).toFixed(0)} mm`;
+      const deep = v.deep === 0 ? `none deeper than ${limit}` : `${v.deep} deeper than ${limit}`;
+      facts.push(['at t = 0', `${v.contacts} contact${v.contacts === 1 ? '' : 's'}, ${deep}${v.maxDepth ? `; deepest ${(v.maxDepth * 1000).toFixed(2)} mm` : ''}`]);
+    }
     if (v.maxDisplacement !== null)
       facts.push([`${v.settleS ?? 2} s settle`, `largest move ${(v.maxDisplacement * 1000).toFixed(2)} mm${v.worstBody ? ` (${v.worstBody})` : ''}`]);
     for (const rb of v.robots) facts.push([rb.name, `joint drift ${rb.drift !== null ? rb.drift.toFixed(4) : '?'} rad`]);

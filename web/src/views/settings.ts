@@ -1,20 +1,39 @@
-// Settings: who is signed in, and API keys for scripts (a new key is shown once).
+// Settings: who is signed in, and API keys for scripts (a new key is shown once; any key
+// can be revoked).
 
 import * as api from '../api';
 import { fill, fmtDate, h, notice } from '../dom';
 import type { View } from '../router';
+import type { ApiKey } from '../types';
 
 export const settingsView: View = (root) => {
   const who = h('p', { class: 'muted', text: 'loading…' });
   const list = h('ul', { class: 'keys', id: 'keys' });
   const status = h('div', { class: 'status', id: 'key-status' });
   const name = h('input', { id: 'key-name', placeholder: 'a name for the key (e.g. laptop script)' });
+  const revoke = (k: ApiKey) => {
+    if (!window.confirm(`Revoke the key "${k.name}"? Scripts using it stop working at once.`)) return;
+    api
+      .revokeKey(k.id)
+      .then(() => {
+        fill(status, notice('ok', `The key "${k.name}" is revoked.`));
+        return refresh();
+      })
+      .catch((e: unknown) => fill(status, notice('error', `The key was not revoked: ${api.describe(e)}.`)));
+  };
+  const row = (k: ApiKey) =>
+    h(
+      'li',
+      { data: { key: k.id } },
+      h('b', { text: k.name }),
+      ` created ${fmtDate(k.created_at)}`,
+      h('code', { text: ` ${k.id.slice(0, 8)}…` }),
+      h('button', { class: 'revoke', text: 'Revoke', on: { click: () => revoke(k) } }),
+    );
   const refresh = () =>
     api
       .keys()
-      .then((ks) =>
-        fill(list, ...(ks.length ? ks.map((k) => h('li', {}, h('b', { text: k.name }), ` created ${fmtDate(k.created_at)}`, h('code', { text: ` ${k.id.slice(0, 8)}…` }))) : [h('li', { class: 'muted', text: 'No API keys yet.' })])),
-      )
+      .then((ks) => fill(list, ...(ks.length ? ks.map(row) : [h('li', { class: 'muted', text: 'No API keys yet.' })])))
       .catch((e: unknown) => fill(list, notice('error', `The keys did not load: ${api.describe(e)}.`)));
   const create = async () => {
     if (!name.value.trim()) return fill(status, notice('error', 'Give the key a name.'));

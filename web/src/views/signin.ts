@@ -14,7 +14,8 @@ function safeNext(q: URLSearchParams): string {
 
 export const signInView: View = (root, _params, query) => {
   const status = h('div', { class: 'status' });
-  const reason = query.get('reason');
+  // A reason code from the address, worded here: text in the URL is never shown.
+  const reason = session.reasonText(query.get('reason'));
   if (reason) fill(status, notice('info', reason));
   const user = h('input', { id: 'username', placeholder: 'user name', attrs: { autocomplete: 'username', required: '' } });
   const pass = h('input', {
@@ -27,8 +28,8 @@ export const signInView: View = (root, _params, query) => {
     for (const b of form.querySelectorAll('button')) b.disabled = on;
   };
   const done = async () => {
-    const token = await api.login(user.value.trim(), pass.value);
-    session.signIn(token, user.value.trim());
+    const signedIn = await api.login(user.value.trim(), pass.value);
+    session.signIn(signedIn.token, signedIn.username);
     navigate(safeNext(query), true);
   };
   const act = (register: boolean) => async (e: Event) => {

@@ -23,10 +23,13 @@ export const studioView: View = (root) => {
 
   const showAsset = async (a: Asset) => {
     current = { ref: a.id, label: a.description };
+    preview.clear();
+    previewHost.dataset.part = '';
     fill(info, h('h3', { text: a.description }), h('p', {}, `${a.source} · ${fmtSize(a.size)}`));
     if (!a.hasMesh) return;
     try {
       const dims = preview.show(parseStl(await api.assetMesh(a.id)));
+      previewHost.dataset.part = a.id;
       info.append(h('p', { id: 'mesh-size', text: `mesh ${dims.map((v) => (v * 1000).toFixed(1)).join(' × ')} mm` }));
     } catch (e) {
       info.append(notice('error', `The mesh did not load: ${api.describe(e)}.`));
@@ -35,6 +38,8 @@ export const studioView: View = (root) => {
   function pick(p: PartChoice): void {
     current = p;
     if (p.ref.startsWith('catalog:')) {
+      preview.clear();
+      previewHost.dataset.part = '';
       fill(info, h('h3', { text: p.label }), h('p', { class: 'muted', text: 'A catalog category: made procedurally in each scene (no stored mesh to preview).' }));
       return;
     }
@@ -52,6 +57,11 @@ export const studioView: View = (root) => {
     if (given && !mm.every((v) => v > 0)) return fill(status, notice('error', 'Give all three sizes in millimetres, or none.'));
     const sizeM: [number, number, number] | null = given ? [(mm[0] ?? 0) / 1000, (mm[1] ?? 0) / 1000, (mm[2] ?? 0) / 1000] : null;
     progress.replaceChildren();
+    // The part shown is no longer the one asked for: the preview and its facts go.
+    current = null;
+    preview.clear();
+    previewHost.dataset.part = '';
+    fill(info, h('p', { class: 'muted', text: `Making “${text}”…` }));
     fill(status, notice('info', 'Making the part…'));
     const started = performance.now();
     try {
@@ -65,6 +75,7 @@ export const studioView: View = (root) => {
       await showAsset(a);
     } catch (e) {
       fill(status, notice('error', `The part could not be made: ${api.describe(e)}.`));
+      fill(info, h('p', { class: 'muted', text: 'Nothing to show: the part was not made.' }));
     }
   };
 

@@ -139,6 +139,14 @@ impl App {
         v["token"].as_str().unwrap().to_string()
     }
 
+    /// Logs an existing user in; returns a new access token.
+    pub async fn user_login(&self, name: &str) -> String {
+        let creds = json!({"username": name, "password": "correct horse battery"});
+        let (s, v) = self.call(Method::POST, "/api/auth/login", None, Payload::Json(creds)).await;
+        assert_eq!(s, StatusCode::OK, "{v}");
+        v["token"].as_str().unwrap().to_string()
+    }
+
     /// Waits until a job is terminal (no time limit here: the job's own timeout ends it).
     pub async fn wait_job(&self, id: &str, token: &str) -> Value {
         loop {
@@ -158,4 +166,61 @@ impl App {
 
 pub fn shared<T>(t: T) -> Arc<T> {
     Arc::new(t)
+}
+
+/// A tiny HTTP/1.1 client over a real socket: status, headers (lower-case names) and the
+/// body as JSON (or `Null`).
+pub async fn http(
+    addr: std::net::SocketAddr,
+    method: &str,
+    path: &str,
+    token: Option<&str>,
+    body: Option<Value>,
+) -> (u16, std::collections::BTreeMap<String, String>, Value) {
+    use tokio::io::{AsyncReadExt, AsyncWriteExt};
+    let mut s = tokio::net::TcpStream::connect(addr).await.unwrap();
+    let body = body.map(|b| b.to_string()).unwrap_or_default();
+    let mut req =
+        format!("{method} {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\nContent-Length: {}\r\n", body.len());
+    if !body.is_empty() {
+        req.push_str("Content-Type: application/json\r\n");
+    }
+    if let Some(t) = token {
+        req.push_str(&format!("Authorization: Bearer {t}\r\n"));
+    }
+    req.push_str("\r\n");
+    req.push_str(&body);
+    s.write_all(req.as_bytes()).await.unwrap();
+    let mut buf = Vec::new();
+    s.read_to_end(&mut buf).await.unwrap();
+    let text = String::from_utf8_lossy(&buf);
+    let (head, body) = text.split_once("\r\n\r\n").unwrap_or((&text, ""));
+    let status: u16 = head.split(' ').nth(1).and_then(|s| s.parse().ok()).unwrap_or(0);
+    let headers = head
+        .lines()
+        .skip(1)
+        .filter_map(|l| l.split_once(':'))
+        .map(|(k, v)| (k.trim().to_ascii_lowercase(), v.trim().to_string()))
+        .collect();
+    // Chunked bodies are not expected here (JSON answers have a length).
+    (status, headers, serde_json::from_str(body).unwrap_or(Value::Null))
+}
+
+/// Serves `a`'s router on a loopback port (with the service's own connection handling)
+/// until the returned sender is dropped or sent to.
+pub async fn serve_on_socket(
+    a: &App,
+    opts: sw_server::HttpOptions,
+) -> (std::net::SocketAddr, tokio::sync::oneshot::Sender<()>, tokio::task::JoinHandle<()>) {
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let addr = listener.local_addr().unwrap();
+    let (tx, rx) = tokio::sync::oneshot::channel::<()>();
+    let router = a.router.clone();
+    let task = tokio::spawn(async move {
+        let _ = sw_server::http::serve(listener, router, opts, async move {
+            let _ = rx.await;
+        })
+        .await;
+    });
+    (addr, tx, task)
 }

@@ -7,7 +7,7 @@
 use std::collections::BTreeMap;
 
 use sw_store::{
-    CountedTable, JobKind, JobState, NewJob, NewScene, QueueLimits, Role, Store, StoreError, Telemetry, new_id,
+    CountedTable, JobKind, JobState, NewJob, NewScene, QueueLimits, Role, Store, StoreError, Telemetry, new_id, now_ms,
 };
 
 fn job(user: &str, prompt: &str) -> NewJob {
@@ -24,17 +24,24 @@ fn job(user: &str, prompt: &str) -> NewJob {
 }
 
 fn scene() -> NewScene {
-    NewScene { id: new_id(), status: "passed".into(), report: serde_json::json!({}), files: vec![], edit: None }
+    NewScene {
+        id: new_id(),
+        status: "passed".into(),
+        report: serde_json::json!({}),
+        files: vec![],
+        hashes: vec![],
+        edit: None,
+    }
 }
 
 pub async fn a_full_queue_refuses_and_stores_nothing(s: &Store) {
     let u = s.create_user("ann", "h", None).await.unwrap();
-    let limits = QueueLimits { queue_cap: 3, per_user_running: 5 };
+    let limits = QueueLimits { queue_cap: 3, per_user_running: 5, per_user_queued: 3 };
     for i in 0..3 {
         s.enqueue(&job(&u.id, &format!("p{i}")), limits).await.unwrap();
     }
     let err = s.enqueue(&job(&u.id, "one too many"), limits).await.unwrap_err();
-    assert!(matches!(err, StoreError::QueueFull { cap: 3 }), "{err}");
+    assert!(matches!(err, StoreError::QueueFull { cap: 3, .. }), "{err}");
     assert_eq!(s.count_rows(CountedTable::Jobs).await.unwrap(), 3);
     assert_eq!(s.count_rows(CountedTable::Prompts).await.unwrap(), 3);
     // Running jobs do not count against the cap.
@@ -47,7 +54,7 @@ pub async fn a_full_queue_refuses_and_stores_nothing(s: &Store) {
 /// full — no overshoot from two transactions counting the same free places.
 pub async fn concurrent_enqueues_never_overshoot_the_cap(s: &Store) {
     let u = s.create_user("ann", "h", None).await.unwrap();
-    let limits = QueueLimits { queue_cap: 5, per_user_running: 5 };
+    let limits = QueueLimits { queue_cap: 5, per_user_running: 5, per_user_queued: 5 };
     for round in 0..8 {
         let mut tasks = Vec::new();
         for i in 0..48 {
@@ -58,7 +65,7 @@ pub async fn concurrent_enqueues_never_overshoot_the_cap(s: &Store) {
         for t in tasks {
             match t.await.unwrap() {
                 Ok(j) => queued.push(j.id),
-                Err(StoreError::QueueFull { cap: 5 }) => full += 1,
+                Err(StoreError::QueueFull { cap: 5, .. }) => full += 1,
                 Err(e) => panic!("round {round}: {e}"),
             }
         }
@@ -74,7 +81,7 @@ pub async fn concurrent_enqueues_never_overshoot_the_cap(s: &Store) {
 }
 
 pub async fn concurrent_claimers_never_share_a_job(s: &Store) {
-    let limits = QueueLimits { queue_cap: 1000, per_user_running: 1000 };
+    let limits = QueueLimits { queue_cap: 1000, per_user_running: 1000, per_user_queued: 1000 };
     let mut users = Vec::new();
     for i in 0..4 {
         users.push(s.create_user(&format!("u{i}"), "h", None).await.unwrap());
@@ -108,7 +115,7 @@ pub async fn concurrent_claimers_never_share_a_job(s: &Store) {
 }
 
 pub async fn the_per_user_limit_lets_others_go_first(s: &Store) {
-    let limits = QueueLimits { queue_cap: 100, per_user_running: 1 };
+    let limits = QueueLimits { queue_cap: 100, per_user_running: 1, per_user_queued: 100 };
     let a = s.create_user("a", "h", None).await.unwrap();
     let b = s.create_user("b", "h", None).await.unwrap();
     let a1 = s.enqueue(&job(&a.id, "a1"), limits).await.unwrap();
@@ -220,4 +227,87 @@ pub async fn hostile_strings_are_data(s: &Store) {
     assert_eq!(s.assets_of(&u.id, "zz%").await.unwrap().len(), 0);
     assert_eq!(s.assets_of(&second.id, "").await.unwrap().len(), 0);
     assert_eq!(s.count_rows(CountedTable::Users).await.unwrap(), 2);
+}
+
+/// Users are served in turn: one user's long backlog does not hold another's single job
+/// behind it; among equals, arrival order.
+pub async fn users_are_served_in_turn(s: &Store) {
+    let limits = QueueLimits { queue_cap: 100, per_user_running: 5, per_user_queued: 100 };
+    let a = s.create_user("a", "h", None).await.unwrap();
+    let b = s.create_user("b", "h", None).await.unwrap();
+    let mut mine = Vec::new();
+    for i in 0..6 {
+        mine.push(s.enqueue(&job(&a.id, &format!("a{i}")), limits).await.unwrap().id);
+    }
+    let theirs = s.enqueue(&job(&b.id, "b0"), limits).await.unwrap().id;
+    let first = s.claim("w", 60_000, limits).await.unwrap().unwrap();
+    assert_eq!(first.job.id, mine[0]);
+    let second = s.claim("w", 60_000, limits).await.unwrap().unwrap();
+    assert_eq!(second.job.id, theirs, "b's only job goes before a's second");
+    let third = s.claim("w", 60_000, limits).await.unwrap().unwrap();
+    assert_eq!(third.job.id, mine[1]);
+}
+
+/// One user may hold only a share of the queue; another still gets in; a batch that does
+/// not fit is refused whole.
+pub async fn one_user_holds_a_share_of_the_queue(s: &Store) {
+    let limits = QueueLimits { queue_cap: 10, per_user_running: 5, per_user_queued: 3 };
+    let a = s.create_user("a", "h", None).await.unwrap();
+    let b = s.create_user("b", "h", None).await.unwrap();
+    for i in 0..3 {
+        s.enqueue(&job(&a.id, &format!("a{i}")), limits).await.unwrap();
+    }
+    let e = s.enqueue(&job(&a.id, "a3"), limits).await.unwrap_err();
+    assert!(matches!(e, StoreError::QueueFull { cap: 3, per_user: true }), "{e}");
+    let batch: Vec<NewJob> = (0..4).map(|i| job(&b.id, &format!("b{i}"))).collect();
+    assert!(matches!(s.enqueue_all(&batch, limits).await, Err(StoreError::QueueFull { per_user: true, .. })));
+    assert_eq!(s.count_rows(CountedTable::Jobs).await.unwrap(), 3, "nothing of the refused batch");
+    assert_eq!(s.enqueue_all(&batch[..3], limits).await.unwrap().len(), 3);
+}
+
+/// A job given back by a stopping runner runs again, its attempt not counted, and the
+/// stopping runner cannot complete it any more.
+pub async fn a_released_job_runs_again_without_losing_an_attempt(s: &Store) {
+    let limits = QueueLimits::default();
+    let u = s.create_user("ann", "h", None).await.unwrap();
+    let j = s.enqueue(&job(&u.id, "p"), limits).await.unwrap();
+    let c = s.claim("stopping", 60_000, limits).await.unwrap().unwrap();
+    assert!(s.release(&c, "the server stopped").await.unwrap());
+    let back = s.job(&j.id).await.unwrap().unwrap();
+    assert_eq!((back.state, back.attempts), (JobState::Queued, 0));
+    assert!(!s.complete(&c, &scene(), &Telemetry::default()).await.unwrap(), "the released claim is void");
+    assert!(!s.release(&c, "again").await.unwrap());
+    let again = s.claim("next", 60_000, limits).await.unwrap().unwrap();
+    assert_eq!(again.attempt, 1);
+    let events = s.events_after(&j.id, 0).await.unwrap();
+    assert!(events.iter().any(|(_, e)| e["event"] == "requeued" && e["reason"] == "the server stopped"));
+}
+
+/// Names are one whatever their case; the service account is never a login account;
+/// keys and tokens can be revoked.
+pub async fn accounts_names_keys_and_tokens(s: &Store) {
+    let alice = s.create_user("Alice", "h", None).await.unwrap();
+    for name in ["alice", "ALICE"] {
+        assert!(matches!(s.create_user(name, "h", None).await, Err(StoreError::Conflict(_))), "{name}");
+        assert_eq!(s.user_by_name(name).await.unwrap().unwrap().id, alice.id);
+    }
+    let svc = s.service_account("scenewright-dataset").await.unwrap();
+    assert_eq!(s.service_account("scenewright-dataset").await.unwrap().id, svc.id, "the same account again");
+    // A login account holding a service name (registered before names were reserved).
+    s.create_user("scenewright-x", "$argon2id$v=19$m=1,t=1,p=1$c2FsdA$aGFzaA", None).await.unwrap();
+    assert!(matches!(s.service_account("scenewright-x").await, Err(StoreError::Conflict(_))));
+    let key = s.create_api_key(&alice.id, "k", "hash-1").await.unwrap();
+    assert!(!s.delete_api_key(&svc.id, &key).await.unwrap(), "not another user's to delete");
+    assert!(s.user_by_api_key("hash-1").await.unwrap().is_some());
+    assert!(s.delete_api_key(&alice.id, &key).await.unwrap());
+    assert!(s.user_by_api_key("hash-1").await.unwrap().is_none());
+    assert!(!s.token_revoked("jti-1").await.unwrap());
+    s.revoke_token("jti-1", now_ms() + 60_000).await.unwrap();
+    s.revoke_token("jti-1", now_ms() + 60_000).await.unwrap();
+    assert!(s.token_revoked("jti-1").await.unwrap());
+    // Expired revocations are forgotten when the next is written.
+    s.revoke_token("old", now_ms() - 1).await.unwrap();
+    s.revoke_token("jti-2", now_ms() + 60_000).await.unwrap();
+    assert!(!s.token_revoked("old").await.unwrap());
+    s.probe_write().await.unwrap();
 }
