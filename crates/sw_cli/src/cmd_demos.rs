@@ -71,6 +71,10 @@ pub(crate) struct DemosArgs {
     /// Keep colours, masses, friction, lighting and the camera as the scene has them.
     #[arg(long)]
     no_randomise: bool,
+    /// Keep each unsolved attempt's scene, task and a video of it (front camera) under
+    /// DIR/failed/ to see why (they are never part of the dataset).
+    #[arg(long)]
+    keep_failed: bool,
     /// Print one JSON summary instead of progress and a summary.
     #[arg(long)]
     json: bool,
@@ -293,6 +297,7 @@ struct Shared<'a> {
     info: Mutex<Option<DatasetInfo>>,
     progress: Progress,
     last_meta: Mutex<Instant>,
+    keep_failed: bool,
 }
 
 #[derive(Default)]
@@ -353,6 +358,7 @@ pub(crate) fn run(a: DemosArgs) -> Result<u8, Failure> {
         info: Mutex::new(info),
         progress: Progress::new(wanted, have).unit("episodes", "demos"),
         last_meta: Mutex::new(Instant::now()),
+        keep_failed: a.keep_failed,
     };
     ACTIVE.store(true, Ordering::SeqCst);
     let started = Instant::now();
@@ -507,11 +513,21 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<bool, Stop> {
     // The episode's own scene.
     let package_xml = std::fs::read_to_string(pkg.join("scene.xml")).map_err(fatal)?;
     let movable: Vec<String> = outcome.layout.objects.iter().filter(|o| o.movable).map(|o| o.name.clone()).collect();
+    let coloured: Vec<&str> =
+        outcome.plan.objects.iter().filter(|g| g.color.is_some()).map(|g| g.id.as_str()).collect();
+    let named_colour: Vec<String> = outcome
+        .layout
+        .objects
+        .iter()
+        .filter(|o| coloured.contains(&o.group.as_str()))
+        .map(|o| o.name.clone())
+        .collect();
     let vary = if spec.randomise { sw_expert::Vary::ALL } else { sw_expert::Vary::NONE };
-    let (xml, randomisation) = match sw_expert::episode_scene(&package_xml, spec.fps, seed, &movable, vary) {
-        Ok(x) => x,
-        Err(e) => return fail("scene", e.to_string(), family),
-    };
+    let (xml, randomisation) =
+        match sw_expert::episode_scene(&package_xml, spec.fps, seed, &movable, &named_colour, vary) {
+            Ok(x) => x,
+            Err(e) => return fail("scene", e.to_string(), family),
+        };
     std::fs::write(pkg.join("scene.xml"), xml).map_err(fatal)?;
     let eopts = sw_expert::ExpertOptions { fps: spec.fps, seed, max_seconds: 30.0 * task.goals.len().max(1) as f64 };
     let ep = match sw_expert::solve(&pkg.join("scene.xml"), &task, &robot_model, &eopts) {
@@ -520,6 +536,9 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<bool, Stop> {
     };
     if !ep.success {
         let why: Vec<String> = ep.verdicts.iter().filter_map(|v| v.why.clone()).collect();
+        if sh.keep_failed {
+            keep_failed(sh.dir.root(), p, seed, &pkg, &ep, spec);
+        }
         return fail("not_solved", why.join("; "), family);
     }
     if sh.stop.load(Ordering::SeqCst) {
@@ -546,6 +565,21 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<bool, Stop> {
         }
     }
     commit(sh, p, seed, &work, &pkg, &task, &robot_model, ep, cams, image_stats, randomisation, started)
+}
+
+/// Moves an unsolved attempt's scene to DIR/failed/pPPPP-seedS/ with front and wrist videos
+/// (best effort: this is for looking at, never for the dataset).
+fn keep_failed(root: &Path, p: usize, seed: u64, pkg: &Path, ep: &sw_expert::Episode, spec: &DemosSpec) {
+    let dest = root.join(format!("failed/p{p:04}-seed{seed}"));
+    let _ = std::fs::create_dir_all(root.join("failed"));
+    let _ = std::fs::remove_dir_all(&dest);
+    if std::fs::rename(pkg, &dest).is_err() {
+        return;
+    }
+    let _ = sw_lerobot::write_atomically(&dest.join("verdicts.json"), &pretty(&ep.verdicts));
+    let mut cams = vec![("front".to_string(), "front".to_string())];
+    cams.extend(ep.wrist_camera.clone().map(|c| ("wrist".to_string(), c)));
+    let _ = render_videos(&dest, &dest, &cams, ep, spec);
 }
 
 enum RenderFailure {

@@ -55,12 +55,14 @@ impl Vary {
 }
 
 /// Writes the episode's `scene.xml` text from the package's, for `fps`, with the
-/// randomisation of `seed` applied to the `movable` bodies.
+/// randomisation of `seed` applied to the `movable` bodies. Bodies in `named_colour` keep
+/// the hue the prompt named ("the red cube" stays red; only its shade varies).
 pub fn episode_scene(
     package_xml: &str,
     fps: u32,
     seed: u64,
     movable: &[String],
+    named_colour: &[String],
     vary: Vary,
 ) -> Result<(String, Randomisation), ExpertError> {
     let mut root = Element::parse(package_xml).map_err(|e| ExpertError::Scene(format!("scene.xml: {}", e.message)))?;
@@ -136,10 +138,28 @@ pub fn episode_scene(
         }
     }
     if vary.colours && !material_of_body.is_empty() {
+        // The materials' colours as written.
+        let mut written: Vec<(String, [f64; 4])> = Vec::new();
+        if let Some(asset) = root.first("asset") {
+            for m in asset.children.iter().filter(|c| c.name == "material") {
+                let v = m.get("rgba").map(parse_nums).unwrap_or_default();
+                if let (Some(n), [r, g, b, a]) = (m.get("name"), v.as_slice()) {
+                    written.push((n.to_string(), [*r, *g, *b, *a]));
+                }
+            }
+        }
         // A new material per moved thing (materials may be shared by several bodies).
         let mut new_materials = Vec::new();
         for (body, mat) in &material_of_body {
-            let rgba = [rng.range(0.05, 0.95), rng.range(0.05, 0.95), rng.range(0.05, 0.95), 1.0].map(round3);
+            let base = written.iter().find(|(n, _)| n == mat).map(|(_, c)| *c);
+            let rgba = match base {
+                // A named colour: the same hue, a shade lighter or darker.
+                Some(c) if named_colour.contains(body) => {
+                    let k = rng.range(0.8, 1.2);
+                    [(c[0] * k).min(1.0), (c[1] * k).min(1.0), (c[2] * k).min(1.0), c[3]].map(round3)
+                }
+                _ => [rng.range(0.05, 0.95), rng.range(0.05, 0.95), rng.range(0.05, 0.95), 1.0].map(round3),
+            };
             let new_name = format!("sw_episode_{body}");
             new_materials.push(
                 Element::new("material")

@@ -21,6 +21,8 @@ const LIFT: f64 = 0.12;
 const RELEASE_GAP: f64 = 0.012;
 /// Extra height when dropping into a container, m.
 const DROP_GAP: f64 = 0.03;
+/// Fraction of the joint speed limit a carried thing is moved at.
+const CARRY_SPEED: f64 = 0.6;
 /// IK restarts per pose.
 const RESTARTS: usize = 12;
 
@@ -303,7 +305,17 @@ impl<'a, 'm> Expert<'a, 'm> {
         let (above, release, q_above, _q_rel) =
             chosen.ok_or_else(|| ExpertError::Ik(format!("no place for {object} is reachable with it in the hand")))?;
         let path = self.plan_to(Allow { held: Some(held), touch: None }, &q_above)?;
-        self.run.follow(self.rig, &path, 0.8)?;
+        self.run.follow(self.rig, &path, CARRY_SPEED)?;
+        // Still in the hand?
+        let (tp2, tr2) = self.rig.tcp_pose(&self.run.data);
+        let expected = add(tp2, crate::math::mat_vec(&tr2, held.rel_pos));
+        let slip = crate::math::norm(sub(self.run.data.xpos()[held.body], expected));
+        if slip > 0.03 {
+            return Err(ExpertError::Failed(format!(
+                "{object} slipped in the hand while carried ({:.0} mm)",
+                slip * 1000.0
+            )));
+        }
         self.sync_scratch();
         let down = self.line(&q_above, above.pos, &release, 4)?;
         self.run.follow(self.rig, &down, 0.35)?;

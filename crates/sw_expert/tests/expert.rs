@@ -35,7 +35,7 @@ fn robot_model(dir: &Path, robot: &str) -> String {
 fn run(dir: &Path, task: &Task, seed: u64) -> (Result<sw_expert::Episode, sw_expert::ExpertError>, PathBuf) {
     let xml = std::fs::read_to_string(dir.join("scene.xml")).unwrap();
     let movable = task.moved_objects().into_iter().map(str::to_string).collect::<Vec<_>>();
-    let (text, _) = episode_scene(&xml, 15, seed, &movable, Vary::ALL).unwrap();
+    let (text, _) = episode_scene(&xml, 15, seed, &movable, &[], Vary::ALL).unwrap();
     let path = dir.join("episode.xml");
     std::fs::write(&path, text).unwrap();
     let opts = ExpertOptions { fps: 15, seed, max_seconds: 60.0 };

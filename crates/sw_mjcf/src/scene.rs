@@ -401,14 +401,15 @@ fn front_camera(layout: &LaidOutScene) -> Element {
             (c, [0.0, 1.0], rad)
         }
     };
-    let dist = (1.7 * radius).clamp(0.9, 3.0);
+    // Across the work from in front, looking down at about 40 degrees.
+    let dist = (1.5 * radius).clamp(0.8, 3.0);
     let margin = 0.12;
     let eye = [
         (center[0] + forward[0] * dist).clamp(-hw + margin, hw - margin),
         (center[1] + forward[1] * dist).clamp(-hd + margin, hd - margin),
-        (center[2] + 0.6 * dist).min(s.height - margin),
+        (center[2] + 0.85 * dist).min(s.height - margin),
     ];
-    look_at("front", eye, center, 55.0)
+    look_at("front", eye, center, 58.0)
 }
 
 fn centroid(pts: &[[f64; 3]]) -> [f64; 3] {
