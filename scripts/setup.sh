@@ -329,11 +329,11 @@ if [ "$want_lerobot" = 1 ]; then
     exit 1
   fi
   lr="$cache/lerobot-venv"
-  if ! "$lr/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('lerobot') != '0.6.1')" 2>/dev/null; then
+  if ! "$lr/bin/python" -c "import datasets, importlib.metadata as m, sys; sys.exit(m.version('lerobot') != '0.6.1')" 2>/dev/null; then
     say "creating $lr with lerobot 0.6.1 (PyTorch: several GB, minutes) ..."
     rm -rf "$lr"
     "$py312" -m venv "$lr"
-    "$lr/bin/python" -m pip install --quiet --disable-pip-version-check "lerobot==0.6.1" "pytest==9.2.0"
+    "$lr/bin/python" -m pip install --quiet --disable-pip-version-check "lerobot[dataset]==0.6.1"
     say "lerobot 0.6.1 ready in $lr"
   fi
 fi

@@ -1,4 +1,4 @@
-"""Behaviour cloning on a `scenewright demos` dataset, against a random policy.
+r"""Behaviour cloning on a `scenewright demos` dataset, against a random policy.
 
 Make demonstrations, then train and evaluate (needs `pyarrow`; the network is NumPy):
 
@@ -17,16 +17,21 @@ MuJoCo; success is the task's predicates (`scenewright.tasks`) at the end. A ran
 from __future__ import annotations
 
 import argparse
+import itertools
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from scenewright.demos import Demos, DemoEpisode
+from scenewright.demos import DemoEpisode, Demos
 from scenewright.tasks import holds
+
+Policy = Callable[[np.ndarray, np.ndarray, int], np.ndarray]
 
 
 def features(state: np.ndarray, env: np.ndarray, progress: float) -> np.ndarray:
+    """The policy's input: joint positions, the moved things' poses, the episode's progress."""
     return np.concatenate([state, env, [progress]])
 
 
@@ -43,12 +48,14 @@ class Mlp:
 
     @staticmethod
     def new(n_in: int, n_out: int, hidden: int, rng: np.random.Generator) -> Mlp:
+        """A network with random weights."""
         sizes = [n_in, hidden, hidden, n_out]
-        w = [rng.normal(0, 1 / np.sqrt(a), (a, b)) for a, b in zip(sizes[:-1], sizes[1:], strict=True)]
+        w = [rng.normal(0, 1 / np.sqrt(a), (a, b)) for a, b in itertools.pairwise(sizes)]
         b = [np.zeros(s) for s in sizes[1:]]
         return Mlp(w, b, np.zeros(n_in), np.ones(n_in), np.zeros(n_out), np.ones(n_out))
 
     def forward(self, x: np.ndarray) -> tuple[np.ndarray, list[np.ndarray]]:
+        """The normalised output and every layer's activation."""
         h = [(x - self.mu) / self.sd]
         for i, (w, b) in enumerate(zip(self.w, self.b, strict=True)):
             z = h[-1] @ w + b
@@ -56,10 +63,12 @@ class Mlp:
         return h[-1], h
 
     def __call__(self, x: np.ndarray) -> np.ndarray:
+        """The action for one input."""
         y, _ = self.forward(x[None])
         return np.asarray(y[0] * self.asd + self.amu)
 
     def fit(self, x: np.ndarray, y: np.ndarray, epochs: int, rng: np.random.Generator) -> float:
+        """Trains on (x, y); the last batch's loss."""
         self.mu, self.sd = x.mean(0), x.std(0) + 1e-6
         self.amu, self.asd = y.mean(0), y.std(0) + 1e-6
         yn = (y - self.amu) / self.asd
@@ -89,7 +98,7 @@ class Mlp:
         return loss
 
 
-def rollout(ep: DemoEpisode, policy, horizon: int) -> bool:
+def rollout(ep: DemoEpisode, policy: Policy, horizon: int) -> bool:
     """Runs `policy(obs, t)` from the episode's start; True when its task holds at the end."""
     model, data = ep.load()
     names = ep.info["features"]["observation.state"]["names"]
@@ -108,6 +117,7 @@ def rollout(ep: DemoEpisode, policy, horizon: int) -> bool:
 
 
 def main() -> None:
+    """Train on the dataset, roll out on the held-out starts, print both success rates."""
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("dataset")
     ap.add_argument("--holdout", type=int, default=5)

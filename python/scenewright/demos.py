@@ -48,15 +48,18 @@ class DemoEpisode:
 
     @property
     def scene_dir(self) -> Path:
+        """The episode's scene directory (`scenes/episode_NNNNNN`)."""
         return self.root / "scenes" / f"episode_{self.index:06d}"
 
     @property
     def task(self) -> dict[str, Any]:
+        """The episode's `task.json`."""
         task: dict[str, Any] = json.loads((self.scene_dir / "task.json").read_text())
         return task
 
     @property
     def record(self) -> dict[str, Any]:
+        """The episode's `episode.json` (seed, randomisation, verdicts, effort)."""
         rec: dict[str, Any] = json.loads((self.scene_dir / "episode.json").read_text())
         return rec
 
@@ -110,10 +113,12 @@ class Demos:
         return int(self.info["total_episodes"])
 
     def episodes(self) -> Iterator[DemoEpisode]:
+        """Every episode, in order."""
         for i in range(len(self)):
             yield DemoEpisode(self.root, i, self.info)
 
     def episode(self, index: int) -> DemoEpisode:
+        """Episode `index`."""
         if not 0 <= index < len(self):
             raise IndexError(f"episode {index} of {len(self)}")
         return DemoEpisode(self.root, index, self.info)

@@ -104,7 +104,8 @@ class SceneEnv(gym.Env[np.ndarray, np.ndarray]):
             ee_step: Metres of tool motion for an `ee_delta` action of 1.
             render_mode: `"rgb_array"` or `"depth_array"` from `camera`.
             camera: The scene's camera to render (`front`, `overview`, `<robot>_wrist`).
-            width, height: Rendered image size.
+            width: Rendered image width.
+            height: Rendered image height.
             max_cached: Variants kept in the temporary cache (older ones are removed).
         """
         super().__init__()
@@ -189,7 +190,8 @@ class SceneEnv(gym.Env[np.ndarray, np.ndarray]):
 
     def _variant(self, seed: int) -> Package:
         if self._dataset is not None:
-            return self._dataset[seed % len(self._dataset)].package
+            pkg: Package = self._dataset[seed % len(self._dataset)].package
+            return pkg
         assert self.prompt is not None
         last: Exception | None = None
         for k in range(_TRIES):
@@ -216,9 +218,7 @@ class SceneEnv(gym.Env[np.ndarray, np.ndarray]):
         """Keeps the temporary cache to `max_cached` variants (the least recently made go)."""
         if self._tmp is None:
             return
-        variants = sorted(
-            (p for p in self.cache_dir.glob("seed-*") if p.is_dir()), key=lambda p: p.stat().st_mtime
-        )
+        variants = sorted((p for p in self.cache_dir.glob("seed-*") if p.is_dir()), key=lambda p: p.stat().st_mtime)
         for p in variants[: max(0, len(variants) - self.max_cached + 1)]:
             if self.package is not None and p == self.package.path:
                 continue
@@ -382,10 +382,7 @@ class SceneEnv(gym.Env[np.ndarray, np.ndarray]):
             return obs, reward, diverged, False, info
         success = not diverged and holds(self.task, self.model, self.data)
         info["is_success"] = success
-        if self.reward_type == "sparse":
-            reward = 1.0 if success else 0.0
-        else:
-            reward = float(success) - self._distance()
+        reward = float(success) if self.reward_type == "sparse" else float(success) - self._distance()
         return obs, reward, success or diverged, False, info
 
     def _distance(self) -> float:
@@ -396,7 +393,7 @@ class SceneEnv(gym.Env[np.ndarray, np.ndarray]):
         reach = float(np.linalg.norm(self.data.site_xpos[self._tcp] - self.data.xpos[first])) if first >= 0 else 0.0
         return reach + goal
 
-    def render(self) -> np.ndarray | None:  # type: ignore[override]
+    def render(self) -> np.ndarray | None:
         """The `camera`'s image (RGB, or depth in metres), per `render_mode`."""
         if self.render_mode is None:
             return None
@@ -406,7 +403,7 @@ class SceneEnv(gym.Env[np.ndarray, np.ndarray]):
         if self.render_mode == "depth_array":
             self._renderer.enable_depth_rendering()
         self._renderer.update_scene(self.data, camera=self.camera)
-        return self._renderer.render()
+        return np.asarray(self._renderer.render())
 
     def close(self) -> None:
         """Remove the temporary variant cache, if this environment made one."""

@@ -34,14 +34,18 @@ class Box:
 
     @property
     def center(self) -> np.ndarray:
-        return (self.lo + self.hi) / 2
+        """The box's centre."""
+        return np.asarray((self.lo + self.hi) / 2)
 
     def covers_xy(self, p: np.ndarray) -> bool:
+        """Whether `p`'s footprint is strictly inside the box's."""
         return bool(self.lo[0] < p[0] < self.hi[0] and self.lo[1] < p[1] < self.hi[1])
 
 
 @dataclass(frozen=True)
 class Surface:
+    """A support surface: its height and world rectangle (x0, y0, x1, y1)."""
+
     z: float
     rect: tuple[float, float, float, float]
 
@@ -137,7 +141,7 @@ def judge(task: dict[str, Any], model: mujoco.MjModel, data: mujoco.MjData) -> l
     for g in task["goals"]:
         kind = g["predicate"]
         obj = g.get("object")
-        me = world.get(obj)[0] if obj in world else None
+        me = world[obj][0] if obj in world else None
         if kind in ("on", "inside"):
             targets = [world[t] for t in g["target"] if t in world]
             if me is None or not targets:
@@ -202,8 +206,11 @@ def holds(task: dict[str, Any], model: mujoco.MjModel, data: mujoco.MjData) -> b
 
 
 def distance_to_goal(task: dict[str, Any], model: mujoco.MjModel, data: mujoco.MjData) -> float:
-    """A dense measure: the summed distance from each moved thing to where its goal wants it
-    (the centre of the target's top, the region's centre, the pose), 0 for goals that hold."""
+    """A dense measure of how far the task is from holding.
+
+    The summed distance from each moved thing to where its goal wants it (the centre of the
+    target's top, the region's centre, the pose); 0 for goals that hold.
+    """
     world = bodies(model, data)
     total = 0.0
     for g, v in zip(task["goals"], judge(task, model, data), strict=True):

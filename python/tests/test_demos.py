@@ -26,7 +26,9 @@ def demos(out: Path, *args: str) -> subprocess.CompletedProcess[str]:
 @pytest.fixture(scope="module")
 def pick(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict]:
     out = tmp_path_factory.mktemp("demos") / "pick"
-    r = demos(out, "--prompt", PICK, "--episodes", "3", "--jobs", "2", "--cameras", "front,wrist", "--image-size", "96x96")
+    r = demos(
+        out, "--prompt", PICK, "--episodes", "3", "--jobs", "2", "--cameras", "front,wrist", "--image-size", "96x96"
+    )
     assert r.returncode == 0, r.stderr
     return out, json.loads(r.stdout)
 
@@ -93,9 +95,23 @@ def test_bad_input_is_one_line_and_exit_2(tmp_path: Path) -> None:
     cases = [
         ("--prompt", PICK, "--episodes", "0"),
         ("--prompt", "a Panda on a table with a red cube", "--task", "put the mug in the sink", "--episodes", "1"),
-        ("--prompt", "a TurtleBot in a room with a red cube and a bowl", "--task", "put the cube in the bowl", "--episodes", "1"),
+        (
+            "--prompt",
+            "a TurtleBot in a room with a red cube and a bowl",
+            "--task",
+            "put the cube in the bowl",
+            "--episodes",
+            "1",
+        ),
         ("--prompt", PICK, "--episodes", "1", "--image-size", "99x0"),
-        ("--prompt", "a Panda on a table with a red cube, a plate and a bowl", "--task", "put the cube in the bowl and put the cube on the plate", "--episodes", "1"),
+        (
+            "--prompt",
+            "a Panda on a table with a red cube, a plate and a bowl",
+            "--task",
+            "put the cube in the bowl and put the cube on the plate",
+            "--episodes",
+            "1",
+        ),
         ("--prompt", "a table with a cube", "--episodes", "1"),
     ]
     for args in cases:

@@ -245,7 +245,8 @@ fn preflight(spec: &DemosSpec, jobs: &[Job], scratch: &Path) -> Result<(), Failu
             let bound = bind(job, &dir).map_err(Failure::internal)?;
             let _ = std::fs::remove_dir_all(&dir);
             match bound {
-                Ok(_) => {
+                Ok(task) => {
+                    sw_expert::supports(&task).map_err(|e| Failure::input(format!("{where_}{e}")))?;
                     last = None;
                     break;
                 }
@@ -315,14 +316,21 @@ struct Stats {
 pub(crate) fn run(a: DemosArgs) -> Result<u8, Failure> {
     let spec = spec_of(&a)?;
     let jobs = jobs_of(&spec)?;
+    DemosDir::check(&a.out, &spec).map_err(|e| Failure::input(e.to_string()))?;
+    // Bad input writes nothing: the tasks are tried on scenes in a scratch directory
+    // before the dataset's directory is made.
+    let scratch = tempfile::Builder::new()
+        .prefix("scenewright-demos-")
+        .tempdir()
+        .map_err(|e| Failure::internal(format!("a scratch directory: {e}")))?;
+    preflight(&spec, &jobs, scratch.path())?;
+    drop(scratch);
     let (dir, resumed) = DemosDir::open(&a.out, &spec).map_err(|e| match e {
         DemosError::Unwritable { .. } | DemosError::Foreign(_) | DemosError::Mismatch { .. } | DemosError::Busy(_) => {
             Failure::input(e.to_string())
         }
     })?;
     let spec = dir.spec().clone();
-    let scratch = dir.work_dir(usize::MAX / 2, 0).map_err(|e| Failure::input(e.to_string()))?;
-    preflight(&spec, &jobs, &scratch)?;
     let njobs = a.jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())).max(1);
     // Seeds: each prompt's stream resumes past the largest seed it tried.
     let mut next: Vec<u64> = vec![spec.seed; jobs.len()];

@@ -147,26 +147,40 @@ pub(crate) struct DemosDir {
 }
 
 impl DemosDir {
+    /// Refuses `root` without touching it: a file, a foreign directory, or demonstrations
+    /// of other options.
+    pub fn check(root: &Path, spec: &DemosSpec) -> Result<(), DemosError> {
+        if let Some(old) = Self::existing(root)? {
+            let diff = old.differences(spec);
+            if !diff.is_empty() {
+                return Err(DemosError::Mismatch { dir: root.to_path_buf(), what: diff.join(", ") });
+            }
+        }
+        Ok(())
+    }
+
+    fn existing(root: &Path) -> Result<Option<DemosSpec>, DemosError> {
+        let spec_path = root.join("demos.json");
+        if !root.exists() {
+            return Ok(None);
+        }
+        if !root.is_dir() {
+            return Err(DemosError::Foreign(root.to_path_buf()));
+        }
+        let empty = std::fs::read_dir(root).map_err(|e| unwritable(root, e))?.next().is_none();
+        if empty {
+            return Ok(None);
+        }
+        let text = std::fs::read_to_string(&spec_path).ok();
+        let old: Option<DemosSpec> = text.and_then(|t| serde_json::from_str(&t).ok());
+        old.filter(|s| s.format == DEMOS_FORMAT && s.version == DEMOS_VERSION)
+            .map(Some)
+            .ok_or_else(|| DemosError::Foreign(root.to_path_buf()))
+    }
+
     pub fn open(root: &Path, spec: &DemosSpec) -> Result<(Self, Resumed), DemosError> {
         let spec_path = root.join("demos.json");
-        let existing = if root.exists() {
-            if !root.is_dir() {
-                return Err(DemosError::Foreign(root.to_path_buf()));
-            }
-            let empty = std::fs::read_dir(root).map_err(|e| unwritable(root, e))?.next().is_none();
-            if empty {
-                None
-            } else {
-                let text = std::fs::read_to_string(&spec_path).ok();
-                let old: Option<DemosSpec> = text.and_then(|t| serde_json::from_str(&t).ok());
-                Some(
-                    old.filter(|s| s.format == DEMOS_FORMAT && s.version == DEMOS_VERSION)
-                        .ok_or_else(|| DemosError::Foreign(root.to_path_buf()))?,
-                )
-            }
-        } else {
-            None
-        };
+        let existing = Self::existing(root)?;
         let mut spec = spec.clone();
         if let Some(old) = &existing {
             let diff = old.differences(&spec);

@@ -9,7 +9,7 @@ use sw_task::{Predicate, Snapshot, Task};
 
 use crate::grasp::{APPROACH, Grasp, free_spots, grasps, local_box, support_under};
 use crate::ik::{Target, fk, solve_ik};
-use crate::math::{V3, add, sub};
+use crate::math::{V3, add, rot_z, sub};
 use crate::motion::{Allow, Checker, Held, plan};
 use crate::rig::Rig;
 use crate::run::Runner;
@@ -23,6 +23,8 @@ const RELEASE_GAP: f64 = 0.012;
 const DROP_GAP: f64 = 0.03;
 /// Fraction of the joint speed limit a carried thing is moved at.
 const CARRY_SPEED: f64 = 0.6;
+/// Turns about the vertical tried for a place, rad.
+const TURNS: [f64; 4] = [0.0, std::f64::consts::FRAC_PI_2, -std::f64::consts::FRAC_PI_2, std::f64::consts::PI];
 /// IK restarts per pose.
 const RESTARTS: usize = 12;
 
@@ -132,11 +134,12 @@ impl<'a, 'm> Expert<'a, 'm> {
         let mut chosen: Option<(Grasp, Vec<f64>, Vec<f64>)> = None;
         let mut best_d = f64::INFINITY;
         for c in &candidates {
+            self.rig.set_fingers(&mut self.scratch, self.rig.opening_for(c.width).1);
             let Some(q_above) = self.ik(&now, &c.above(APPROACH)) else { continue };
             let Some(q_at) = self.ik(&q_above, &c.at) else { continue };
             let mut free_check = Checker::new(self.rig, Allow::default());
             let ok_above = free_check.free(&mut self.scratch, &q_above);
-            let mut touch = Checker::new(self.rig, Allow { held: None, touch: Some(body) });
+            let mut touch = Checker::new(self.rig, Allow { held: None, touch: Some((body, c.geom)) });
             let ok_at = touch.free(&mut self.scratch, &q_at);
             self.stats.collision_checks += free_check.checks + touch.checks;
             if !(ok_above && ok_at) {
@@ -153,7 +156,7 @@ impl<'a, 'm> Expert<'a, 'm> {
             ExpertError::Ik(format!("no grasp of {object} is reachable without collision ({} tried)", candidates.len()))
         })?;
         let path = self.plan_to(Allow::default(), &q_above)?;
-        self.run.ctrl[self.rig.grip_act] = self.rig.grip_open;
+        self.run.ctrl[self.rig.grip_act] = self.rig.opening_for(grasp.width).0;
         self.run.follow(self.rig, &path, 1.0)?;
         self.sync_scratch();
         let down = self.line(&q_above, grasp.above(APPROACH).pos, &grasp.at, 4)?;
@@ -195,7 +198,23 @@ impl<'a, 'm> Expert<'a, 'm> {
                 for t in target {
                     let b = body_of(t)?;
                     let c = b.bounds.center();
-                    v.push([c[0], c[1], b.bounds.max[2] + DROP_GAP]);
+                    // The middle, then spots around it, clear of what is already inside.
+                    let (hx, hy) = (0.5 * (b.bounds.max[0] - b.bounds.min[0]), 0.5 * (b.bounds.max[1] - b.bounds.min[1]));
+                    let (ox, oy) = ((0.5 * (hx - half[0])).max(0.0), (0.5 * (hy - half[1])).max(0.0));
+                    for (dx, dy) in [(0.0, 0.0), (ox, 0.0), (-ox, 0.0), (0.0, oy), (0.0, -oy)] {
+                        let p = [c[0] + dx, c[1] + dy];
+                        // Things already in it (their centre over it, their bottom in it).
+                        let taken = snap.bodies.iter().any(|(n, o)| {
+                            n != object
+                                && n != t
+                                && sw_task::judge::within(o, b)
+                                && (o.bounds.center()[0] - p[0]).abs() < 0.5 * (o.bounds.max[0] - o.bounds.min[0]) + half[0]
+                                && (o.bounds.center()[1] - p[1]).abs() < 0.5 * (o.bounds.max[1] - o.bounds.min[1]) + half[1]
+                        });
+                        if !taken {
+                            v.push([p[0], p[1], b.bounds.max[2] + DROP_GAP]);
+                        }
+                    }
                 }
                 v.sort_by(|a, b| {
                     (a[0] - base[0]).hypot(a[1] - base[1]).total_cmp(&(b[0] - base[0]).hypot(b[1] - base[1]))
@@ -288,17 +307,24 @@ impl<'a, 'm> Expert<'a, 'm> {
         let now = self.run.arm_target(self.rig);
         self.sync_scratch();
         let mut chosen = None;
-        for d in dests.iter().take(12) {
-            let release = Target { pos: add(tp, sub(*d, bottom)), rot: tr };
-            let above = Target { pos: add(release.pos, [0.0, 0.0, APPROACH]), rot: tr };
-            let Some(q_above) = self.ik(&now, &above) else { continue };
-            let Some(q_rel) = self.ik(&q_above, &release) else { continue };
-            let mut c = Checker::new(self.rig, Allow { held: Some(held), touch: None });
-            let ok = c.free(&mut self.scratch, &q_above);
-            self.stats.collision_checks += c.checks;
-            if ok {
-                chosen = Some((above, release, q_above, q_rel));
-                break;
+        // The thing may be turned about the vertical on the way (a quarter or half turn):
+        // the wrist often cannot keep the grasp's heading at the far place.
+        let hand = sub(tp, bottom);
+        'search: for d in dests.iter().take(12) {
+            for turn in TURNS {
+                let rz = rot_z(turn);
+                let rot = crate::math::mat_mul(&rz, &tr);
+                let release = Target { pos: add(*d, crate::math::mat_vec(&rz, hand)), rot };
+                let above = Target { pos: add(release.pos, [0.0, 0.0, APPROACH]), rot };
+                let Some(q_above) = self.ik(&now, &above) else { continue };
+                let Some(q_rel) = self.ik(&q_above, &release) else { continue };
+                let mut c = Checker::new(self.rig, Allow { held: Some(held), touch: None });
+                let ok = c.free(&mut self.scratch, &q_above);
+                self.stats.collision_checks += c.checks;
+                if ok {
+                    chosen = Some((above, release, q_above, q_rel));
+                    break 'search;
+                }
             }
         }
         self.sync_scratch();

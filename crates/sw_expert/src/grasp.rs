@@ -13,7 +13,7 @@ use crate::math::{M3, V3, add, col, cross, from_cols, mat_vec, quat_to_mat};
 use crate::rig::Rig;
 
 /// Clearance kept between the gripper's opening and the thing, m.
-const OPENING_SLACK: f64 = 0.012;
+pub(crate) const OPENING_SLACK: f64 = 0.012;
 /// How far above the grasp the hand comes in from, m.
 pub(crate) const APPROACH: f64 = 0.10;
 /// How far fingertips stay above the surface under the thing, m.
@@ -49,10 +49,13 @@ pub(crate) fn local_box(model: &MjModel, body: usize) -> Option<LocalBox> {
     })
 }
 
-/// A top-down grasp: the tool pose at the grasp.
+/// A top-down grasp: the tool pose at the grasp, and the thing's width across the pads.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Grasp {
     pub at: Target,
+    pub width: f64,
+    /// The one geom grasped (a mug's wall, a handle), `None` for the whole thing.
+    pub geom: Option<usize>,
 }
 
 impl Grasp {
@@ -104,14 +107,45 @@ pub(crate) fn grasps<M: ModelType>(
         }
         for sign in [1.0, -1.0] {
             let closing = [sign * axis[0], sign * axis[1], 0.0];
-            out.push(Grasp { at: Target { pos: [center[0], center[1], z], rot: down_closing(closing) } });
+            out.push(Grasp {
+                at: Target { pos: [center[0], center[1], z], rot: down_closing(closing) },
+                width: *width,
+                geom: None,
+            });
+        }
+    }
+    // A part of the thing that fits when the whole does not (a mug's wall, a handle): each
+    // upright collision geom across its narrower side, from its own top.
+    if out.is_empty() {
+        for g in 0..model.ffi().ngeom as usize {
+            if model.geom_bodyid()[g] as usize != body || model.geom_group()[g] != 3 {
+                continue;
+            }
+            let gm = data.geom_xmat()[g];
+            if gm[8].abs() < 0.95 {
+                continue;
+            }
+            let a = model.geom_aabb()[g];
+            let c = add(data.geom_xpos()[g], mat_vec(&gm, [a[0], a[1], a[2]]));
+            let top = c[2] + a[5] * gm[8].abs();
+            let z = (top - a[5].min(0.02)).max(support_z + rig.finger_depth + TIP_CLEARANCE);
+            for (axis, width) in [(col(&gm, 0), 2.0 * a[3]), (col(&gm, 1), 2.0 * a[4])] {
+                if width + OPENING_SLACK > rig.max_opening || width < 0.003 {
+                    continue;
+                }
+                for sign in [1.0, -1.0] {
+                    let closing = [sign * axis[0], sign * axis[1], 0.0];
+                    out.push(Grasp { at: Target { pos: [c[0], c[1], z], rot: down_closing(closing) }, width, geom: Some(g) });
+                }
+            }
         }
     }
     if out.is_empty() {
         let narrow = axes.iter().map(|a| a.1).fold(f64::INFINITY, f64::min);
         return Err(ExpertError::Grasp(format!(
-            "{name} is {:.0} mm across at its narrowest, wider than the gripper's {:.0} mm opening",
+            "{name} is {:.0} mm across at its narrowest; with {:.0} mm of clearance it does not fit the gripper's {:.0} mm opening",
             narrow * 1000.0,
+            OPENING_SLACK * 1000.0,
             rig.max_opening * 1000.0
         )));
     }

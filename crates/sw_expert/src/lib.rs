@@ -124,10 +124,34 @@ pub struct Episode {
     pub wrist_camera: Option<String>,
 }
 
+/// Whether the expert can do every goal of `task`: it picks and places things (on, inside,
+/// stacked on, near, in a region, lifted to a pose); it does not yet open or close things or
+/// drive mobile bases.
+pub fn supports(task: &Task) -> Result<(), ExpertError> {
+    for g in &task.goals {
+        match g {
+            sw_task::Predicate::Open { object, .. } | sw_task::Predicate::Closed { object, .. } => {
+                return Err(ExpertError::Unsupported(format!(
+                    "the expert does not open or close things yet ({} {object})",
+                    g.name()
+                )));
+            }
+            sw_task::Predicate::NavigateTo { robot, target, .. } => {
+                return Err(ExpertError::Unsupported(format!(
+                    "the expert does not drive mobile bases yet ({robot} to {target})"
+                )));
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
 /// Runs the expert on the episode scene at `scene` for `task`, done by robot instance
 /// `task.robot` of registry model `robot_model`.
 pub fn solve(scene: &Path, task: &Task, robot_model: &str, opts: &ExpertOptions) -> Result<Episode, ExpertError> {
     let started = Instant::now();
+    supports(task)?;
     let model = MjModel::from_xml(scene).map_err(|e| ExpertError::Scene(e.to_string()))?;
     let dt = model.opt().timestep;
     let fps = opts.fps.max(1);

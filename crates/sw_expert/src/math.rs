@@ -62,7 +62,6 @@ pub(crate) fn transpose(m: &M3) -> M3 {
 }
 
 /// Rotation about z by `yaw`.
-#[cfg(test)]
 pub(crate) fn rot_z(yaw: f64) -> M3 {
     let (s, c) = yaw.sin_cos();
     [c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0]

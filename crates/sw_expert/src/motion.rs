@@ -59,8 +59,9 @@ impl Held {
 pub(crate) struct Allow {
     /// The thing in the hand (moved with it; the fingers may touch it).
     pub held: Option<Held>,
-    /// A thing the hand may touch where it stands (at a grasp).
-    pub touch: Option<usize>,
+    /// A thing the hand may touch where it stands (at a grasp): the body, and the one geom
+    /// of it the fingers may touch (`None`: any of its geoms).
+    pub touch: Option<(usize, Option<usize>)>,
 }
 
 /// Collision checks on a scratch copy of the state.
@@ -108,7 +109,13 @@ impl<'r> Checker<'r> {
             // Fingers on the thing they hold or are about to.
             let hand = &self.rig.hand_body;
             let fingers_on = |h: usize| (b1 == h && hand[b2]) || (b2 == h && hand[b1]);
-            if [held, self.allow.touch].into_iter().flatten().any(fingers_on) {
+            if held.is_some_and(fingers_on) {
+                continue;
+            }
+            if let Some((body, geom)) = self.allow.touch
+                && fingers_on(body)
+                && geom.is_none_or(|g| c.geom1 as usize == g || c.geom2 as usize == g)
+            {
                 continue;
             }
             return false;

@@ -196,6 +196,21 @@ impl Rig {
         (data.site_xpos()[self.tcp], data.site_xmat()[self.tcp])
     }
 
+    /// The gripper control (and each finger's travel) that opens the pads to `width` plus
+    /// a clearance either side: a grasp opens no wider than it must, to fit between things.
+    pub fn opening_for(&self, width: f64) -> (f64, f64) {
+        let w = (width + 2.0 * crate::grasp::OPENING_SLACK).min(self.max_opening);
+        let f = w / self.max_opening;
+        (self.grip_closed + f * (self.grip_open - self.grip_closed), 0.5 * w)
+    }
+
+    /// Sets the fingers' joints to `travel` each (for collision checks of a grasp).
+    pub fn set_fingers<M: ModelType>(&self, data: &mut MjData<M>, travel: f64) {
+        for &a in &self.finger_qpos {
+            data.qpos_mut()[a] = travel;
+        }
+    }
+
     pub fn clamp(&self, q: &mut [f64]) {
         for (v, j) in q.iter_mut().zip(&self.arm) {
             *v = v.clamp(j.lo, j.hi);

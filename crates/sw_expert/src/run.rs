@@ -87,6 +87,11 @@ impl<'m> Runner<'m> {
         self.rec.states.push(state);
         self.rec.env.push(env);
         self.rec.qpos.push(qpos);
+        // The dataset stores controls as float32: the run applies exactly those values, so
+        // that a replay of the stored actions is the same motion.
+        for c in &mut self.ctrl {
+            *c = f64::from(*c as f32);
+        }
         self.rec.actions.push(self.ctrl.clone());
         self.data.ctrl_mut().copy_from_slice(&self.ctrl);
         for _ in 0..self.substeps {

@@ -207,8 +207,9 @@ pub(crate) fn task_start(t: &[String]) -> Option<usize> {
         let prev = if i > 0 { Some(t[i - 1].as_str()) } else { None };
         let relative = matches!(prev, Some("that" | "which" | "who" | "to"));
         let imperative = form == vocab::Form::Base && matches!(prev, None | Some(","));
-        let after_robot = matches!(form, vocab::Form::Gerund | vocab::Form::Third)
-            && prev.is_some_and(|p| matches!(sw_planner::vocab::noun(p), sw_planner::vocab::Noun::Robot { .. }));
+        // "a UR5e on a table sorting the cubes …": a robot named before the verb does it.
+        let robot_before = t[..i].iter().any(|w| matches!(sw_planner::vocab::noun(w), sw_planner::vocab::Noun::Robot { .. }));
+        let after_robot = matches!(form, vocab::Form::Gerund | vocab::Form::Third) && robot_before;
         if relative || imperative || after_robot {
             // It must read as a task: something to move, or somewhere to go.
             let rest = &t[i + 1..];
