@@ -44,8 +44,11 @@ def test_the_dataset_has_lerobot_v3_layout(pick: tuple[Path, dict]) -> None:
         assert key in feats, key
     assert feats["observation.images.front"]["dtype"] == "video"
     assert feats["observation.images.wrist"]["shape"] == [96, 96, 3]
-    tasks = pa.read_table(out / "meta" / "tasks.parquet").to_pandas()
-    assert list(tasks.index) == ["put the red cube in the bowl"] and list(tasks["task_index"]) == [0]
+    tasks = pa.read_table(out / "meta" / "tasks.parquet")
+    # Indexed by the task string, as pandas (and so LeRobot) reads it.
+    assert tasks.schema.pandas_metadata["index_columns"] == ["task"]
+    assert tasks.column("task").to_pylist() == ["put the red cube in the bowl"]
+    assert tasks.column("task_index").to_pylist() == [0]
     eps = pa.read_table(out / "meta" / "episodes" / "chunk-000" / "file-000.parquet").to_pydict()
     assert eps["episode_index"] == [0, 1, 2]
     total = 0

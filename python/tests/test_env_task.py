@@ -48,9 +48,11 @@ def test_ee_delta_moves_the_tool_and_closes_the_gripper(env) -> None:
     obs, info = env.reset(seed=3)
     assert info["task"] == TASK and info["is_success"] is False
     tool0 = obs[-3:].copy()
-    for _ in range(15):
+    for _ in range(60):
         obs, reward, terminated, _, info = env.step(np.array([0.0, 0.0, 1.0, 1.0]))
-    assert obs[-3] == pytest.approx(tool0[0], abs=0.03) and obs[-1] > tool0[2] + 0.15
+    # Straight up (the servos lag the commanded 3 cm a step), the gripper closed.
+    assert obs[-1] > tool0[2] + 0.1, (tool0, obs[-3:])
+    assert np.hypot(*(obs[-3:-1] - tool0[:2])) < 0.03, (tool0, obs[-3:])
     assert reward < 0 and not terminated and info["is_success"] is False
     model, data = env.unwrapped.model, env.unwrapped.data
     grip = env.unwrapped._grip_act
@@ -83,9 +85,8 @@ def test_sparse_reward_is_one_exactly_when_the_task_holds(tmp_path) -> None:
 
 
 def test_a_dataset_that_mixes_robots_is_refused_at_make(tmp_path) -> None:
-    scenewright.dataset(
-        tmp_path / "mixed", prompt="a table with two mugs", count=2, robots=["ur5e", "panda"], progress=False
-    )
+    prompts = ["a table with two mugs and a UR5e", "a table with two mugs and a Panda"]
+    scenewright.dataset(tmp_path / "mixed", prompts=prompts, count=1, progress=False)
     with pytest.raises(ValueError, match="mixes robots"):
         gym.make("scenewright/Scene-v0", dataset=tmp_path / "mixed")
     e = scenewright.env.SceneEnv(dataset=tmp_path / "mixed", robot="panda")

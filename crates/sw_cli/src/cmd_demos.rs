@@ -227,8 +227,11 @@ fn bind(job: &Job, dir: &Path) -> Result<Result<Task, TaskError>, String> {
 }
 
 /// Every prompt is tried once up front: a task that names something the scene does not
-/// have, no gripper, contradictory goals or words that ask for nothing are bad input.
+/// have, no gripper, contradictory goals, goals the expert cannot do, words that ask for
+/// nothing, or prompts for robots of different kinds (a dataset has one action layout) are
+/// bad input.
 fn preflight(spec: &DemosSpec, jobs: &[Job], scratch: &Path) -> Result<(), Failure> {
+    let mut models: Vec<(usize, String)> = Vec::new();
     for (i, job) in jobs.iter().enumerate() {
         let where_ = if jobs.len() > 1 { format!("prompt {}: ", i + 1) } else { String::new() };
         sw_planner::plan(&job.scene).map_err(|e| Failure::input(format!("{where_}{e}")))?;
@@ -237,16 +240,20 @@ fn preflight(spec: &DemosSpec, jobs: &[Job], scratch: &Path) -> Result<(), Failu
             let dir = scratch.join(format!("preflight-{i}-{t}"));
             let opts = Options { seed: spec.seed + t, ..Options::default() };
             let out = sw_pipeline::generate(&job.scene, &dir, &opts, &mut |_| {});
-            let ok = matches!(&out, Ok(o) if sw_pipeline::succeeded(&o.report));
-            if !ok {
-                let _ = std::fs::remove_dir_all(&dir);
-                continue;
-            }
+            let layout = match out {
+                Ok(o) if sw_pipeline::succeeded(&o.report) => o.layout,
+                _ => {
+                    let _ = std::fs::remove_dir_all(&dir);
+                    continue;
+                }
+            };
             let bound = bind(job, &dir).map_err(Failure::internal)?;
             let _ = std::fs::remove_dir_all(&dir);
             match bound {
                 Ok(task) => {
                     sw_expert::supports(&task).map_err(|e| Failure::input(format!("{where_}{e}")))?;
+                    let model = layout.robots.iter().find(|r| r.name == task.robot).map(|r| r.model.clone());
+                    models.push((i, model.unwrap_or_default()));
                     last = None;
                     break;
                 }
@@ -257,6 +264,14 @@ fn preflight(spec: &DemosSpec, jobs: &[Job], scratch: &Path) -> Result<(), Failu
         if let Some(e) = last {
             return Err(Failure::input(format!("{where_}{e} (in {PREFLIGHT_TRIES} scene variants)")));
         }
+    }
+    if let Some((i, m)) = models.iter().find(|(_, m)| *m != models[0].1) {
+        return Err(Failure::input(format!(
+            "prompt {} is done by a {} and prompt {} by a {m}: a dataset holds one robot's actions; make one dataset per robot",
+            models[0].0 + 1,
+            models[0].1,
+            i + 1
+        )));
     }
     Ok(())
 }

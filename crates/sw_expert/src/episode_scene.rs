@@ -67,7 +67,8 @@ pub fn episode_scene(
 ) -> Result<(String, Randomisation), ExpertError> {
     let mut root = Element::parse(package_xml).map_err(|e| ExpertError::Scene(format!("scene.xml: {}", e.message)))?;
     let (timestep, substeps) = frame_timing(fps);
-    root.section("option").set("timestep", format!("{timestep:.12}"));
+    // The shortest text that reads back as the same double.
+    root.section("option").set("timestep", format!("{timestep}"));
     let mut rng = Rng::derive(seed, "episode");
     let mut r = Randomisation { seed, light_scale: 1.0, ..Randomisation::default() };
     // Materials by name, for colours.

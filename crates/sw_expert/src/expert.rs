@@ -199,7 +199,8 @@ impl<'a, 'm> Expert<'a, 'm> {
                     let b = body_of(t)?;
                     let c = b.bounds.center();
                     // The middle, then spots around it, clear of what is already inside.
-                    let (hx, hy) = (0.5 * (b.bounds.max[0] - b.bounds.min[0]), 0.5 * (b.bounds.max[1] - b.bounds.min[1]));
+                    let (hx, hy) =
+                        (0.5 * (b.bounds.max[0] - b.bounds.min[0]), 0.5 * (b.bounds.max[1] - b.bounds.min[1]));
                     let (ox, oy) = ((0.5 * (hx - half[0])).max(0.0), (0.5 * (hy - half[1])).max(0.0));
                     for (dx, dy) in [(0.0, 0.0), (ox, 0.0), (-ox, 0.0), (0.0, oy), (0.0, -oy)] {
                         let p = [c[0] + dx, c[1] + dy];
@@ -208,8 +209,10 @@ impl<'a, 'm> Expert<'a, 'm> {
                             n != object
                                 && n != t
                                 && sw_task::judge::within(o, b)
-                                && (o.bounds.center()[0] - p[0]).abs() < 0.5 * (o.bounds.max[0] - o.bounds.min[0]) + half[0]
-                                && (o.bounds.center()[1] - p[1]).abs() < 0.5 * (o.bounds.max[1] - o.bounds.min[1]) + half[1]
+                                && (o.bounds.center()[0] - p[0]).abs()
+                                    < 0.5 * (o.bounds.max[0] - o.bounds.min[0]) + half[0]
+                                && (o.bounds.center()[1] - p[1]).abs()
+                                    < 0.5 * (o.bounds.max[1] - o.bounds.min[1]) + half[1]
                         });
                         if !taken {
                             v.push([p[0], p[1], b.bounds.max[2] + DROP_GAP]);

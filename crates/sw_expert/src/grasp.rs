@@ -135,7 +135,11 @@ pub(crate) fn grasps<M: ModelType>(
                 }
                 for sign in [1.0, -1.0] {
                     let closing = [sign * axis[0], sign * axis[1], 0.0];
-                    out.push(Grasp { at: Target { pos: [c[0], c[1], z], rot: down_closing(closing) }, width, geom: Some(g) });
+                    out.push(Grasp {
+                        at: Target { pos: [c[0], c[1], z], rot: down_closing(closing) },
+                        width,
+                        geom: Some(g),
+                    });
                 }
             }
         }

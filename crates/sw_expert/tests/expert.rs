@@ -10,7 +10,7 @@ use sw_expert::{ExpertOptions, Vary, episode_scene, frame_timing, solve};
 use sw_task::{SceneFacts, Task};
 
 fn package(prompt: &str, seed: u64, dir: &Path) -> PathBuf {
-    let out = dir.join(format!("pkg-{seed}"));
+    let out = dir.join(format!("pkg-{seed}-{}", sw_geom::fnv1a(prompt.as_bytes())));
     let opts = sw_pipeline::Options { seed, ..sw_pipeline::Options::default() };
     let o = sw_pipeline::generate(prompt, &out, &opts, &mut |_| {}).expect("generate");
     assert!(sw_pipeline::succeeded(&o.report), "{prompt} seed {seed}: {:?}", o.report.verification);

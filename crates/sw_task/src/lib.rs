@@ -186,7 +186,10 @@ mod tests {
         assert_eq!(split_prompt("a warehouse with a loading dock and a set of plates on a table"), None);
         assert_eq!(split_prompt("a UR5e on a table next to two bins"), None);
         let s = split_prompt("a UR5e on a table sorting the cubes into the bins").unwrap_or_else(|| panic!());
-        assert_eq!((s.scene.as_str(), s.instruction.as_str()), ("a UR5e on a table with 3 cubes and 3 bins", "sorting the cubes into the bins"));
+        assert_eq!(
+            (s.scene.as_str(), s.instruction.as_str()),
+            ("a UR5e on a table with 3 cubes and 3 bins", "sorting the cubes into the bins")
+        );
         // A machine doing something is a scene, not a task: no robot named before it.
         assert_eq!(split_prompt("a warehouse with a conveyor moving boxes onto a pallet and a UR5e"), None);
         assert_eq!(imperative("sorting the cubes into the bins."), "sort the cubes into the bins");

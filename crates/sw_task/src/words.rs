@@ -208,7 +208,8 @@ pub(crate) fn task_start(t: &[String]) -> Option<usize> {
         let relative = matches!(prev, Some("that" | "which" | "who" | "to"));
         let imperative = form == vocab::Form::Base && matches!(prev, None | Some(","));
         // "a UR5e on a table sorting the cubes …": a robot named before the verb does it.
-        let robot_before = t[..i].iter().any(|w| matches!(sw_planner::vocab::noun(w), sw_planner::vocab::Noun::Robot { .. }));
+        let robot_before =
+            t[..i].iter().any(|w| matches!(sw_planner::vocab::noun(w), sw_planner::vocab::Noun::Robot { .. }));
         let after_robot = matches!(form, vocab::Form::Gerund | vocab::Form::Third) && robot_before;
         if relative || imperative || after_robot {
             // It must read as a task: something to move, or somewhere to go.
