@@ -27,8 +27,10 @@ from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import judge_rel_fit as fit
 import judge_rel_groups as groups
 import judge_rel_place as place
+import judge_rel_sides as sides
 import judge_rel_support as support
 from judge_common import LineError, Relation, Verdict, matches
 from judge_scene import Scene, SceneError, load
@@ -59,6 +61,16 @@ CHECKS: dict[str, Callable[[Relation, Scene], Verdict]] = {
     "leaning": support.leaning,
     "each_with": support.each_with,
     "reach": support.reach,
+    "inside": fit.inside,
+    "set_into": fit.set_into,
+    "on_edge_of": fit.on_edge_of,
+    "size": fit.size,
+    "at_end_of": sides.at_end_of,
+    "on_each_side_of": sides.on_each_side_of,
+    "facing": sides.facing,
+    "on_opposite_walls": sides.on_opposite_walls,
+    "in_corners": sides.in_corners,
+    "back_to_back": sides.back_to_back,
 }
 NEEDS_TARGET = {
     "on",
@@ -74,6 +86,12 @@ NEEDS_TARGET = {
     "full_of",
     "each_with",
     "reach",
+    "inside",
+    "set_into",
+    "on_edge_of",
+    "at_end_of",
+    "on_each_side_of",
+    "facing",
 }
 
 
@@ -88,6 +106,15 @@ def parse_line(line: dict[str, Any]) -> list[Relation]:
             raise LineError(f"suite line {line.get('id', '?')!r}: unknown relation {r.relation!r}")
         if r.relation in NEEDS_TARGET and not r.target:
             raise LineError(f"suite line {line.get('id', '?')!r}: {r.relation} needs a target")
+        if r.relation == "size" and not r.dims:
+            raise LineError(f"suite line {line.get('id', '?')!r}: size needs dims")
+    for f in ("room_size_m",):
+        v = line.get(f)
+        if v is not None and (not isinstance(v, list) or len(v) != 2 or not all(isinstance(x, (int, float)) for x in v)):
+            raise LineError(f"suite line {line.get('id', '?')!r}: {f} must be [a, b] in metres")
+    h = line.get("room_height_m")
+    if h is not None and not isinstance(h, (int, float)):
+        raise LineError(f"suite line {line.get('id', '?')!r}: room_height_m must be a number")
     return rels
 
 
@@ -141,7 +168,7 @@ def judge(package: Path, line: dict[str, Any]) -> dict[str, Any]:
         out.append(row)
     held = sum(1 for r in out if r["held"])
     counts = check_counts(scene, line)
-    return {
+    res = {
         "id": line.get("id"),
         "package": str(package),
         "counts": counts,
@@ -150,6 +177,11 @@ def judge(package: Path, line: dict[str, Any]) -> dict[str, Any]:
         "total": len(out),
         "all_held": held == len(out),
     }
+    if line.get("room_size_m") is not None or line.get("room_height_m") is not None:
+        room = fit.room_size(scene.room, line.get("room_size_m") or [], line.get("room_height_m"))
+        res["room"] = room
+        res["all_held"] = res["all_held"] and room["held"]
+    return res
 
 
 def _suite_line(suite: Path, ident: str) -> dict[str, Any]:

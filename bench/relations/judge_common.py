@@ -36,6 +36,10 @@ class Relation:
     gap_m: tuple[float, float] | None = None
     parallel: bool = False
     implied: bool = False
+    m: int | None = None
+    end: str | None = None
+    long: bool = False
+    dims: dict[str, tuple[float, float]] | None = None
 
     @staticmethod
     def parse(raw: dict[str, Any]) -> Relation:
@@ -50,6 +54,10 @@ class Relation:
         wall = raw.get("wall")
         if wall is not None and wall not in ("north", "south", "east", "west"):
             raise LineError(f"unknown wall {wall!r}: {raw}")
+        end = raw.get("end")
+        if end is not None and end not in ("start", "end", "both"):
+            raise LineError(f"end must be start, end or both: {raw}")
+        dims = _dims(raw)
         return Relation(
             subject=subject,
             relation=relation,
@@ -63,7 +71,31 @@ class Relation:
             gap_m=(float(gap[0]), float(gap[1])) if gap is not None else None,
             parallel=bool(raw.get("parallel", False)),
             implied=bool(raw.get("implied", False)),
+            m=raw.get("m"),
+            end=end,
+            long=bool(raw.get("long", False)),
+            dims=dims,
         )
+
+
+SIZE_DIMS = ("length", "width", "depth", "height", "diameter")
+
+
+def _dims(raw: dict[str, Any]) -> dict[str, tuple[float, float]] | None:
+    """Read a `size` relation's `dims`: {name: [min, max]} in metres."""
+    dims = raw.get("dims")
+    if dims is None:
+        return None
+    if not isinstance(dims, dict) or not dims:
+        raise LineError(f"dims must be an object of [min, max] ranges: {raw}")
+    out = {}
+    for k, v in dims.items():
+        if k not in SIZE_DIMS:
+            raise LineError(f"unknown dimension {k!r} (known: {', '.join(SIZE_DIMS)}): {raw}")
+        if not isinstance(v, list) or len(v) != 2 or not all(isinstance(x, (int, float)) for x in v) or v[0] > v[1]:
+            raise LineError(f"dims.{k} must be [min, max] in metres: {raw}")
+        out[k] = (float(v[0]), float(v[1]))
+    return out
 
 
 @dataclass

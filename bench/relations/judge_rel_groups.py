@@ -156,7 +156,7 @@ def in_row(rel: Relation, scene: Scene) -> Verdict:
     return Verdict.of(not probs, "; ".join(probs), **meas)
 
 
-def _rows_check(subs: list[Thing], d: Arr, n: int | None) -> tuple[list[str], dict[str, Any]]:
+def _rows_check(subs: list[Thing], d: Arr, n: int | None, m: int | None = None) -> tuple[list[str], dict[str, Any]]:
     rows = _split(subs, d, ROW_SPLIT_M)
     probs = []
     if (n is not None and len(rows) != n) or (n is None and len(rows) < 2):
@@ -164,6 +164,9 @@ def _rows_check(subs: list[Thing], d: Arr, n: int | None) -> tuple[list[str], di
     sizes = [len(r) for r in rows]
     if n is not None and max(sizes) - min(sizes) > 1:
         probs.append(f"uneven rows {sizes}")
+    # "rows of four": every row holds m, one may be shorter when the count is not a multiple.
+    if m is not None and (sum(1 for k in sizes if k != m) > int(len(subs) % m != 0) or max(sizes) > m):
+        probs.append(f"rows of {sizes}, asked {m} each")
     for r in rows:
         probs += _row_problems(r, d, 2)
     return probs, {
@@ -175,11 +178,11 @@ def _rows_check(subs: list[Thing], d: Arr, n: int | None) -> tuple[list[str], di
 
 
 def in_rows(rel: Relation, scene: Scene) -> Verdict:
-    """Judge `in_rows`: `n` parallel rows of (nearly) equal length, each a row as above."""
+    """Judge `in_rows`: `n` parallel rows of (nearly) equal length (of `m` each when given), each a row as above."""
     subs = resolve(scene, rel.subject)
     if len(subs) < 2:
         return Verdict.fail(f"{len(subs)} {rel.subject}: rows need more")
-    probs, meas = _best(subs, lambda d: _rows_check(subs, d, rel.n))
+    probs, meas = _best(subs, lambda d: _rows_check(subs, d, rel.n, rel.m))
     return Verdict.of(not probs, "; ".join(probs), **meas)
 
 

@@ -146,6 +146,8 @@ class Room:
     ymin: float
     ymax: float
     doors: list[Arr]
+    # The top of the walls (the ceiling height), None without wall boxes.
+    height: float | None = None
 
     @property
     def size(self) -> tuple[float, float]:
@@ -311,6 +313,7 @@ def _thing(m: mujoco.MjModel, d: mujoco.MjData, root: int, kind: str, category: 
 
 def _room(m: mujoco.MjModel) -> Room:
     inner: dict[str, float] = {}
+    tops: list[float] = []
     lintels: list[tuple[str, Arr, Arr]] = []
     doors: list[Arr] = []
     for g in range(m.ngeom):
@@ -321,6 +324,7 @@ def _room(m: mujoco.MjModel) -> Room:
         wm = WALL_NAME.match(name)
         if wm and m.geom_type[g] == mujoco.mjtGeom.mjGEOM_BOX:
             side = wm.group(1)
+            tops.append(float(pos[2] + size[2]))
             face = {
                 "north": pos[1] - size[1],
                 "south": pos[1] + size[1],
@@ -352,7 +356,7 @@ def _room(m: mujoco.MjModel) -> Room:
             along = np.array([1.0, 0.0]) if side in ("north", "south") else np.array([0.0, 1.0])
             half = float(size[0] if side in ("north", "south") else size[1])
             doors.append(rect(c, along, half, depth))
-    return Room(inner["west"], inner["east"], inner["south"], inner["north"], doors)
+    return Room(inner["west"], inner["east"], inner["south"], inner["north"], doors, max(tops) if tops else None)
 
 
 def load(package: Path) -> Scene:

@@ -154,6 +154,20 @@ fn split(idxs: &[usize], n: usize) -> Vec<Vec<usize>> {
     out
 }
 
+/// How many rows "in rows" asks for: `n`, else enough rows of `m`, else two.
+fn rows_wanted(n: Option<u32>, m: Option<u32>, count: usize) -> usize {
+    match (n, m) {
+        (Some(n), _) => n as usize,
+        (None, Some(m)) if m > 0 => count.div_ceil(m as usize),
+        _ => 2,
+    }
+}
+
+/// Splits `idxs` into rows of `m` (the last one shorter when they do not divide).
+fn chunks(idxs: &[usize], m: usize) -> Vec<Vec<usize>> {
+    idxs.chunks(m.max(1)).map(<[usize]>::to_vec).collect()
+}
+
 /// The clear width kept in front of a member by the rules, m.
 fn front_clearance(ctx: &Ctx<'_>, idxs: &[usize]) -> f64 {
     idxs.iter().map(|&i| ctx.clearances[i].front.max(ctx.clearances[i].back)).fold(0.0, f64::max)
@@ -206,8 +220,7 @@ fn formations_of(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind)
     let seat_gap = (1.2_f64).max(clear + 0.1);
     // "two rows of three machines facing each other": the rows said.
     let rows_said = ctx.relations(group).iter().find_map(|r| match r {
-        RelationKind::InRows { n: Some(k) } => Some(*k as usize),
-        RelationKind::InRows { n: None } => Some(2),
+        RelationKind::InRows { n, m } => Some(rows_wanted(*n, *m, idxs.len())),
         _ => None,
     });
     match rel {
@@ -219,13 +232,18 @@ fn formations_of(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind)
             }
             v
         }
-        RelationKind::InRows { n: rows_n } => {
-            let k = rows_n.map_or(2, |r| r as usize).clamp(1, n.max(1));
+        RelationKind::InRows { n: rows_n, m } => {
+            let k = rows_wanted(*rows_n, *m, n).clamp(1, n.max(1));
             // Seats in front of each row take the row's own reserve; a narrower walkway
             // behind them suffices.
             let walk = if reserve.0 > 0.0 { (0.6_f64).max(clear + 0.1) } else { seat_gap };
             let corridors = vec![walk; k];
-            vec![rows(ctx, &split(idxs, k), &vec![true; k], &corridors, reserve)]
+            let parts = match m {
+                Some(m) if *m > 0 => chunks(idxs, *m as usize),
+                _ => split(idxs, k),
+            };
+            let k = parts.len();
+            vec![rows(ctx, &parts, &vec![true; k], &corridors, reserve)]
         }
         RelationKind::InAisles => {
             let k = rows_said.unwrap_or_else(|| ((n as f64).sqrt().round() as usize).clamp(2, n.max(2))).min(n);
@@ -249,7 +267,7 @@ fn formations_of(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind)
             }
             v
         }
-        RelationKind::Stacked => vec![stack(ctx, idxs)],
+        RelationKind::Stacked { .. } => vec![stack(ctx, idxs)],
         _ => Vec::new(),
     }
 }
@@ -292,7 +310,7 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize], rel: &Relati
     if let RelationKind::Around { target } = rel {
         return around(ctx, group, idxs, target);
     }
-    if matches!(rel, RelationKind::Stacked) {
+    if matches!(rel, RelationKind::Stacked { .. }) {
         return stacks(ctx, group, idxs);
     }
     let rels: Vec<RelationKind> = ctx.relations(group).into_iter().cloned().collect();
@@ -636,7 +654,7 @@ fn stacks(ctx: &mut Ctx<'_>, group: &str, idxs: &[usize]) -> bool {
                 ctx.placed_instances(group).into_iter().map(|(i, s)| Body::object(&ctx.local[i], &s)).collect();
             spots.extend(candidates::beside_bodies(&f.bounds, &bodies));
         }
-        spots.extend(placements(ctx, group, &f, &rels, &RelationKind::Stacked));
+        spots.extend(placements(ctx, group, &f, &rels, &RelationKind::Stacked { n: None, stacks: None }));
         let size = f.members.len();
         let positional: Vec<RelationKind> = rels.iter().filter(|r| relate::is_positional(r)).cloned().collect();
         let mut done = false;

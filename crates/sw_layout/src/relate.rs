@@ -343,11 +343,20 @@ impl<'r> Check<'r> {
             | RelationKind::InRows { .. }
             | RelationKind::InAisles
             | RelationKind::FacingEachOther
-            | RelationKind::Stacked
+            | RelationKind::Stacked { .. }
             | RelationKind::Loaded { .. }
             | RelationKind::FullOf { .. }
             | RelationKind::EachWith { .. }
-            | RelationKind::Reach { .. } => true,
+            | RelationKind::Reach { .. }
+            | RelationKind::Inside { .. }
+            | RelationKind::SetInto { .. }
+            | RelationKind::AtEndOf { .. }
+            | RelationKind::OnEdgeOf { .. }
+            | RelationKind::OnEachSideOf { .. }
+            | RelationKind::Facing { .. }
+            | RelationKind::OnOppositeWalls { .. }
+            | RelationKind::InCorners
+            | RelationKind::BackToBack => true,
         }
     }
 }

@@ -24,7 +24,7 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
         };
         let group = ctx.input.objects[idx].group.clone();
         // "a stack of five plates on the counter": the first on it, the rest on each other.
-        let stacked = ctx.relations(&group).iter().any(|r| matches!(r, RelationKind::Stacked));
+        let stacked = ctx.relations(&group).iter().any(|r| matches!(r, RelationKind::Stacked { .. }));
         let order = if stacked { stack_order(ctx, &group) } else { ctx.instances(&group) };
         let k = order.iter().position(|&i| i == idx).unwrap_or(0);
         // Columns no taller than the group may have (learnt from a settle): every
@@ -78,7 +78,7 @@ fn in_stack_order(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
     let mut groups: Vec<String> = Vec::new();
     for &i in items {
         let g = &ctx.input.objects[i].group;
-        if !groups.contains(g) && ctx.relations(g).iter().any(|r| matches!(r, RelationKind::Stacked)) {
+        if !groups.contains(g) && ctx.relations(g).iter().any(|r| matches!(r, RelationKind::Stacked { .. })) {
             groups.push(g.clone());
         }
     }

@@ -496,8 +496,12 @@ impl Work {
             }
             None => {
                 pg.size.words.clear();
-                pg.size.explicit =
-                    ExplicitSize { width: Some(target[0]), depth: Some(target[1]), height: Some(target[2]) };
+                pg.size.explicit = ExplicitSize {
+                    width: Some(target[0]),
+                    depth: Some(target[1]),
+                    height: Some(target[2]),
+                    ..Default::default()
+                };
             }
         }
         self.remake(group)?;

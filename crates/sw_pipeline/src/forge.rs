@@ -238,12 +238,13 @@ pub(crate) fn make_seeded(group: &ObjectPlan, s: u64) -> Result<(Asset, Vec<Stri
     let mut req = AssetRequest::new(cat.name, s);
     req.scale = scale_of(&group.size);
     req.color = color;
-    for (name, v) in [
-        ("width", group.size.explicit.width),
-        ("depth", group.size.explicit.depth),
-        ("height", group.size.explicit.height),
-    ] {
-        if let Some(v) = v {
+    // A stated length goes to the category's longer side ("a 4.5 m conveyor").
+    let default = |n: &str| cat.param(n).map_or(0.0, |p| p.default);
+    let x_long = default("width") >= default("depth");
+    for (name, v) in ["width", "depth", "height"].into_iter().zip(group.size.explicit.axes(x_long)) {
+        if let Some(v) = v
+            && cat.param(name).is_some()
+        {
             req.overrides.push((name.to_string(), v));
         }
     }

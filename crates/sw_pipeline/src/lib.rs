@@ -24,6 +24,7 @@ mod rebuild;
 mod refine;
 mod relations_check;
 mod relations_measure;
+mod relations_places;
 mod report;
 mod robot_facts;
 mod scene_geom;
@@ -321,7 +322,14 @@ pub(crate) fn run_from_plan(
         let mut shrunk_groups: Vec<String> = Vec::new();
         for factor in SHRINK_STEPS {
             let mut groups = shrunk_groups.clone();
-            groups.extend(layout.left_out.iter().filter(|l| plan.object(&l.group).is_some()).map(|l| l.group.clone()));
+            // A size the prompt stated is kept: those groups never shrink.
+            groups.extend(
+                layout
+                    .left_out
+                    .iter()
+                    .filter(|l| plan.object(&l.group).is_some_and(|o| o.size.explicit.is_empty()))
+                    .map(|l| l.group.clone()),
+            );
             groups.sort();
             groups.dedup();
             if missing(&layout) == 0 || groups.is_empty() {

@@ -24,7 +24,7 @@ pub(crate) fn is_filled(plan: &ScenePlan, group: &str) -> bool {
 
 /// Whether `group` is said to be stacked.
 pub(crate) fn is_stacked(plan: &ScenePlan, group: &str) -> bool {
-    plan.relations.iter().any(|r| r.subject == group && matches!(r.kind, RelationKind::Stacked))
+    plan.relations.iter().any(|r| r.subject == group && matches!(r.kind, RelationKind::Stacked { .. }))
 }
 
 /// The same catalog asset made again with some parameters changed (same seed, colour).

@@ -179,7 +179,7 @@ mod tests {
             // recorded size is not the catalog's for its seed.
             let sized_by_other = |x: &PlacedObject| {
                 o.plan.relations.iter().any(|r| match &r.kind {
-                    RelationKind::Under { .. } | RelationKind::Stacked => r.subject == x.group,
+                    RelationKind::Under { .. } | RelationKind::Stacked { .. } => r.subject == x.group,
                     RelationKind::FullOf { target } => *target == x.group,
                     _ => false,
                 })

@@ -271,24 +271,36 @@ impl Verdict {
 /// report, with a warning naming each one that does not hold (a relation is never
 /// dropped silently). A package that cannot be read back is itself a warning.
 pub(crate) fn attach(report: &mut sw_plan::Report, plan: &ScenePlan, dir: &Path) {
-    match check(plan, dir) {
-        Ok(checks) => {
-            for c in checks.iter().filter(|c| !c.held) {
-                let why = c.reason.as_deref().unwrap_or("it does not hold");
-                report.warnings.push(sw_plan::Warning::new(
-                    sw_plan::Stage::Layout,
-                    "relation_not_held",
-                    format!("{}: {why}", c.phrase),
-                ));
-            }
-            report.relations = checks;
+    let w = match Written::read(dir) {
+        Ok(w) => w,
+        Err(e) => {
+            report.warnings.push(sw_plan::Warning::new(
+                sw_plan::Stage::Layout,
+                "relations_unmeasured",
+                format!("the relations could not be measured on the written scene: {e}"),
+            ));
+            return;
         }
-        Err(e) => report.warnings.push(sw_plan::Warning::new(
+    };
+    let checks = check_written(plan, &w);
+    for c in checks.iter().filter(|c| !c.held) {
+        let why = c.reason.as_deref().unwrap_or("it does not hold");
+        report.warnings.push(sw_plan::Warning::new(
             sw_plan::Stage::Layout,
-            "relations_unmeasured",
-            format!("the relations could not be measured on the written scene: {e}"),
-        )),
+            "relation_not_held",
+            format!("{}: {why}", c.phrase),
+        ));
     }
+    report.relations = checks;
+    let sizes = crate::relations_places::sizes(plan, &w);
+    for c in sizes.iter().filter(|c| !c.held) {
+        report.warnings.push(sw_plan::Warning::new(
+            sw_plan::Stage::Forge,
+            "size_not_kept",
+            format!("\"{}\": {}", c.phrase, c.reason.as_deref().unwrap_or("not the size stated")),
+        ));
+    }
+    report.sizes = sizes;
 }
 
 /// The words of the prompt behind a group, robot or robot's stand.
@@ -300,9 +312,8 @@ fn phrase_of(plan: &ScenePlan, w: &Written, id: &str) -> String {
 }
 
 /// Measures every stated relation of `plan` on the package written in `dir`.
-pub(crate) fn check(plan: &ScenePlan, dir: &Path) -> Result<Vec<RelationCheck>, String> {
-    let w = Written::read(dir)?;
-    Ok(stated(plan, &w.layout).into_iter().map(|r| check_one(plan, &w, r)).collect())
+fn check_written(plan: &ScenePlan, w: &Written) -> Vec<RelationCheck> {
+    stated(plan, &w.layout).into_iter().map(|r| check_one(plan, w, r)).collect()
 }
 
 fn check_one(plan: &ScenePlan, w: &Written, relation: Relation) -> RelationCheck {

@@ -10,6 +10,7 @@ use crate::relations_check::{
     CORNER, DOOR, FRONT, FRONT_SIDE, NEAR, NEXT_TO, REST, Thing, Verdict, WALL, Written, center, dot, gap, half_along,
     in_hull, inside, nearest_wall, site_under, wall_gap,
 };
+use crate::relations_places as places;
 
 pub(crate) fn measure(plan: &ScenePlan, w: &Written, r: &Relation, subjects: &[Thing], v: &mut Verdict) {
     let half = w.half();
@@ -136,7 +137,7 @@ pub(crate) fn measure(plan: &ScenePlan, w: &Written, r: &Relation, subjects: &[T
             }
             None => v.fail("not in straight rows"),
         },
-        RelationKind::InRows { n: want } => match rows(subjects) {
+        RelationKind::InRows { n: want, m } => match rows(subjects) {
             Some(rs) => {
                 v.set("rows", rs.len() as f64);
                 let ok = match want {
@@ -145,6 +146,9 @@ pub(crate) fn measure(plan: &ScenePlan, w: &Written, r: &Relation, subjects: &[T
                 };
                 if !ok {
                     v.fail(format!("in {} rows", rs.len()));
+                }
+                if let Some(m) = m {
+                    places::rows_of(&rs.iter().map(Vec::len).collect::<Vec<_>>(), *m, v);
                 }
             }
             None => v.fail("not in straight parallel rows"),
@@ -263,7 +267,7 @@ pub(crate) fn measure(plan: &ScenePlan, w: &Written, r: &Relation, subjects: &[T
                 }
             }
         }
-        RelationKind::Stacked => stacked(subjects, v),
+        RelationKind::Stacked { .. } => stacked(subjects, v),
         RelationKind::Loaded { target } => {
             let loaded = subjects
                 .iter()
@@ -307,6 +311,15 @@ pub(crate) fn measure(plan: &ScenePlan, w: &Written, r: &Relation, subjects: &[T
                 reach(w, s, &ts, v);
             }
         }
+        RelationKind::Inside { target } => places::inside_of(subjects, &targets_of(target, v), v),
+        RelationKind::SetInto { target } => places::set_into(subjects, &targets_of(target, v), v),
+        RelationKind::AtEndOf { target, end } => places::at_end_of(subjects, &targets_of(target, v), *end, v),
+        RelationKind::OnEdgeOf { target } => places::on_edge_of(subjects, &targets_of(target, v), v),
+        RelationKind::OnEachSideOf { target } => places::on_each_side_of(subjects, &targets_of(target, v), v),
+        RelationKind::Facing { target } => places::facing(subjects, &targets_of(target, v), v),
+        RelationKind::OnOppositeWalls { long } => places::on_opposite_walls(half, subjects, *long, v),
+        RelationKind::InCorners => places::in_corners(half, subjects, v),
+        RelationKind::BackToBack => places::back_to_back(subjects, v),
     }
 }
 

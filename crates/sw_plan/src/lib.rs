@@ -24,16 +24,16 @@ pub use layout::{
     AnomalyLabel, DoorLayout, LaidOutScene, LeftOut, PlacedObject, PlacedRobot, RoomLayout, Support, Violation,
 };
 pub use plan::{
-    AnomalyKind, AnomalyRequest, Approximation, ExplicitSize, Mount, NotUnderstood, ObjectPlan, ProxyPlan, Relation,
-    RelationKind, RobotPlan, RoomKind, RoomPlan, ScenePlan, SizeHint, SizeWord, Understanding,
+    AnomalyKind, AnomalyRequest, Approximation, EndOf, ExplicitSize, Mount, NotUnderstood, ObjectPlan, ProxyPlan,
+    Relation, RelationKind, RobotPlan, RoomKind, RoomPlan, ScenePlan, SizeHint, SizeWord, Understanding,
 };
 pub use report::{
     AssetCache, ContactCheck, DeepContact, ModelStats, MovedBody, RelationCheck, Report, RobotCheck, SceneSummary,
-    SettleCheck, StageTiming, Status, Timings, Verification,
+    SettleCheck, SizeCheck, StageTiming, Status, Timings, Verification,
 };
 pub use schema::{SchemaFile, schemas};
 pub use telemetry::{EditLog, EditRecord, LlmCall, LlmOutcome, LlmStage};
 pub use validate::{FieldError, MAX_ROBOT_COUNT as MAX_ROBOTS, PlanError, ValidationErrors};
 
 /// The version of the contract types. Written into every document.
-pub const SCHEMA_VERSION: u32 = 2;
+pub const SCHEMA_VERSION: u32 = 3;

@@ -78,7 +78,15 @@ impl ScenePlan {
             }
             RelationKind::AtEnd { wall: Some(w) } => format!(" ({} end)", w.name()),
             RelationKind::InCorner { corner: Some(c) } => format!(" ({})", c.name()),
-            RelationKind::InRows { n: Some(n) } => format!(" ({n})"),
+            RelationKind::InRows { n: Some(n), m: Some(m) } => format!(" ({n} of {m})"),
+            RelationKind::InRows { n: Some(n), .. } => format!(" ({n})"),
+            RelationKind::Stacked { stacks: Some(k), n } if *k > 1 => match n {
+                Some(n) => format!(" ({k} stacks of {n})"),
+                None => format!(" ({k} stacks)"),
+            },
+            RelationKind::Stacked { n: Some(n), .. } => format!(" ({n} high)"),
+            RelationKind::AtEndOf { end: Some(e), .. } => format!(" ({})", e.name()),
+            RelationKind::OnOppositeWalls { long: true } => " (the long walls)".to_string(),
             _ => String::new(),
         };
         let targets: Vec<String> = match &r.kind {
@@ -269,7 +277,17 @@ impl SizeHint {
     }
 }
 
-/// Explicit dimensions given in the prompt; any may be absent.
+/// Explicit dimensions given in the prompt ("a 4.5 m conveyor", "a table 2 m long and
+/// 90 cm wide", "a 30 cm bowl"), m; any may be absent. This is how a plan states a size:
+/// a field of the object group, not a relation. The forge makes the asset to it and the
+/// layout keeps the asset as made; the report measures it on the written collision
+/// geometry (`report.json` `sizes`) and the relation judge as the `size` line.
+///
+/// The axes are the asset's own (front +Y): `width` across the front (X), `depth` front
+/// to back (Y), `height` up. `length` is the longer horizontal side, whichever axis that
+/// is for the category; when `length` is given, `width` is the other, shorter horizontal
+/// side (the English of "2 m long and 90 cm wide"). `diameter` is a round thing's width
+/// and depth. [`ExplicitSize::axes`] resolves them.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ExplicitSize {
@@ -279,11 +297,64 @@ pub struct ExplicitSize {
     pub depth: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub height: Option<f64>,
+    /// The longer horizontal side ("a 4.5 m conveyor", "3 m long").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub length: Option<f64>,
+    /// A round thing's diameter (its width and depth).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub diameter: Option<f64>,
 }
 
 impl ExplicitSize {
     pub fn is_empty(&self) -> bool {
-        self.width.is_none() && self.depth.is_none() && self.height.is_none()
+        self.width.is_none()
+            && self.depth.is_none()
+            && self.height.is_none()
+            && self.length.is_none()
+            && self.diameter.is_none()
+    }
+
+    /// Every stated dimension with its name, in a fixed order.
+    pub fn stated(&self) -> Vec<(&'static str, f64)> {
+        [
+            ("length", self.length),
+            ("width", self.width),
+            ("depth", self.depth),
+            ("height", self.height),
+            ("diameter", self.diameter),
+        ]
+        .into_iter()
+        .filter_map(|(n, v)| v.map(|v| (n, v)))
+        .collect()
+    }
+
+    /// The stated extents along the asset's axes (X across the front, Y front to back, Z
+    /// up), given whether the category's longer horizontal side is its X (`x_long`).
+    /// `length` takes the long axis; a `width` stated with it takes the other one;
+    /// `diameter` takes both; an explicit `depth` wins over what `width` would imply.
+    pub fn axes(&self, x_long: bool) -> [Option<f64>; 3] {
+        let mut xy = [None, None];
+        if let Some(d) = self.diameter {
+            xy = [Some(d), Some(d)];
+        }
+        match self.length {
+            Some(l) => {
+                let (long, short) = if x_long { (0, 1) } else { (1, 0) };
+                xy[long] = Some(l);
+                if let Some(w) = self.width {
+                    xy[short] = Some(w);
+                }
+            }
+            None => {
+                if let Some(w) = self.width {
+                    xy[0] = Some(w);
+                }
+            }
+        }
+        if let Some(d) = self.depth {
+            xy[1] = Some(d);
+        }
+        [xy[0], xy[1], self.height]
     }
 }
 
@@ -372,10 +443,13 @@ pub enum RelationKind {
     Between { first: String, second: String },
     /// The group's instances stand in one straight row, turned alike.
     InRow,
-    /// The group's instances stand in `n` parallel rows (two when absent).
+    /// The group's instances stand in `n` parallel rows (two when absent) of `m` each
+    /// when given ("three rows of four desks": n 3, m 4); rows differ by at most one.
     InRows {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         n: Option<u32>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        m: Option<u32>,
     },
     /// Parallel rows with corridors 1.5–3.5 m wide between them, fronts to a corridor.
     InAisles,
@@ -405,8 +479,15 @@ pub enum RelationKind {
     /// In the middle of the room, or down the middle of its long axis for a group.
     #[serde(rename = "in_middle", alias = "in_center")]
     InCenter,
-    /// One stack: each instance resting on the one below ("a stack of five pallets").
-    Stacked,
+    /// Stacks: each instance resting on the one below, in `stacks` columns (one when
+    /// absent) of `n` each (all when absent): "a stack of five pallets", "three stacks of
+    /// four crates" (stacks 3, n 4), "boxes stacked two high" (n 2).
+    Stacked {
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        n: Option<u32>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        stacks: Option<u32>,
+    },
     /// Every instance of the subject carries instances of `target` ("pallets of boxes").
     Loaded { target: String },
     /// Every support level of the subject holds instances of `target` ("shelves full of
@@ -423,11 +504,67 @@ pub enum RelationKind {
     /// An arm (the subject is a robot group) reaches everything on `target`'s work
     /// surface, or a conveyor's centreline.
     Reach { target: String },
+    /// Inside `target`'s interior, resting on an interior support of it: a shelf or
+    /// cabinet level, a drawer, the floor of a bin or a box ("cups inside the cabinet").
+    Inside { target: String },
+    /// Set into a counter run ("a sink in the worktop", "a hob set into the counter"):
+    /// its footprint within the target's top, its own top within 5 cm of the target's.
+    SetInto { target: String },
+    /// Beyond an end of `target`'s long axis, on its line ("a bin at the end of the
+    /// bench"); `end`: the target's local −X end (`start`), +X end (`end`), or instances
+    /// at both (`both`); either end when absent.
+    AtEndOf {
+        target: String,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        end: Option<EndOf>,
+    },
+    /// Resting on `target` (as `on`) near an edge of its top: the footprint centre within
+    /// 0.2 m of an edge ("a lamp on the edge of the desk", an arm on a table's edge).
+    OnEdgeOf { target: String },
+    /// The group on two opposite sides of `target` ("a chair on either side of the desk",
+    /// "flanking the door", "on opposite sides of the bench"), each within 1.5 m of it.
+    OnEachSideOf { target: String },
+    /// Its front turned towards `target` (within 30°), 0.3–5 m clear of it ("a sofa
+    /// facing the TV", "across from the bed").
+    Facing { target: String },
+    /// Against walls, the group using two opposite walls; the room's two long walls when
+    /// `long` ("along both long walls").
+    OnOppositeWalls {
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        long: bool,
+    },
+    /// Each instance in a corner of the room (as `in_corner`), no two in the same one.
+    InCorners,
+    /// Two rows (or two instances) with their backs to each other, at most 0.3 m apart
+    /// ("desks back to back", a double-sided rack run).
+    BackToBack,
+}
+
+/// Which end of a thing `at_end_of` means.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum EndOf {
+    /// The start: the target's local −X end (a conveyor's infeed).
+    Start,
+    /// The end: its local +X end (a conveyor's outfeed).
+    End,
+    /// Instances at both ends.
+    Both,
+}
+
+impl EndOf {
+    pub fn name(self) -> &'static str {
+        match self {
+            EndOf::Start => "start",
+            EndOf::End => "end",
+            EndOf::Both => "both",
+        }
+    }
 }
 
 impl RelationKind {
     /// Every relation name, in the order of the enum.
-    pub const NAMES: [&'static str; 25] = [
+    pub const NAMES: [&'static str; 34] = [
         "on",
         "under",
         "against_wall",
@@ -453,6 +590,15 @@ impl RelationKind {
         "leaning",
         "each_with",
         "reach",
+        "inside",
+        "set_into",
+        "at_end_of",
+        "on_edge_of",
+        "on_each_side_of",
+        "facing",
+        "on_opposite_walls",
+        "in_corners",
+        "back_to_back",
     ];
 
     /// The groups this relation refers to (besides its subject).
@@ -469,7 +615,13 @@ impl RelationKind {
             | RelationKind::Loaded { target }
             | RelationKind::FullOf { target }
             | RelationKind::EachWith { target }
-            | RelationKind::Reach { target } => vec![target.as_str()],
+            | RelationKind::Reach { target }
+            | RelationKind::Inside { target }
+            | RelationKind::SetInto { target }
+            | RelationKind::AtEndOf { target, .. }
+            | RelationKind::OnEdgeOf { target }
+            | RelationKind::OnEachSideOf { target }
+            | RelationKind::Facing { target } => vec![target.as_str()],
             RelationKind::Between { first, second } => vec![first.as_str(), second.as_str()],
             RelationKind::AgainstWall { .. }
             | RelationKind::OnTwoWalls
@@ -481,8 +633,11 @@ impl RelationKind {
             | RelationKind::NearDoor
             | RelationKind::InCorner { .. }
             | RelationKind::InCenter
-            | RelationKind::Stacked
-            | RelationKind::Leaning { .. } => Vec::new(),
+            | RelationKind::Stacked { .. }
+            | RelationKind::Leaning { .. }
+            | RelationKind::OnOppositeWalls { .. }
+            | RelationKind::InCorners
+            | RelationKind::BackToBack => Vec::new(),
         }
     }
 
@@ -508,12 +663,21 @@ impl RelationKind {
             RelationKind::NearDoor => "near_door",
             RelationKind::InCorner { .. } => "in_corner",
             RelationKind::InCenter => "in_middle",
-            RelationKind::Stacked => "stacked",
+            RelationKind::Stacked { .. } => "stacked",
             RelationKind::Loaded { .. } => "loaded",
             RelationKind::FullOf { .. } => "full_of",
             RelationKind::Leaning { .. } => "leaning",
             RelationKind::EachWith { .. } => "each_with",
             RelationKind::Reach { .. } => "reach",
+            RelationKind::Inside { .. } => "inside",
+            RelationKind::SetInto { .. } => "set_into",
+            RelationKind::AtEndOf { .. } => "at_end_of",
+            RelationKind::OnEdgeOf { .. } => "on_edge_of",
+            RelationKind::OnEachSideOf { .. } => "on_each_side_of",
+            RelationKind::Facing { .. } => "facing",
+            RelationKind::OnOppositeWalls { .. } => "on_opposite_walls",
+            RelationKind::InCorners => "in_corners",
+            RelationKind::BackToBack => "back_to_back",
         }
     }
 
@@ -539,12 +703,21 @@ impl RelationKind {
             RelationKind::NearDoor => "near the door",
             RelationKind::InCorner { .. } => "in the corner",
             RelationKind::InCenter => "in the middle",
-            RelationKind::Stacked => "stacked",
+            RelationKind::Stacked { .. } => "stacked",
             RelationKind::Loaded { .. } => "loaded with",
             RelationKind::FullOf { .. } => "full of",
             RelationKind::Leaning { .. } => "leaning on the wall",
             RelationKind::EachWith { .. } => "each with",
             RelationKind::Reach { .. } => "reaching",
+            RelationKind::Inside { .. } => "inside",
+            RelationKind::SetInto { .. } => "set into",
+            RelationKind::AtEndOf { .. } => "at the end of",
+            RelationKind::OnEdgeOf { .. } => "on the edge of",
+            RelationKind::OnEachSideOf { .. } => "on each side of",
+            RelationKind::Facing { .. } => "facing",
+            RelationKind::OnOppositeWalls { .. } => "on opposite walls",
+            RelationKind::InCorners => "in the corners",
+            RelationKind::BackToBack => "back to back",
         }
     }
 
@@ -557,8 +730,12 @@ impl RelationKind {
                 | RelationKind::InAisles
                 | RelationKind::FacingEachOther
                 | RelationKind::OnTwoWalls
-                | RelationKind::Stacked
+                | RelationKind::Stacked { .. }
                 | RelationKind::Around { .. }
+                | RelationKind::OnOppositeWalls { .. }
+                | RelationKind::InCorners
+                | RelationKind::BackToBack
+                | RelationKind::OnEachSideOf { .. }
         )
     }
 }

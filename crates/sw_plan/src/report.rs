@@ -31,6 +31,10 @@ pub struct Report {
     /// the written scene (read as empty from older reports).
     #[serde(default)]
     pub relations: Vec<RelationCheck>,
+    /// Every size the prompt stated ("a 4.5 m conveyor"), measured on the written scene
+    /// (read as empty from older reports).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub sizes: Vec<SizeCheck>,
     pub warnings: Vec<Warning>,
     /// Every call to a language model the run made (absent for offline runs).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -65,6 +69,7 @@ impl Report {
             left_out: Vec::new(),
             violations: Vec::new(),
             relations: Vec::new(),
+            sizes: Vec::new(),
             warnings: Vec::new(),
             llm_calls: Vec::new(),
             asset_cache: AssetCache::default(),
@@ -89,6 +94,26 @@ pub struct RelationCheck {
     pub held: bool,
     /// What was measured, by name: `gap_m`, `angle_deg`, `sides`, `distance_m`, `reach_m` …
     pub measured: BTreeMap<String, f64>,
+    /// Why it does not hold (absent when it holds).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+}
+
+/// One object group's stated size ([`crate::ExplicitSize`]) and whether every instance
+/// has it in the written scene: its collision geometry's extents in its own frame, within
+/// 10 % of each stated dimension.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SizeCheck {
+    /// The object group.
+    pub group: String,
+    /// Its words in the prompt.
+    pub phrase: String,
+    /// What was stated, by dimension: `length_m`, `width_m`, `depth_m`, `height_m`, `diameter_m`.
+    pub stated: BTreeMap<String, f64>,
+    /// What was measured, by the same names (the instance furthest from the statement).
+    pub measured: BTreeMap<String, f64>,
+    pub held: bool,
     /// Why it does not hold (absent when it holds).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,

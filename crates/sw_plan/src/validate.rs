@@ -105,11 +105,8 @@ impl ScenePlan {
             {
                 err(at("color.rgba"), format!("components must be in 0..1, got {:?}", c.rgba));
             }
-            let e = &o.size.explicit;
-            for (name, v) in [("width", e.width), ("depth", e.depth), ("height", e.height)] {
-                if let Some(v) = v
-                    && (!v.is_finite() || v <= 0.0)
-                {
+            for (name, v) in o.size.explicit.stated() {
+                if !v.is_finite() || v <= 0.0 {
                     err(at(&format!("size.explicit.{name}")), format!("must be a positive length, got {v}"));
                 }
             }
@@ -165,7 +162,11 @@ impl ScenePlan {
                 rel.kind,
                 RelationKind::On { .. }
                     | RelationKind::Under { .. }
-                    | RelationKind::Stacked
+                    | RelationKind::Stacked { .. }
+                    | RelationKind::Inside { .. }
+                    | RelationKind::SetInto { .. }
+                    | RelationKind::BackToBack
+                    | RelationKind::OnOppositeWalls { .. }
                     | RelationKind::Loaded { .. }
                     | RelationKind::FullOf { .. }
                     | RelationKind::Leaning { .. }
@@ -203,6 +204,9 @@ impl ScenePlan {
                     | RelationKind::Behind { .. }
                     | RelationKind::Between { .. }
                     | RelationKind::EachWith { .. }
+                    | RelationKind::Facing { .. }
+                    | RelationKind::OnEachSideOf { .. }
+                    | RelationKind::AtEndOf { .. }
             );
             let fields: Vec<(&str, &str)> = match &rel.kind {
                 RelationKind::Between { first, second } => {

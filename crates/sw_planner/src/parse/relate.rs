@@ -395,7 +395,7 @@ impl Parser<'_> {
                     (Cue::Tend, [t]) => RelationKind::NextTo { target: t.clone() },
                     (Cue::Between, [a, b]) => RelationKind::Between { first: a.clone(), second: b.clone() },
                     (Cue::Row, _) => RelationKind::InRow,
-                    (Cue::Rows(n), _) => RelationKind::InRows { n },
+                    (Cue::Rows(n), _) => RelationKind::InRows { n, m: None },
                     (Cue::Aisles, _) => RelationKind::InAisles,
                     (Cue::Facing, _) => RelationKind::FacingEachOther,
                     (Cue::End(w), _) => RelationKind::AtEnd { wall: w },
@@ -405,7 +405,7 @@ impl Parser<'_> {
                     (Cue::Wall(w), _) => RelationKind::AgainstWall { wall: w },
                     (Cue::TwoWalls, _) => RelationKind::OnTwoWalls,
                     (Cue::Leaning(w), _) => RelationKind::Leaning { wall: w },
-                    (Cue::Stacked, _) => RelationKind::Stacked,
+                    (Cue::Stacked, _) => RelationKind::Stacked { n: None, stacks: None },
                     (Cue::Floor, _) => return,
                     _ => return,
                 };

@@ -43,9 +43,9 @@ impl Parser<'_> {
     pub(super) fn take_collective(&mut self, id: &str) {
         let Some((kind, n)) = self.collective.take() else { return };
         let rel = match kind {
-            Collective::Row if n >= 2.0 => RelationKind::InRows { n: Some(n.round() as u32) },
+            Collective::Row if n >= 2.0 => RelationKind::InRows { n: Some(n.round() as u32), m: None },
             Collective::Row => RelationKind::InRow,
-            Collective::Stack => RelationKind::Stacked,
+            Collective::Stack => RelationKind::Stacked { n: None, stacks: None },
             Collective::Aisle if n >= 2.0 => RelationKind::InAisles,
             Collective::Aisle => RelationKind::FacingEachOther,
         };
