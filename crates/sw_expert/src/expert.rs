@@ -201,8 +201,10 @@ impl<'a, 'm> Expert<'a, 'm> {
                     // The middle, then spots around it, clear of what is already inside.
                     let (hx, hy) =
                         (0.5 * (b.bounds.max[0] - b.bounds.min[0]), 0.5 * (b.bounds.max[1] - b.bounds.min[1]));
-                    let (ox, oy) = ((0.5 * (hx - half[0])).max(0.0), (0.5 * (hy - half[1])).max(0.0));
-                    for (dx, dy) in [(0.0, 0.0), (ox, 0.0), (-ox, 0.0), (0.0, oy), (0.0, -oy)] {
+                    let (ox, oy) = ((hx - half[0] - 0.01).max(0.0), (hy - half[1] - 0.01).max(0.0));
+                    let before = v.len();
+                    let spots = [(0.0, 0.0), (ox, 0.0), (-ox, 0.0), (0.0, oy), (0.0, -oy)];
+                    for (dx, dy) in spots {
                         let p = [c[0] + dx, c[1] + dy];
                         // Things already in it (their centre over it, their bottom in it).
                         let taken = snap.bodies.iter().any(|(n, o)| {
@@ -217,6 +219,10 @@ impl<'a, 'm> Expert<'a, 'm> {
                         if !taken {
                             v.push([p[0], p[1], b.bounds.max[2] + DROP_GAP]);
                         }
+                    }
+                    // Full: drop it on what is there (it settles beside it or on it).
+                    if v.len() == before {
+                        v.extend(spots.iter().map(|(dx, dy)| [c[0] + dx, c[1] + dy, b.bounds.max[2] + DROP_GAP]));
                     }
                 }
                 v.sort_by(|a, b| {
