@@ -26,8 +26,14 @@
 #                               it pins MuJoCo 3.16 and brings its own OpenUSD build)
 #   (--tests also: the USD exporter, and .cache/py-venv for the Python package's tests:
 #    MuJoCo 3.17.0, mujoco-mjx 3.17.0 + JAX 0.10.2 (CPU), mujoco-warp 3.17.0 + warp-lang
-#    1.19.0, Gymnasium 1.4.0, usd-core 26.11 (the independent USD reader), pytest 9.2.0,
+#    1.19.0, Gymnasium 1.4.0, usd-core 26.11 (the independent USD reader), pyarrow 26.0.1
+#    (reads the demos datasets' parquet files), pytest 9.2.0,
 #    ruff 0.17.6, mypy 2.4.1 — and `pip install ./python` into it, again when it changes)
+#   scripts/setup.sh --demos    `scenewright demos`' video encoder: ffmpeg from Debian (apt;
+#                               H.264 through libx264); --tests does this too
+#   scripts/setup.sh --lerobot  the opt-in LeRobot check (scripts/test_lerobot.sh): lerobot
+#                               0.6.1 (it pulls PyTorch, several GB) in .cache/lerobot-venv
+#                               on Python 3.12 (python3.12 on PATH or pyenv's)
 #   scripts/setup.sh --web      the browser app: its npm packages (npm ci from
 #                               web/package-lock.json into web/node_modules) and its build
 #                               (web/dist, which `scenewright serve` serves at /); with
@@ -47,9 +53,13 @@ want_cad=0
 want_usd=0
 want_real_llm=0
 want_web=0
+want_demos=0
+want_lerobot=0
 for arg in "$@"; do
   case "$arg" in
-    --tests) want_tests=1; want_robots=1; want_cad=1; want_web=1 ;;
+    --tests) want_tests=1; want_robots=1; want_cad=1; want_web=1; want_demos=1 ;;
+    --demos) want_demos=1 ;;
+    --lerobot) want_lerobot=1 ;;
     --web) want_web=1 ;;
     --robots) want_robots=1 ;;
     --cad) want_cad=1 ;;
@@ -302,6 +312,36 @@ if [ "$want_usd" = 1 ]; then
     "the USD exporter" "mujoco==3.16.0" "usd-exchange==3.0.1"
 fi
 
+# --- demos: ffmpeg from Debian encodes the cameras' videos (H.264) ---
+if [ "$want_demos" = 1 ] && ! command -v ffmpeg >/dev/null 2>&1; then
+  if [ "$(id -u)" = 0 ]; then apt_run=(); elif sudo -n true 2>/dev/null; then apt_run=(sudo -n); else apt_run=(false); fi
+  if [ "${apt_run[0]:-}" = false ]; then
+    echo "setup: ffmpeg is missing and installing it needs root: apt-get install ffmpeg" >&2
+    exit 1
+  fi
+  say "installing ffmpeg (apt) ..."
+  "${apt_run[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${apt_run[@]}" apt-get install -y -qq --no-install-recommends ffmpeg >/dev/null
+  say "$(ffmpeg -version 2>/dev/null | head -n 1) ready"
+fi
+
+# --- Opt-in: LeRobot itself reads a demos dataset (scripts/test_lerobot.sh) ---
+if [ "$want_lerobot" = 1 ]; then
+  py312="$(command -v python3.12 || ls "$HOME"/.pyenv/versions/3.12*/bin/python3.12 2>/dev/null | head -n 1 || true)"
+  if [ -z "$py312" ]; then
+    echo "setup: lerobot 0.6.1 needs Python 3.12 (python3.12 on PATH)" >&2
+    exit 1
+  fi
+  lr="$cache/lerobot-venv"
+  if ! "$lr/bin/python" -c "import datasets, importlib.metadata as m, sys; sys.exit(m.version('lerobot') != '0.6.1')" 2>/dev/null; then
+    say "creating $lr with lerobot 0.6.1 (PyTorch: several GB, minutes) ..."
+    rm -rf "$lr"
+    "$py312" -m venv "$lr"
+    "$lr/bin/python" -m pip install --quiet --disable-pip-version-check "lerobot[dataset]==0.6.1"
+    say "lerobot 0.6.1 ready in $lr"
+  fi
+fi
+
 # --- Tests only: the Python package (python/) with MuJoCo XLA, MuJoCo Warp, Gymnasium ---
 # The package itself is (re)installed from ./python, offline (its build backend is in the
 # tree), whenever its sources differ from what was installed.
@@ -309,7 +349,7 @@ if [ "$want_tests" = 1 ]; then
   py_venv="$cache/py-venv"
   pinned_venv "$py_venv" mujoco 3.17.0 "mujoco==3.17.0" pytest "the Python package's tests" \
     "mujoco-mjx==3.17.0" "jax==0.10.2" "jaxlib==0.10.2" "mujoco-warp==3.17.0" "warp-lang==1.19.0" \
-    "gymnasium==1.4.0" "usd-core==26.11" "pytest==9.2.0" "ruff==0.17.6" "mypy==2.4.1"
+    "gymnasium==1.4.0" "usd-core==26.11" "pyarrow==26.0.1" "pytest==9.2.0" "ruff==0.17.6" "mypy==2.4.1"
   py_src="$(cd "$root/python" && find pyproject.toml README.md build_backend scenewright -type f \
     -not -path '*__pycache__*' | LC_ALL=C sort | xargs sha256sum | sha256sum | cut -d' ' -f1)"
   if [ "$(cat "$py_venv/.scenewright-src" 2>/dev/null)" != "$py_src" ]; then

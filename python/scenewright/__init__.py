@@ -16,6 +16,14 @@ The engine is the `scenewright` binary (see `scenewright._engine` for how it is 
 this package needs no network. The Gymnasium environment is in `scenewright.env`.
 """
 
+import os as _os
+import sys as _sys
+
+# Offscreen rendering (the environment's `render()`) on a machine without a display needs
+# MuJoCo's EGL backend, chosen before `mujoco` is first imported.
+if _sys.platform.startswith("linux") and not _os.environ.get("DISPLAY"):
+    _os.environ.setdefault("MUJOCO_GL", "egl")
+
 from .api import dataset, generate
 from .dataset import Dataset, SceneRecord
 from .errors import BadInput, EngineNotFound, ScenewrightError

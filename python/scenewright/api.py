@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import shutil
 import tempfile
+import weakref
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -31,6 +33,7 @@ def generate(
     verify: bool = True,
     timeout: float | None = 600.0,
     fill: str | None = None,
+    task: str | None = None,
 ) -> Package:
     """Generate a scene from a plain-English prompt and return its package.
 
@@ -47,9 +50,12 @@ def generate(
             `"cluttered"` (furnished, with small things on its surfaces), added after the
             stated objects without moving them; `None` follows the prompt's own words
             ("a cluttered kitchen"), else no fill.
+        task: What the scene's robot is to do ("put the red cube in the bowl"): bound to the
+            scene and written to the package's `task.json`.
 
     Returns:
-        The package. A scene that failed verification is returned too: check
+        The package (without `out`, in a temporary directory removed when the package
+        object is collected or the interpreter exits). A scene that failed verification is returned too: check
         `package.verified` and `package.report.failures`.
 
     Raises:
@@ -60,7 +66,8 @@ def generate(
         raise ValueError(f"physics must be one of {PHYSICS}, not {physics!r}")
     if fill is not None and fill not in FILLS:
         raise ValueError(f"fill must be one of {FILLS}, not {fill!r}")
-    target = Path(out) if out is not None else Path(tempfile.mkdtemp(prefix="scenewright-")) / "package"
+    tmp = None if out is not None else tempfile.mkdtemp(prefix="scenewright-")
+    target = Path(out) if out is not None else Path(str(tmp)) / "package"
     args = [
         "generate",
         prompt,
@@ -79,12 +86,22 @@ def generate(
         args.append("--no-verify")
     if fill is not None:
         args += ["--fill", fill]
-    res = _engine.run(args, timeout=timeout)
-    doc = res.document if isinstance(res.document, dict) else {}
-    path = Path(str(doc.get("out_dir", target)))
-    if not (path / "scene.xml").is_file():
-        raise ScenewrightError(f"generate wrote no package at {path}", res.exit_code)
-    return Package(path)
+    if task is not None:
+        args += ["--task", task]
+    try:
+        res = _engine.run(args, timeout=timeout)
+        doc = res.document if isinstance(res.document, dict) else {}
+        path = Path(str(doc.get("out_dir", target)))
+        if not (path / "scene.xml").is_file():
+            raise ScenewrightError(f"generate wrote no package at {path}", res.exit_code)
+    except BaseException:
+        if tmp is not None:
+            shutil.rmtree(tmp, ignore_errors=True)
+        raise
+    pkg = Package(path)
+    if tmp is not None:
+        weakref.finalize(pkg, shutil.rmtree, tmp, True)
+    return pkg
 
 
 def dataset(

@@ -8,6 +8,7 @@ loads the scene into MuJoCo at its `home` keyframe.
 
 from __future__ import annotations
 
+import contextlib
 import json
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -286,6 +287,55 @@ class Package:
 
         model, data = self.load()
         return mjx.put_model(model), mjx.put_data(model, data)
+
+    def warp_sizes(self, seconds: float = 1.0) -> dict[str, int]:
+        """The contact and constraint capacity MuJoCo Warp needs for this scene.
+
+        Warp allocates `nconmax` contacts and `njmax` constraint rows per world up front
+        (its defaults, 48 and 64 here, lose contacts: things drift through each other). The
+        peaks are measured in native MuJoCo over `seconds` from `home` with the robots
+        holding their pose, doubled, and rounded up to Warp's sizes; they are kept in the
+        package's `warp.json` (measured once).
+        """
+        import mujoco
+
+        cache = self.path / "warp.json"
+        if cache.is_file():
+            sizes: dict[str, int] = json.loads(cache.read_text())
+            return sizes
+        model, data = self.load()
+        peak_con, peak_efc = data.ncon, data.nefc
+        for _ in range(max(1, round(seconds / model.opt.timestep))):
+            mujoco.mj_step(model, data)
+            peak_con, peak_efc = max(peak_con, data.ncon), max(peak_efc, data.nefc)
+        valid = [(2 + (k % 2)) * 2 ** (k // 2 + 3) for k in range(40)]  # 16, 24, 32, 48, ...
+
+        def size(n: int, floor: int) -> int:
+            return int(next(v for v in valid if v >= max(floor, 2 * n)))
+
+        sizes = {
+            "nconmax": size(peak_con, 64),
+            "njmax": size(peak_efc, 256),
+            "ncon": int(peak_con),
+            "nefc": int(peak_efc),
+        }
+        with contextlib.suppress(OSError):
+            cache.write_text(json.dumps(sizes) + "\n")
+        return sizes
+
+    def load_warp(self, nworld: int = 1) -> tuple[Any, Any]:
+        """The scene in MuJoCo Warp (`mujoco_warp`): `(Model, Data)` at `home`.
+
+        The contact and constraint arrays are sized by [`warp_sizes`][], so that no contact
+        is dropped.
+        """
+        import mujoco_warp as mjw
+
+        sizes = self.warp_sizes()
+        model, data = self.load()
+        return mjw.put_model(model), mjw.put_data(
+            model, data, nworld=nworld, nconmax=sizes["nconmax"], njmax=sizes["njmax"]
+        )
 
     def export_usd(self, out: str | Path) -> Path:
         """Convert the package to USD (`scenewright export DIR --format usd`); the stage's path."""

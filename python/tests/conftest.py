@@ -9,6 +9,9 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+# Offscreen rendering in the tests: MuJoCo's EGL backend, chosen before mujoco is imported.
+os.environ.setdefault("MUJOCO_GL", "egl")
+
 import mujoco
 import numpy as np
 import pytest

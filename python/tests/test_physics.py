@@ -80,3 +80,23 @@ def test_warp_loads_default_scenes_and_matches_native(tmp_path) -> None:
         mujoco.mj_step(model, data, nstep=200)
         err = float(np.abs(qpos - data.qpos).max(initial=0.0))
         assert err < 1e-4, f"{prompt}: Warp and native differ by {err:.2e} after 200 steps"
+
+
+@pytest.mark.warp
+def test_load_warp_sizes_the_scene_so_nothing_drifts(tmp_path) -> None:
+    wp = pytest.importorskip("warp")
+    mjw = pytest.importorskip("mujoco_warp")
+    wp.config.quiet = True
+    pkg = scenewright.generate("a table with a red cube and a bowl and a Panda", seed=2, out=tmp_path / "p")
+    sizes = pkg.warp_sizes()
+    assert sizes["nconmax"] >= 2 * sizes["ncon"] and sizes["njmax"] >= 2 * sizes["nefc"]
+    assert (pkg.path / "warp.json").is_file()
+    with wp.ScopedDevice("cpu"):
+        mw, dw = pkg.load_warp()
+        for _ in range(100):
+            mjw.step(mw, dw)
+        qpos = dw.qpos.numpy()[0]
+    model, data = pkg.load()
+    mujoco.mj_step(model, data, nstep=100)
+    err = float(np.abs(qpos - data.qpos).max(initial=0.0))
+    assert err < 1e-3, f"Warp and native differ by {err:.2e} after 100 steps"

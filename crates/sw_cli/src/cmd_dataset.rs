@@ -394,6 +394,9 @@ pub(crate) struct Progress {
     started: Instant,
     last_line: Mutex<Instant>,
     start_done: usize,
+    /// What is counted ("scenes") and the lines' label ("dataset").
+    unit: &'static str,
+    label: &'static str,
 }
 
 impl Progress {
@@ -422,7 +425,24 @@ impl Progress {
             started: Instant::now(),
             last_line: Mutex::new(Instant::now()),
             start_done: done,
+            unit: "scenes",
+            label: "dataset",
         }
+    }
+
+    /// Counts `unit` ("episodes") on lines labelled `label` ("demos").
+    pub(crate) fn unit(mut self, unit: &'static str, label: &'static str) -> Self {
+        self.unit = unit;
+        self.label = label;
+        if let Some(b) = &self.bar {
+            b.set_style(
+                ProgressStyle::with_template(&format!(
+                    "{{bar:30.cyan/blue}} {{pos}}/{{len}} {unit} · {{per_sec}} · ETA {{eta}} · elapsed {{elapsed}} {{msg}}"
+                ))
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
+            );
+        }
+        self
     }
 
     pub(crate) fn made(&self) {
@@ -433,7 +453,7 @@ impl Progress {
         self.line(false);
     }
 
-    fn failed(&self) {
+    pub(crate) fn failed(&self) {
         let n = self.failed.fetch_add(1, Ordering::SeqCst) + 1;
         if let Some(b) = &self.bar {
             b.set_message(format!("· {n} rejected"));
@@ -443,7 +463,7 @@ impl Progress {
     pub(crate) fn note(&self, text: &str) {
         match &self.bar {
             Some(b) => b.println(text),
-            None if self.lines => eprintln!("dataset  {text}"),
+            None if self.lines => eprintln!("{:<8} {text}", self.label),
             None => {}
         }
     }
@@ -465,9 +485,11 @@ impl Progress {
         let eta =
             if rate > 0.0 { format!("{:.0} s", (self.wanted.saturating_sub(done)) as f64 / rate) } else { "?".into() };
         eprintln!(
-            "dataset  {done}/{} scenes · {rate:.1} scenes/s · ETA {eta} · {} rejected",
+            "{:<8} {done}/{} {unit} · {rate:.2} {unit}/s · ETA {eta} · {} rejected",
+            self.label,
             self.wanted,
-            self.failed.load(Ordering::SeqCst)
+            self.failed.load(Ordering::SeqCst),
+            unit = self.unit
         );
     }
 

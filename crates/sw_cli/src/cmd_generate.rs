@@ -52,6 +52,10 @@ pub(crate) struct GenerateArgs {
     /// words ("cluttered", "lived-in", "furnished", "realistic"), else `none`.
     #[arg(long, value_parser = parse_fill)]
     fill: Option<sw_pipeline::FillLevel>,
+    /// A task for the scene's robot ("put the red cube in the bowl"): bound to the scene
+    /// and written to DIR/task.json (a task the scene cannot hold is bad input).
+    #[arg(long, conflicts_with = "variations")]
+    task: Option<String>,
     /// Print one JSON document instead of progress and a summary.
     #[arg(long)]
     json: bool,
@@ -60,6 +64,33 @@ pub(crate) struct GenerateArgs {
 fn parse_fill(s: &str) -> Result<sw_pipeline::FillLevel, String> {
     sw_pipeline::FillLevel::from_name(s)
         .ok_or_else(|| format!("unknown fill '{s}' (one of: {})", sw_pipeline::FillLevel::NAMES.join(", ")))
+}
+
+/// Binds `instruction` to the package at `dir` and writes `task.json` there.
+pub(crate) fn write_task(dir: &Path, instruction: &str) -> Result<sw_task::Task, Failure> {
+    let read = |name: &str| -> Result<String, Failure> {
+        fs_err::read_to_string(dir.join(name)).map_err(|e| Failure::internal(e.to_string()))
+    };
+    let plan: sw_plan::ScenePlan =
+        serde_json::from_str(&read("plan.json")?).map_err(|e| Failure::internal(e.to_string()))?;
+    let layout: sw_plan::LaidOutScene =
+        serde_json::from_str(&read("layout.json")?).map_err(|e| Failure::internal(e.to_string()))?;
+    let mut joints = Vec::new();
+    if let Ok(root) = sw_mjcf::xml::Element::parse(&read("scene.xml")?) {
+        root.walk(&mut |e| {
+            if e.name == "joint"
+                && let Some(n) = e.get("name")
+            {
+                joints.push(n.to_string());
+            }
+        });
+    }
+    let facts = sw_task::SceneFacts::new(&plan, &layout, joints);
+    let task = sw_task::bind(instruction, "flag", &facts).map_err(|e| Failure::input(e.to_string()))?;
+    let mut text = serde_json::to_string_pretty(&task).map_err(|e| Failure::internal(e.to_string()))?;
+    text.push('\n');
+    fs_err::write(dir.join("task.json"), text).map_err(|e| Failure::internal(e.to_string()))?;
+    Ok(task)
 }
 
 /// Progress output: spinners on a terminal, plain lines otherwise, nothing for --json.
@@ -147,6 +178,13 @@ pub(crate) fn run(a: GenerateArgs) -> Result<u8, Failure> {
             _ => Failure::internal(e.to_string()),
         })?;
     let code = if sw_pipeline::succeeded(&outcome.report) { 0 } else { 1 };
+    if let Some(t) = &a.task
+        && let Err(e) = write_task(&outcome.out_dir, t)
+    {
+        // A package for a task it cannot hold is not handed out.
+        let _ = std::fs::remove_dir_all(&outcome.out_dir);
+        return Err(e);
+    }
     if a.json {
         print_json(&serde_json::json!({
             "status": outcome.report.status,

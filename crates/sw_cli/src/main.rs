@@ -13,6 +13,7 @@ mod bench_server;
 mod cmd_assets;
 mod cmd_bench;
 mod cmd_dataset;
+mod cmd_demos;
 mod cmd_edit;
 mod cmd_export;
 mod cmd_forge;
@@ -21,6 +22,7 @@ mod cmd_llm;
 mod cmd_robots;
 mod cmd_serve;
 mod dataset_queue;
+mod demos_dir;
 mod output;
 
 use std::ffi::OsString;
@@ -87,6 +89,9 @@ enum Command {
     /// N verified, structurally different scenes per prompt into a directory with
     /// manifest.jsonl (resumable; every core, or the service's queue with --database).
     Dataset(cmd_dataset::DatasetArgs),
+    /// Solved demonstrations of a task as a LeRobot v3.0 dataset: an expert solves the task
+    /// in MuJoCo on a new scene variant per episode (resumable; every core).
+    Demos(cmd_demos::DemosArgs),
     /// Convert a package to another format (`--format usd`: OpenUSD via mujoco-usd-converter).
     Export(cmd_export::ExportArgs),
     /// Write the JSON Schemas of plan.json, layout.json, report.json and timings.json.
@@ -175,6 +180,7 @@ fn main() -> ExitCode {
         Command::Edit(a) => cmd_edit::edit(a),
         Command::Refine(a) => cmd_edit::refine(a),
         Command::Dataset(a) => cmd_dataset::run(a),
+        Command::Demos(a) => cmd_demos::run(a),
         Command::Export(a) => cmd_export::run(a),
     };
     match result {

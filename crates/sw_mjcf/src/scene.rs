@@ -306,7 +306,8 @@ fn build(input: &SceneInput<'_>, robots: &[PreparedRobot], meshes: &mut MeshTabl
             .with("diffuse", "0.25 0.25 0.25")
             .with("castshadow", "false"),
     );
-    world.children.push(overview_camera(w, d, h));
+    world.children.push(overview_camera(d, h));
+    world.children.push(front_camera(layout));
     let t = layout.room.wall_thickness;
     world.children.push(
         Element::new("geom")
@@ -362,20 +363,77 @@ fn build(input: &SceneInput<'_>, robots: &[PreparedRobot], meshes: &mut MeshTabl
     root
 }
 
-/// A camera above the south edge looking at the room centre.
-fn overview_camera(w: f64, d: f64, h: f64) -> Element {
-    let span = w.max(d);
-    let eye = [0.35 * w, -0.5 * d - 0.35 * span, (0.55 * span).clamp(2.0, h.max(2.0) + 0.6 * span)];
-    let target = [0.0, 0.0, 0.3];
+/// A camera inside the room, high on the south side, looking at the room's centre (wide
+/// angle: a room seen from within).
+fn overview_camera(d: f64, h: f64) -> Element {
+    let margin = 0.15;
+    let eye = [0.0, -0.5 * d + margin, (h - margin).max(0.5)];
+    look_at("overview", eye, [0.0, 0.1 * d, 0.3 * h.min(3.0)], 75.0)
+}
+
+/// The camera a policy sees the work with: in front of the first robot, across its work
+/// (its base and the movable things within its reach), slightly above — inside the room.
+fn front_camera(layout: &LaidOutScene) -> Element {
+    let s = layout.room.size;
+    let (hw, hd) = (0.5 * s.width, 0.5 * s.depth);
+    let near_things = |p: [f64; 3], r: f64| -> Vec<[f64; 3]> {
+        layout
+            .objects
+            .iter()
+            .filter(|o| o.movable && (o.pos[0] - p[0]).hypot(o.pos[1] - p[1]) < r)
+            .map(|o| [o.pos[0], o.pos[1], o.pos[2] + 0.5 * o.size[2]])
+            .collect()
+    };
+    let (center, forward, radius) = match layout.robots.first() {
+        Some(r) => {
+            let f = [r.yaw.cos(), r.yaw.sin()];
+            let mut pts = vec![[r.pos[0] + 0.45 * f[0], r.pos[1] + 0.45 * f[1], r.pos[2] + 0.1]];
+            pts.push([r.pos[0], r.pos[1], r.pos[2] + 0.3]);
+            pts.extend(near_things(r.pos, 1.0));
+            let c = centroid(&pts);
+            let rad = pts.iter().map(|p| (p[0] - c[0]).hypot(p[1] - c[1])).fold(0.3, f64::max);
+            (c, f, rad)
+        }
+        None => {
+            let pts = near_things([0.0; 3], f64::INFINITY);
+            let c = if pts.is_empty() { [0.0, 0.0, 0.5] } else { centroid(&pts) };
+            let rad = pts.iter().map(|p| (p[0] - c[0]).hypot(p[1] - c[1])).fold(0.5, f64::max);
+            (c, [0.0, 1.0], rad)
+        }
+    };
+    // Across the work from in front, looking down at about 40 degrees.
+    let dist = (1.5 * radius).clamp(0.8, 3.0);
+    let margin = 0.12;
+    let eye = [
+        (center[0] + forward[0] * dist).clamp(-hw + margin, hw - margin),
+        (center[1] + forward[1] * dist).clamp(-hd + margin, hd - margin),
+        (center[2] + 0.85 * dist).min(s.height - margin),
+    ];
+    look_at("front", eye, center, 58.0)
+}
+
+fn centroid(pts: &[[f64; 3]]) -> [f64; 3] {
+    let n = pts.len().max(1) as f64;
+    let mut c = [0.0; 3];
+    for p in pts {
+        for i in 0..3 {
+            c[i] += p[i] / n;
+        }
+    }
+    c
+}
+
+/// A fixed camera at `eye` looking at `target`, image up towards +Z.
+fn look_at(name: &str, eye: [f64; 3], target: [f64; 3], fovy: f64) -> Element {
     let f = normalize([target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]]);
     let z = [-f[0], -f[1], -f[2]];
     let x = normalize(cross([0.0, 0.0, 1.0], z));
     let y = cross(z, x);
     Element::new("camera")
-        .with("name", "overview")
+        .with("name", name)
         .with("pos", nums(&eye))
         .with("xyaxes", nums(&[x[0], x[1], x[2], y[0], y[1], y[2]]))
-        .with("fovy", "50")
+        .with("fovy", num(fovy))
 }
 
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {

@@ -8,7 +8,7 @@
 //! an in-process measurement in MuJoCo 3.17.
 
 use crate::load::{BuiltinPart, ModelSpec};
-use crate::{Licence, Origin, RobotDef, RobotKind};
+use crate::{Gripper, Licence, Origin, RobotDef, RobotKind};
 
 const IDENTITY: [f64; 4] = [1.0, 0.0, 0.0, 0.0];
 
@@ -18,10 +18,43 @@ const fn part(label: &'static str, mjcf: &'static str) -> BuiltinPart {
 
 const OWN: Licence = Licence { name: "MIT OR Apache-2.0 (scenewright)", files: Vec::new() };
 
-static UR5E_PARTS: [BuiltinPart; 1] = [part("built-in ur5e", include_str!("../models/ur5e.xml"))];
-static UR10E_PARTS: [BuiltinPart; 1] = [part("built-in ur10e", include_str!("../models/ur10e.xml"))];
+/// The built-in parallel gripper on an arm's flange body, at the tool frame (z out of the
+/// flange).
+const fn gripper_on(carrier: &'static str, pos: [f64; 3], quat: [f64; 4]) -> BuiltinPart {
+    BuiltinPart {
+        label: "built-in parallel gripper",
+        mjcf: include_str!("../models/parallel_gripper.xml"),
+        prefix: "gripper_",
+        attach_to: Some(carrier),
+        pos,
+        quat,
+    }
+}
+
+/// The UR flange frame in `wrist_3_link`: x = -x, y = z, z = y of the link (site `tool0`).
+const UR_TOOL: [f64; 4] = [0.0, 0.0, std::f64::consts::FRAC_1_SQRT_2, std::f64::consts::FRAC_1_SQRT_2];
+
+static UR5E_PARTS: [BuiltinPart; 2] =
+    [part("built-in ur5e", include_str!("../models/ur5e.xml")), gripper_on("wrist_3_link", [0.0; 3], UR_TOOL)];
+static UR10E_PARTS: [BuiltinPart; 2] =
+    [part("built-in ur10e", include_str!("../models/ur10e.xml")), gripper_on("wrist_3_link", [0.0; 3], UR_TOOL)];
 static PANDA_PARTS: [BuiltinPart; 1] = [part("built-in panda", include_str!("../models/panda.xml"))];
-static GEN3_PARTS: [BuiltinPart; 1] = [part("built-in kinova_gen3", include_str!("../models/kinova_gen3.xml"))];
+static GEN3_PARTS: [BuiltinPart; 2] = [
+    part("built-in kinova_gen3", include_str!("../models/kinova_gen3.xml")),
+    // The tool interface: 61.5 mm below the bracelet, turned half a turn about x.
+    gripper_on("bracelet_link", [0.0, 0.0, -0.0615], [0.0, 1.0, 0.0, 0.0]),
+];
+
+/// The parallel gripper's drive, as the registry names it under the arm.
+const PARALLEL_GRIPPER: Gripper = Gripper {
+    tcp_site: "gripper_tcp",
+    actuator: "gripper_fingers",
+    open: 0.0425,
+    closed: 0.0,
+    max_opening: 0.085,
+    finger_depth: 0.02,
+    wrist_camera: "wrist",
+};
 static TB3_PARTS: [BuiltinPart; 1] = [part("built-in turtlebot3", include_str!("../models/turtlebot3.xml"))];
 static MM_PARTS: [BuiltinPart; 2] = [
     part("built-in mobile_manipulator base", include_str!("../models/mobile_base.xml")),
@@ -51,6 +84,7 @@ static UR5E: RobotDef = RobotDef {
     keepout: &[([-0.09, -0.09, 0.0], [0.09, 0.215, 0.66]), ([-0.08, -0.065, 0.31], [0.53, 0.215, 0.67])],
     measured: true,
     model: ModelSpec::BuiltIn { parts: &UR5E_PARTS, excludes: &[] },
+    gripper: Some(PARALLEL_GRIPPER),
 };
 
 static UR10E: RobotDef = RobotDef {
@@ -61,13 +95,14 @@ static UR10E: RobotDef = RobotDef {
     source: "written for scenewright from the UR10e's published DH parameters, masses and limits",
     origin: Origin::BuiltIn,
     licence: OWN,
-    footprint_radius: 0.76,
+    footprint_radius: 0.77,
     height: 0.89,
     reach: 1.3,
     base_radius: 0.095,
-    keepout: &[([-0.11, -0.11, 0.0], [0.11, 0.12, 0.27]), ([-0.09, -0.04, 0.09], [0.71, 0.26, 0.89])],
+    keepout: &[([-0.11, -0.11, 0.0], [0.11, 0.12, 0.27]), ([-0.09, -0.04, 0.09], [0.72, 0.26, 0.89])],
     measured: true,
     model: ModelSpec::BuiltIn { parts: &UR10E_PARTS, excludes: &[] },
+    gripper: Some(PARALLEL_GRIPPER),
 };
 
 static PANDA: RobotDef = RobotDef {
@@ -85,6 +120,15 @@ static PANDA: RobotDef = RobotDef {
     keepout: &[([-0.24, -0.09, 0.0], [0.25, 0.09, 0.81]), ([-0.31, -0.12, 0.39], [0.39, 0.12, 0.77])],
     measured: true,
     model: ModelSpec::BuiltIn { parts: &PANDA_PARTS, excludes: &[] },
+    gripper: Some(Gripper {
+        tcp_site: "tcp",
+        actuator: "gripper",
+        open: 0.04,
+        closed: 0.0,
+        max_opening: 0.08,
+        finger_depth: 0.008,
+        wrist_camera: "wrist",
+    }),
 };
 
 static KINOVA_GEN3: RobotDef = RobotDef {
@@ -95,13 +139,15 @@ static KINOVA_GEN3: RobotDef = RobotDef {
     source: "written for scenewright from the Gen3 user guide's frame transforms, limits and link masses",
     origin: Origin::BuiltIn,
     licence: OWN,
-    footprint_radius: 0.47,
+    // With the parallel gripper, which points forward at home.
+    footprint_radius: 0.62,
     height: 0.76,
     reach: 0.902,
     base_radius: 0.052,
-    keepout: &[([-0.07, -0.08, 0.0], [0.18, 0.07, 0.76]), ([0.08, -0.06, 0.37], [0.47, 0.06, 0.71])],
+    keepout: &[([-0.07, -0.08, 0.0], [0.18, 0.07, 0.76]), ([0.08, -0.06, 0.36], [0.62, 0.06, 0.71])],
     measured: true,
     model: ModelSpec::BuiltIn { parts: &GEN3_PARTS, excludes: &[] },
+    gripper: Some(PARALLEL_GRIPPER),
 };
 
 static TURTLEBOT3: RobotDef = RobotDef {
@@ -119,6 +165,7 @@ static TURTLEBOT3: RobotDef = RobotDef {
     keepout: &[([-0.155, -0.165, 0.0], [0.155, 0.165, 0.16])],
     measured: true,
     model: ModelSpec::BuiltIn { parts: &TB3_PARTS, excludes: &[] },
+    gripper: None,
 };
 
 static MOBILE_MANIPULATOR: RobotDef = RobotDef {
@@ -136,6 +183,15 @@ static MOBILE_MANIPULATOR: RobotDef = RobotDef {
     keepout: &[([-0.31, -0.25, 0.0], [0.51, 0.25, 1.14])],
     measured: true,
     model: ModelSpec::BuiltIn { parts: &MM_PARTS, excludes: &[] },
+    gripper: Some(Gripper {
+        tcp_site: "arm_tcp",
+        actuator: "arm_gripper",
+        open: 0.04,
+        closed: 0.0,
+        max_opening: 0.08,
+        finger_depth: 0.008,
+        wrist_camera: "arm_wrist",
+    }),
 };
 
 static ALL: [&RobotDef; 6] = [&UR5E, &UR10E, &PANDA, &KINOVA_GEN3, &TURTLEBOT3, &MOBILE_MANIPULATOR];

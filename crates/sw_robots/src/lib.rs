@@ -103,6 +103,29 @@ pub struct RobotDef {
     /// MuJoCo (user robots); they are then conservative placeholders.
     pub measured: bool,
     model: load::ModelSpec,
+    /// The gripper the model carries by default and how to drive it; `None` for bases and
+    /// for arms whose hand the registry does not know.
+    pub gripper: Option<Gripper>,
+}
+
+/// A gripper's drive and geometry, with names as the model writes them (the merger
+/// prefixes them with the instance name).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Gripper {
+    /// The site at the tool centre point between the finger pads: its z axis is the
+    /// approach direction, the fingers close along its y axis.
+    pub tcp_site: &'static str,
+    /// The position actuator that moves the fingers (its control is the finger travel).
+    pub actuator: &'static str,
+    /// Controls that open and close the fingers.
+    pub open: f64,
+    pub closed: f64,
+    /// Widest opening between the pads, m.
+    pub max_opening: f64,
+    /// How far the fingertips reach past the tool centre point, m.
+    pub finger_depth: f64,
+    /// The camera beside the tool, looking down its axis.
+    pub wrist_camera: &'static str,
 }
 
 impl RobotDef {

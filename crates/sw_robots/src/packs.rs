@@ -558,6 +558,9 @@ fn def(pack: &Pack, r: &PackRobot, root: &Path) -> RobotDef {
         keepout: r.keepout,
         measured: true,
         model: ModelSpec::Files(model),
+        // robosuite's grippers are driven through its Python controllers; the expert
+        // drives only grippers the registry describes.
+        gripper: None,
     }
 }
 

@@ -106,6 +106,7 @@ pub(crate) fn register(dir: &Path, robots: &mut Vec<&'static RobotDef>, problems
             keepout: &[([-0.3, -0.3, 0.0], [0.3, 0.3, 1.0])],
             measured: false,
             model: spec,
+            gripper: None,
         };
         robots.push(&*Box::leak(Box::new(def)));
     }

@@ -1,0 +1,167 @@
+//! Running an episode: the state advances only through the robot's actuators, one control
+//! vector per frame held for `substeps` physics steps, and every frame's observation and
+//! action is recorded — so that the same controls replay the episode in plain MuJoCo.
+
+use mujoco_rs::prelude::*;
+
+use crate::ExpertError;
+use crate::rig::Rig;
+
+/// Joint speed limit of planned motion, rad/s.
+const V_MAX: f64 = 1.2;
+/// Shortest timed segment, s.
+const MIN_SEGMENT: f64 = 0.3;
+/// How long a move may wait at its end for the servos to arrive, s.
+const SETTLE_MAX: f64 = 1.0;
+/// An arm has arrived when every joint is this close to its target, rad.
+const ARRIVED: f64 = 0.01;
+
+/// What is recorded per frame.
+#[derive(Debug, Clone, Default)]
+pub struct Recording {
+    /// The actuator controls applied for the frame (the dataset's `action`).
+    pub actions: Vec<Vec<f64>>,
+    /// Arm joints then finger joint positions at the start of the frame.
+    pub states: Vec<Vec<f64>>,
+    /// Position and orientation (w, x, y, z) of each tracked thing at the start of the frame.
+    pub env: Vec<Vec<f64>>,
+    /// The whole `qpos` at the start of the frame (to render it again).
+    pub qpos: Vec<Vec<f64>>,
+}
+
+/// The simulation an episode runs in.
+#[derive(Debug)]
+pub(crate) struct Runner<'m> {
+    pub data: MjData<&'m MjModel>,
+    pub substeps: usize,
+    pub fps: u32,
+    pub ctrl: Vec<f64>,
+    pub rec: Recording,
+    /// Bodies whose pose is recorded in `env`.
+    pub tracked: Vec<usize>,
+    pub max_frames: usize,
+}
+
+impl<'m> Runner<'m> {
+    pub fn new(
+        model: &'m MjModel,
+        fps: u32,
+        substeps: usize,
+        tracked: Vec<usize>,
+        max_seconds: f64,
+    ) -> Result<Self, ExpertError> {
+        let mut data = model.make_data();
+        let key = model
+            .name_to_id(MjtObjBase::mjOBJ_KEY, "home")
+            .ok_or_else(|| ExpertError::Scene("the scene has no 'home' keyframe".into()))?;
+        data.reset_keyframe(key).map_err(|e| ExpertError::Scene(e.to_string()))?;
+        data.forward();
+        let ctrl = data.ctrl().to_vec();
+        Ok(Self {
+            data,
+            substeps,
+            fps,
+            ctrl,
+            rec: Recording::default(),
+            tracked,
+            max_frames: (max_seconds * f64::from(fps)).ceil() as usize,
+        })
+    }
+
+    /// Records the observation, applies `self.ctrl` for one frame.
+    pub fn frame(&mut self, rig: &Rig) -> Result<(), ExpertError> {
+        if self.rec.actions.len() >= self.max_frames {
+            return Err(ExpertError::Failed(format!(
+                "the episode ran past its {:.0} s limit",
+                self.max_frames as f64 / f64::from(self.fps)
+            )));
+        }
+        let qpos = self.data.qpos().to_vec();
+        let mut state: Vec<f64> = rig.arm.iter().map(|j| qpos[j.qpos]).collect();
+        state.extend(rig.finger_qpos.first().map(|&a| qpos[a]));
+        let mut env = Vec::with_capacity(7 * self.tracked.len());
+        for &b in &self.tracked {
+            env.extend_from_slice(&self.data.xpos()[b]);
+            env.extend_from_slice(&self.data.xquat()[b]);
+        }
+        self.rec.states.push(state);
+        self.rec.env.push(env);
+        self.rec.qpos.push(qpos);
+        // The dataset stores controls as float32: the run applies exactly those values, so
+        // that a replay of the stored actions is the same motion.
+        for c in &mut self.ctrl {
+            *c = f64::from(*c as f32);
+        }
+        self.rec.actions.push(self.ctrl.clone());
+        self.data.ctrl_mut().copy_from_slice(&self.ctrl);
+        for _ in 0..self.substeps {
+            self.data.step();
+        }
+        if self.data.qpos().iter().any(|v| !v.is_finite()) {
+            return Err(ExpertError::Failed("the simulation became unstable".into()));
+        }
+        Ok(())
+    }
+
+    fn set_arm_ctrl(&mut self, rig: &Rig, q: &[f64]) {
+        for (j, v) in rig.arm.iter().zip(q) {
+            self.ctrl[j.act] = *v;
+        }
+    }
+
+    pub fn arm_target(&self, rig: &Rig) -> Vec<f64> {
+        rig.arm.iter().map(|j| self.ctrl[j.act]).collect()
+    }
+
+    /// Follows a joint path, each segment timed by the joint speed limit with a
+    /// minimum-jerk profile, then waits (up to a second) for the servos to arrive.
+    pub fn follow(&mut self, rig: &Rig, path: &[Vec<f64>], speed: f64) -> Result<(), ExpertError> {
+        for w in path.windows(2) {
+            let (a, b) = (&w[0], &w[1]);
+            let span = a.iter().zip(b).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
+            let t = (span / (V_MAX * speed)).max(MIN_SEGMENT);
+            let frames = (t * f64::from(self.fps)).ceil() as usize;
+            for k in 1..=frames {
+                let s = k as f64 / frames as f64;
+                let s = s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
+                let q: Vec<f64> = a.iter().zip(b).map(|(x, y)| x + s * (y - x)).collect();
+                self.set_arm_ctrl(rig, &q);
+                self.frame(rig)?;
+            }
+        }
+        self.arrive(rig)
+    }
+
+    /// Holds the current targets until the arm is there (at most [`SETTLE_MAX`]).
+    pub fn arrive(&mut self, rig: &Rig) -> Result<(), ExpertError> {
+        let target = self.arm_target(rig);
+        let max = (SETTLE_MAX * f64::from(self.fps)) as usize;
+        for _ in 0..max {
+            let q = rig.arm_q(&self.data);
+            if q.iter().zip(&target).all(|(a, b)| (a - b).abs() < ARRIVED) {
+                break;
+            }
+            self.frame(rig)?;
+        }
+        Ok(())
+    }
+
+    /// Sets the gripper's control and holds everything for `seconds`.
+    pub fn grip(&mut self, rig: &Rig, value: f64, seconds: f64) -> Result<(), ExpertError> {
+        self.ctrl[rig.grip_act] = value;
+        let frames = (seconds * f64::from(self.fps)).ceil() as usize;
+        for _ in 0..frames {
+            self.frame(rig)?;
+        }
+        Ok(())
+    }
+
+    /// Holds every control for `seconds`.
+    pub fn hold(&mut self, rig: &Rig, seconds: f64) -> Result<(), ExpertError> {
+        let frames = (seconds * f64::from(self.fps)).ceil() as usize;
+        for _ in 0..frames {
+            self.frame(rig)?;
+        }
+        Ok(())
+    }
+}

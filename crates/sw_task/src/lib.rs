@@ -1,0 +1,202 @@
+//! Tasks: what a robot is asked to do in a scene, as predicates over named bodies.
+//!
+//! ```text
+//! "a Panda on a table that puts the red cube in the bowl"
+//!        │ split_prompt
+//!        ├─▶ scene words ("a Panda on a table with a red cube and a bowl") ──▶ the pipeline ──▶ package
+//!        └─▶ instruction ("puts the red cube in the bowl")
+//!                 │ words::read (verbs, things, relation words — tables in `vocab`)
+//!                 ▼ bind (noun phrases → bodies by category and colour; the arm that reaches)
+//!            task.json ──▶ judge (on a Snapshot of the MuJoCo state)
+//! ```
+//!
+//! This crate is pure: the expert (`sw_expert`) fills a [`judge::Snapshot`] from MuJoCo,
+//! and the Python replay check judges with its own code from the official bindings.
+
+pub mod bind;
+pub mod judge;
+pub mod task;
+mod vocab;
+mod words;
+
+pub use bind::{SceneFacts, SceneRobot, bind};
+pub use judge::{BodyState, Bounds, GoalVerdict, Snapshot, Surface, holds, judge};
+pub use task::{Family, GripperInterface, Predicate, TASK_VERSION, Task};
+
+/// Why a task cannot be made. Each is one line that names the part.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum TaskError {
+    #[error("{0}")]
+    Words(String),
+    #[error("{0}")]
+    Missing(String),
+    #[error("{0}")]
+    Robot(String),
+    #[error("{0}")]
+    Unreachable(String),
+    #[error("{0}")]
+    Contradiction(String),
+}
+
+/// The instruction as a command, its verbs in their base form ("puts the mug in the
+/// sink" → "put the mug in the sink"), for a dataset's task string.
+pub fn imperative(instruction: &str) -> String {
+    let mut out: Vec<String> = Vec::new();
+    for (i, w) in instruction.split_whitespace().enumerate() {
+        let bare: String = w.chars().filter(|c| c.is_alphanumeric()).collect();
+        let tail: String =
+            w.chars().rev().take_while(|c| !c.is_alphanumeric()).collect::<Vec<_>>().into_iter().rev().collect();
+        match vocab::base_form(&bare) {
+            Some(base) if vocab::verb(&bare).is_some() => out.push(format!("{base}{tail}")),
+            _ if i == 0 => out.push(w.to_lowercase()),
+            _ => out.push(w.to_string()),
+        }
+    }
+    out.join(" ").trim_end_matches(['.', '!', ' ']).to_string()
+}
+
+/// A prompt split into the scene it describes and the task it asks for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SplitPrompt {
+    /// The scene, with every thing the task names (a thing named only in the task is
+    /// added: "a Panda sorting the cubes into the bins" makes cubes and bins).
+    pub scene: String,
+    /// The instruction, as the prompt words it.
+    pub instruction: String,
+}
+
+/// Splits a prompt that asks for a task ("... that puts the mug in the sink", "... sorting
+/// the cubes into the bins", "... . Put the red cube in the bowl"); `None` when it asks
+/// for none.
+pub fn split_prompt(prompt: &str) -> Option<SplitPrompt> {
+    let t = words::tokens(prompt);
+    let start = words::task_start(&t)?;
+    // The same clause in the prompt's own text: find the verb's word there.
+    let verb = &t[start];
+    let lower = prompt.to_lowercase();
+    let mut from = 0;
+    let mut cut = None;
+    let occurrences = t[..start].iter().filter(|w| *w == verb).count();
+    for _ in 0..=occurrences {
+        let i = find_word(&lower[from..], verb)? + from;
+        cut = Some(i);
+        from = i + verb.len();
+    }
+    let cut = cut?;
+    let instruction = prompt[cut..].trim().trim_end_matches(['.', '!', ' ']).to_string();
+    let mut scene = prompt[..cut].trim_end().to_string();
+    for tail in [" that", " which", " who", " to", ",", ".", ";", " and"] {
+        if scene.to_lowercase().ends_with(tail) {
+            scene.truncate(scene.len() - tail.len());
+            scene = scene.trim_end().to_string();
+        }
+    }
+    let missing = task_things_missing_from(&scene, &instruction);
+    // Things to handle need something to stand on within an arm's reach: a table, when
+    // the scene names no work surface.
+    let surface = if names_a_surface(&scene) { "" } else { " on a table" };
+    if !missing.is_empty() {
+        scene = format!("{scene}{surface} with {}", join_and(&missing));
+    } else if !surface.is_empty() {
+        scene = format!("{scene}{surface}");
+    }
+    Some(SplitPrompt { scene, instruction })
+}
+
+/// The byte index of `word` as a whole word in `text`.
+fn find_word(text: &str, word: &str) -> Option<usize> {
+    let mut from = 0;
+    while let Some(i) = text[from..].find(word).map(|i| i + from) {
+        let before = text[..i].chars().last().is_none_or(|c| !c.is_alphanumeric());
+        let after = text[i + word.len()..].chars().next().is_none_or(|c| !c.is_alphanumeric());
+        if before && after {
+            return Some(i);
+        }
+        from = i + word.len();
+    }
+    None
+}
+
+/// Whether the scene words name a work surface things can stand on.
+fn names_a_surface(scene: &str) -> bool {
+    let t = words::tokens(scene);
+    (0..t.len()).any(|i| {
+        [t[i].clone(), t.get(i + 1).map_or(String::new(), |n| format!("{} {n}", t[i]))].iter().any(|p| {
+            matches!(sw_planner::vocab::noun(p), sw_planner::vocab::Noun::Category(c) if vocab::SURFACES.contains(&c))
+        })
+    })
+}
+
+fn join_and(items: &[String]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
+    }
+}
+
+/// The things an instruction names that the scene words do not, as phrases the planner
+/// reads as new objects ("3 cubes", "a red cube").
+fn task_things_missing_from(scene: &str, instruction: &str) -> Vec<String> {
+    let Ok(clauses) = words::read(instruction) else { return Vec::new() };
+    let scene_categories: Vec<&'static str> = words::tokens(scene)
+        .windows(2)
+        .flat_map(|w| [w[0].clone(), format!("{} {}", w[0], w[1]), w[1].clone()])
+        .filter_map(|p| match sw_planner::vocab::noun(&p) {
+            sw_planner::vocab::Noun::Category(c) => Some(c),
+            _ => None,
+        })
+        .chain(words::tokens(scene).iter().filter_map(|w| match sw_planner::vocab::noun(w) {
+            sw_planner::vocab::Noun::Category(c) => Some(c),
+            _ => None,
+        }))
+        .collect();
+    let mut out: Vec<String> = Vec::new();
+    let mut seen: Vec<&'static str> = Vec::new();
+    for c in &clauses {
+        for np in c.subjects.iter().chain(c.target.iter()) {
+            let sw_planner::vocab::Noun::Category(cat) = sw_planner::vocab::noun(&np.text) else { continue };
+            if scene_categories.contains(&cat) || seen.contains(&cat) {
+                continue;
+            }
+            seen.push(cat);
+            out.push(if np.every { format!("3 {}", np.text) } else { format!("a {}", np.text) });
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_prompt_splits_at_its_task_clause() {
+        let s = split_prompt("a Panda on a table that puts the red cube in the bowl").unwrap_or_else(|| panic!());
+        assert_eq!(s.instruction, "puts the red cube in the bowl");
+        assert_eq!(s.scene, "a Panda on a table with a red cube and a bowl");
+        let s = split_prompt("A UR5e sorting the cubes into the bins.").unwrap_or_else(|| panic!());
+        assert_eq!(s.instruction, "sorting the cubes into the bins");
+        assert_eq!(s.scene, "A UR5e on a table with 3 cubes and 3 bins");
+        let s = split_prompt("a kitchen with a mug and a sink and a Panda. Put the mug in the sink!")
+            .unwrap_or_else(|| panic!());
+        assert_eq!(s.instruction, "Put the mug in the sink");
+        assert_eq!(s.scene, "a kitchen with a mug and a sink and a Panda");
+        // No task: a loading dock is not "load", a set of plates is not "set".
+        assert_eq!(split_prompt("a warehouse with a loading dock and a set of plates on a table"), None);
+        assert_eq!(split_prompt("a UR5e on a table next to two bins"), None);
+        let s = split_prompt("a UR5e on a table sorting the cubes into the bins").unwrap_or_else(|| panic!());
+        assert_eq!(
+            (s.scene.as_str(), s.instruction.as_str()),
+            ("a UR5e on a table with 3 cubes and 3 bins", "sorting the cubes into the bins")
+        );
+        // A machine doing something is a scene, not a task: no robot named before it.
+        assert_eq!(split_prompt("a warehouse with a conveyor moving boxes onto a pallet and a UR5e"), None);
+        assert_eq!(imperative("sorting the cubes into the bins."), "sort the cubes into the bins");
+        assert_eq!(imperative("Put the mug in the sink"), "put the mug in the sink");
+        assert_eq!(
+            imperative("picks up the red cube and places it in the bowl"),
+            "pick up the red cube and place it in the bowl"
+        );
+    }
+}
