@@ -13,6 +13,9 @@ use mujoco_rs::renderer::MjRenderer;
 
 use crate::ExpertError;
 
+/// Takes one camera's frame: (camera index, RGB rows top to bottom).
+pub type FrameSink<'a> = dyn FnMut(usize, &[u8]) -> Result<(), ExpertError> + 'a;
+
 /// A camera of the scene and the name its images go under.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct CameraSpec {
@@ -71,11 +74,7 @@ impl FrameRenderer {
 
     /// Draws every camera for each `qpos`, handing `sink(camera index, rgb)` the pixels
     /// (rows top to bottom, RGB).
-    pub fn render(
-        &mut self,
-        qposes: &[Vec<f64>],
-        sink: &mut dyn FnMut(usize, &[u8]) -> Result<(), ExpertError>,
-    ) -> Result<(), ExpertError> {
+    pub fn render(&mut self, qposes: &[Vec<f64>], sink: &mut FrameSink<'_>) -> Result<(), ExpertError> {
         let mut data = self.model.make_data();
         let nq = self.model.ffi().nq as usize;
         for q in qposes {

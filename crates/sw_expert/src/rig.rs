@@ -78,17 +78,19 @@ impl Rig {
         let robot_body: Vec<bool> =
             (0..nbody).map(|b| b > 0 && name(model, MjtObjBase::mjOBJ_BODY, b).starts_with(&prefix)).collect();
         let tcp_body = model.site_bodyid()[tcp] as usize;
-        let mut hand_body = vec![false; nbody];
-        for b in 1..nbody {
-            let mut cur = b;
-            while cur > 0 {
-                if cur == tcp_body {
-                    hand_body[b] = true;
-                    break;
+        // A body is the hand's when the tool's body is on its way to the world.
+        let hand_body: Vec<bool> = (0..nbody)
+            .map(|b| {
+                let mut cur = b;
+                while cur > 0 {
+                    if cur == tcp_body {
+                        return true;
+                    }
+                    cur = parent[cur] as usize;
                 }
-                cur = parent[cur] as usize;
-            }
-        }
+                false
+            })
+            .collect();
         // The chain from the tool's body to the robot's root.
         let mut chain_joints: Vec<usize> = Vec::new();
         let mut cur = tcp_body;
@@ -263,8 +265,8 @@ pub(crate) fn snapshot<M: ModelType>(model: &MjModel, data: &MjData<M>, robot: &
             .or_default()
             .push(Surface { z: p[2], rect: [p[0] - hx, p[1] - hy, p[0] + hx, p[1] + hy] });
     }
-    for b in 1..nbody {
-        if root[b] as usize != b {
+    for (b, r) in root.iter().enumerate().take(nbody).skip(1) {
+        if *r as usize != b {
             continue;
         }
         let n = name(model, MjtObjBase::mjOBJ_BODY, b);

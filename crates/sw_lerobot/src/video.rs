@@ -72,10 +72,10 @@ impl VideoWriter {
                 self.height
             )));
         }
-        if self.frames % STAT_FRAME_STRIDE == 0 {
+        if self.frames.is_multiple_of(STAT_FRAME_STRIDE) {
             for px in rgb.chunks_exact(3).step_by(STAT_STRIDE) {
-                for c in 0..3 {
-                    self.samples[c].push(f64::from(px[c]) / 255.0);
+                for (samples, v) in self.samples.iter_mut().zip(px) {
+                    samples.push(f64::from(*v) / 255.0);
                 }
             }
         }
