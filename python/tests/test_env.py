@@ -23,8 +23,9 @@ def env(tmp_path_factory: pytest.TempPathFactory) -> scenewright.env.SceneEnv:
 
 def test_spaces_are_the_robots(env) -> None:
     inner = env.unwrapped
-    assert env.action_space.shape == (6,)  # the UR5e's six servos
-    assert env.observation_space.shape == (12,)  # six joint positions, six velocities
+    assert env.action_space.shape == (7,)  # the UR5e's six servos and its gripper's
+    # The arm's six joints and the gripper's two fingers: positions, then velocities.
+    assert env.observation_space.shape == (16,)
     model = inner.model
     np.testing.assert_allclose(env.action_space.low, model.actuator_ctrlrange[:, 0])
     np.testing.assert_allclose(env.action_space.high, model.actuator_ctrlrange[:, 1])
@@ -33,11 +34,11 @@ def test_spaces_are_the_robots(env) -> None:
 def test_reset_draws_a_new_variant_and_steps_move_the_robot(env) -> None:
     obs, info = env.reset(seed=1)
     first = info["package"]
-    assert obs.shape == (12,)
+    assert obs.shape == (16,)
     # At home: the observation is the robot's home pose from the keyframe.
     model = env.unwrapped.model
     home = model.key("home")
-    np.testing.assert_allclose(obs[:6], home.qpos[env.unwrapped._qpos], atol=1e-9)
+    np.testing.assert_allclose(obs[:8], home.qpos[env.unwrapped._qpos], atol=1e-9)
     _, info2 = env.reset(seed=2)
     assert info2["package"] != first
     # Same seed, same variant.
@@ -50,7 +51,7 @@ def test_reset_draws_a_new_variant_and_steps_move_the_robot(env) -> None:
         obs, reward, terminated, _truncated, _ = env.step(target)
         assert reward == 0.0 and not terminated
     assert abs(obs[0] - (home.qpos[env.unwrapped._qpos][0] + 0.5)) < 0.05
-    with pytest.raises(ValueError, match="6 actuators"):
+    with pytest.raises(ValueError, match="7 actuators"):
         env.step(np.zeros(3))
 
 

@@ -42,7 +42,7 @@ def test_load_is_at_home_where_the_layout_says(lab: scenewright.Package) -> None
     # Every scene a test makes is settled in MuJoCo.
     assert settle(model, data) < 0.01
     model2, _ = lab.load(robots=False)
-    assert model2.nu == 0 and model.nu == 6
+    assert model2.nu == 0 and model.nu == 7  # six arm servos and the gripper's
 
 
 def test_same_prompt_and_seed_give_the_same_scene(lab: scenewright.Package, tmp_path) -> None:
