@@ -82,7 +82,12 @@ fn an_exported_arm_is_driven_to_its_home_pose() {
     }
     found.sort();
     assert_eq!(listed, found);
-    assert_eq!(record["drives"].as_array().unwrap().len(), 6, "{record}");
+    // One drive per position servo: the UR5e's six joints (angular) and its built-in
+    // gripper's left finger (linear; the right finger follows it by an equality).
+    let drives = record["drives"].as_array().unwrap();
+    let of_kind = |k: &str| drives.iter().filter(|d| d["kind"] == k).count();
+    assert_eq!((of_kind("angular"), of_kind("linear"), drives.len()), (6, 1, 7), "{record}");
+    assert!(drives.iter().any(|d| d["joint"] == "ur5e_1_gripper_finger_left" && d["kind"] == "linear"), "{record}");
 
     // Read back independently: usd-core's pxr for the drives, MuJoCo 3.17 for the home pose.
     let check = r#"
@@ -92,17 +97,25 @@ from pxr import Usd, UsdPhysics
 stage = Usd.Stage.Open(sys.argv[1])
 m = mujoco.MjModel.from_xml_path(sys.argv[2])
 key = m.key("home").id
+servo = {m.joint(m.actuator_trnid[i][0]).name: i for i in range(m.nu) if m.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_JOINT}
 out = {}
 for p in stage.Traverse():
-    if p.IsA(UsdPhysics.RevoluteJoint):
-        d = UsdPhysics.DriveAPI.Get(p, "angular")
-        a = m.actuator(p.GetName()).id if p.GetName() in [m.actuator(i).name for i in range(m.nu)] else -1
-        out[p.GetName()] = {
-            "driven": p.HasAPI(UsdPhysics.DriveAPI, "angular"),
-            "stiffness": d.GetStiffnessAttr().Get() if d else None,
-            "target": d.GetTargetPositionAttr().Get() if d else None,
-            "home_deg": math.degrees(m.key_ctrl[key][a]) if a >= 0 else None,
-        }
+    angular, linear = p.IsA(UsdPhysics.RevoluteJoint), p.IsA(UsdPhysics.PrismaticJoint)
+    if not (angular or linear):
+        continue
+    kind = "angular" if angular else "linear"
+    d = UsdPhysics.DriveAPI.Get(p, kind)
+    a = servo.get(p.GetName(), -1)
+    home = float(m.key_ctrl[key][a]) if a >= 0 else None
+    out[p.GetName()] = {
+        "kind": kind,
+        "servo": a >= 0,
+        "driven": p.HasAPI(UsdPhysics.DriveAPI, kind),
+        "stiffness": d.GetStiffnessAttr().Get() if d else None,
+        "target": d.GetTargetPositionAttr().Get() if d else None,
+        # Degrees for angular drives, metres for linear ones, as USD physics counts them.
+        "home": (math.degrees(home) if angular else home) if home is not None else None,
+    }
 print(json.dumps(out))
 "#;
     let o = Command::new(&reader)
@@ -114,13 +127,22 @@ print(json.dumps(out))
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let joints: Value = serde_json::from_slice(&o.stdout).unwrap();
     let joints = joints.as_object().unwrap();
-    assert_eq!(joints.len(), 6, "{joints:?}");
+    // The arm's six revolute joints and the gripper's two sliding fingers.
+    let of_kind = |k: &str| joints.values().filter(|j| j["kind"] == k).count();
+    assert_eq!((of_kind("angular"), of_kind("linear")), (6, 2), "{joints:?}");
+    // Every joint a servo drives has a drive to its home control; the others have none.
     for (name, j) in joints {
-        assert_eq!(j["driven"], true, "{name}: {j}");
+        assert_eq!(j["driven"], j["servo"], "{name}: {j}");
+        if j["servo"] != true {
+            continue;
+        }
         assert!(j["stiffness"].as_f64().unwrap() > 1.0, "{name}: {j}");
-        let (target, home) = (j["target"].as_f64().unwrap(), j["home_deg"].as_f64().unwrap());
-        assert!((target - home).abs() < 1e-3, "{name}: drive target {target}° but home is {home}°");
+        let (target, home) = (j["target"].as_f64().unwrap(), j["home"].as_f64().unwrap());
+        assert!((target - home).abs() < 1e-3, "{name}: drive target {target} but home is {home} ({})", j["kind"]);
     }
+    assert_eq!(joints.values().filter(|j| j["driven"] == true).count(), 7, "{joints:?}");
     // The arm's home is not its zero pose: at least one target is not 0.
-    assert!(joints.values().any(|j| j["target"].as_f64().unwrap().abs() > 10.0));
+    assert!(joints.values().any(|j| j["kind"] == "angular" && j["target"].as_f64().unwrap().abs() > 10.0));
+    // The gripper is held open at home (42.5 mm per finger), not left to slide.
+    assert!((joints["ur5e_1_gripper_finger_left"]["target"].as_f64().unwrap() - 0.0425).abs() < 1e-6, "{joints:?}");
 }

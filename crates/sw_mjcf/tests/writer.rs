@@ -94,7 +94,10 @@ fn a_small_scene_writes_stable_mjcf_that_compiles_and_settles() {
 fn every_name_a_robot_brings_is_prefixed() {
     let files = write_with_ur5e("");
     let doc = sw_mjcf::xml::Element::parse(&files.scene_xml).unwrap();
-    let scene_names = ["table", "cardboard_box", "floor", "wall_", "doorway", "sw_", "overview", "home", "scenewright"];
+    // The scene's own: its objects, room, cameras (`overview`, and `front` across the first
+    // robot's work), keyframe and asset names.
+    let scene_names =
+        ["table", "cardboard_box", "floor", "wall_", "doorway", "sw_", "overview", "front", "home", "scenewright"];
     doc.walk(&mut |e| {
         for key in ["name", "class", "childclass"] {
             if let Some(v) = e.get(key) {

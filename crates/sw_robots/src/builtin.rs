@@ -4,8 +4,8 @@
 //! Keep-out boxes, heights and footprints were measured at the `home` keyframe with the
 //! official MuJoCo 4.0 Python bindings (`tools/measure.py` on `scenewright robots show NAME
 //! --mjcf`): the union of the collision geometry's boxes, split into a column over the
-//! base and the rest, with about 1 cm of margin. The registry's tests check them against
-//! an in-process measurement in MuJoCo 3.17.
+//! base and the rest (and, where it hangs below the rest, the gripper), with about 1 cm of
+//! margin. The registry's tests check them against an in-process measurement in MuJoCo 3.17.
 
 use crate::load::{BuiltinPart, ModelSpec};
 use crate::{Gripper, Licence, Origin, RobotDef, RobotKind};
@@ -80,8 +80,13 @@ static UR5E: RobotDef = RobotDef {
     height: 0.65,
     reach: 0.85,
     base_radius: 0.075,
-    // Measured at the home keyframe: base, shoulder and vertical upper arm; forearm and wrist.
-    keepout: &[([-0.09, -0.09, 0.0], [0.09, 0.215, 0.66]), ([-0.08, -0.065, 0.31], [0.53, 0.215, 0.67])],
+    // Measured at the home keyframe: base, shoulder and vertical upper arm; forearm and wrist;
+    // the parallel gripper hanging from the flange, its fingers open (down to z = 0.175).
+    keepout: &[
+        ([-0.09, -0.09, 0.0], [0.09, 0.215, 0.66]),
+        ([-0.08, -0.065, 0.31], [0.53, 0.215, 0.67]),
+        ([0.38, 0.08, 0.16], [0.53, 0.19, 0.34]),
+    ],
     measured: true,
     model: ModelSpec::BuiltIn { parts: &UR5E_PARTS, excludes: &[] },
     gripper: Some(PARALLEL_GRIPPER),

@@ -181,7 +181,8 @@ mod tests {
         let s = split_prompt("a kitchen with a mug and a sink and a Panda. Put the mug in the sink!")
             .unwrap_or_else(|| panic!());
         assert_eq!(s.instruction, "Put the mug in the sink");
-        assert_eq!(s.scene, "a kitchen with a mug and a sink and a Panda");
+        // A kitchen names no work surface (a sink is not one): the things stand on a table.
+        assert_eq!(s.scene, "a kitchen with a mug and a sink and a Panda on a table");
         // No task: a loading dock is not "load", a set of plates is not "set".
         assert_eq!(split_prompt("a warehouse with a loading dock and a set of plates on a table"), None);
         assert_eq!(split_prompt("a UR5e on a table next to two bins"), None);
