@@ -163,7 +163,11 @@ impl Work {
         if let Some(g) = group.first() {
             self.clear_placement(g);
         }
+        // What is in the way makes room, and what was stated relative to it goes with it.
+        let related = self.related_to(&objects, name);
         self.free_objects(&objects);
+        self.free_objects(&related);
+        let objects: Vec<String> = objects.into_iter().chain(related).collect();
         if let Some(p) = self.layout.objects.iter_mut().find(|x| x.name == name) {
             p.support = support.clone();
         }

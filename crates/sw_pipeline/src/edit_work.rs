@@ -364,6 +364,47 @@ impl Work {
         self.removed.push(name.to_string());
     }
 
+    /// The kept objects whose stated relations are to one of `names` (chairs next to a
+    /// table that has to make way, directly or through others): placed again with them, so
+    /// the solver honours those relations around the objects' new places. Never `keep`
+    /// (the object the user put somewhere) nor an item riding on one of them.
+    pub(crate) fn related_to(&self, names: &[String], keep: &str) -> Vec<String> {
+        let group_of = |n: &str| self.layout.object(n).map(|o| o.group.clone());
+        let mut groups: Vec<String> = names.iter().filter_map(|n| group_of(n)).collect();
+        let mut out: Vec<String> = Vec::new();
+        loop {
+            let follow: Vec<String> = self
+                .plan
+                .relations
+                .iter()
+                .filter(|r| {
+                    !groups.contains(&r.subject) && r.kind.targets().iter().any(|t| groups.iter().any(|g| g == t))
+                })
+                .map(|r| r.subject.clone())
+                .collect();
+            if follow.is_empty() {
+                break;
+            }
+            groups.extend(follow);
+        }
+        let riding: Vec<String> =
+            names.iter().map(String::as_str).chain([keep]).flat_map(|n| self.riders_of(n)).collect();
+        for o in &self.layout.objects {
+            if groups.contains(&o.group)
+                && o.name != keep
+                && !names.contains(&o.name)
+                && !riding.contains(&o.name)
+                && self.robots_on(&o.name).is_empty()
+            {
+                out.push(o.name.clone());
+            }
+        }
+        // An item riding on a related object goes with its host.
+        let riders: Vec<String> = out.iter().flat_map(|n| self.riders_of(n)).collect();
+        out.retain(|n| !riders.contains(n));
+        out
+    }
+
     /// Makes objects free: the solver will place them (riders lifted first).
     pub(crate) fn free_objects(&mut self, names: &[String]) {
         for n in names {

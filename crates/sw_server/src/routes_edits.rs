@@ -139,6 +139,7 @@ pub async fn edit(
     };
     let job = s.store.enqueue(&new, s.limits).await?;
     s.wake.notify_one();
+    tracing::info!(job = %job.id, user = %caller.user.id, scene = %sc.id, "job queued");
     Ok((StatusCode::ACCEPTED, Json(json!({ "job_id": job.id, "state": job.state, "scene_id": sc.id }))))
 }
 

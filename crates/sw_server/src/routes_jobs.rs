@@ -161,8 +161,12 @@ pub async fn create(
     for _ in &jobs {
         s.wake.notify_one();
     }
+    // One line per job, naming it as every other line about the job does (`job`), so a
+    // search for one job's id finds when it was queued.
+    for job in &jobs {
+        tracing::info!(job = %job.id, user = %caller.user.id, "job queued");
+    }
     let ids: Vec<&str> = jobs.iter().map(|j| j.id.as_str()).collect();
-    tracing::info!(jobs = ?ids, user = %caller.user.id, "job queued");
     let first = jobs.first().ok_or_else(|| ApiError::internal("no job was queued"))?;
     Ok((StatusCode::ACCEPTED, Json(json!({ "job_id": first.id, "job_ids": ids, "state": first.state }))))
 }
