@@ -280,9 +280,11 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             Err(r) => refusals.push(r),
         }
     }
-    let first_known = refusals.iter().position(|r| r.known);
-    let refusal = refusals.swap_remove(first_known.unwrap_or(0));
-    Err(refusal.error)
+    let first_known = refusals.iter().position(|r| r.known).unwrap_or(0);
+    match refusals.into_iter().nth(first_known) {
+        Some(r) => Err(r.error),
+        None => Err(unread(prompt.trim(), "the synthesizer knows no object by these words")),
+    }
 }
 
 /// Why an object of the prompt's name cannot be made as the prompt says.
