@@ -63,7 +63,22 @@ impl Category {
     pub fn default_size(&self) -> [f64; 3] {
         ["width", "depth", "height"].map(|n| self.param(n).map_or(0.5, |p| p.default))
     }
+
+    /// Whether an object of this category can be of a stated size (m, along its width,
+    /// depth and height; any may be unstated): every stated side within [`SIZE_SLACK`]
+    /// times the range of its parameter. A size a little out of range is made clamped (and
+    /// noted); one far out of it names another thing by the same word — a flat washer 20 mm
+    /// across is no washing machine.
+    pub fn admits_size(&self, stated: [Option<f64>; 3]) -> bool {
+        ["width", "depth", "height"].iter().zip(stated).all(|(name, side)| match (self.param(name), side) {
+            (Some(p), Some(v)) => (p.min / SIZE_SLACK..=p.max * SIZE_SLACK).contains(&v),
+            _ => true,
+        })
+    }
 }
+
+/// How far out of a category's size range a stated size may be and still be that thing.
+pub const SIZE_SLACK: f64 = 3.0;
 
 /// What to make.
 #[derive(Debug, Clone, Default)]

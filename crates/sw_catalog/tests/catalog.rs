@@ -584,3 +584,27 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_category_admits_the_sizes_of_its_kind_and_not_those_of_other_things() {
+    for c in categories() {
+        let d = c.default_size();
+        assert!(c.admits_size([None; 3]), "{}: nothing stated", c.name);
+        assert!(c.admits_size(d.map(Some)), "{}: its default size", c.name);
+        for axis in 0..3 {
+            let name = ["width", "depth", "height"][axis];
+            let Some(p) = c.param(name) else { continue };
+            let side = |v: f64| {
+                let mut s = [None; 3];
+                s[axis] = Some(v);
+                s
+            };
+            // A little out of range is the thing, clamped; far out of it is another thing.
+            assert!(c.admits_size(side(p.min * 0.9)) && c.admits_size(side(p.max * 1.1)), "{}: {name}", c.name);
+            assert!(p.min <= 0.0 || !c.admits_size(side(p.min / 10.0)), "{}: {name} a tenth of its least", c.name);
+            assert!(!c.admits_size(side(p.max * 10.0)), "{}: {name} ten times its most", c.name);
+        }
+    }
+    let washer = find("washing_machine").unwrap();
+    assert!(!washer.admits_size([Some(0.02), Some(0.02), Some(0.002)]), "a flat washer is no washing machine");
+}

@@ -13,6 +13,17 @@ use sw_plan::Status;
 /// and why. The test fails when one of them starts to work, so the list stays honest.
 const KNOWN_UNPLACEABLE: &[(&str, &str)] = &[];
 
+/// Categories whose display name the reader reads as something else, the words that ask
+/// for the category instead, and why. The display name is checked to still be read
+/// otherwise, so the list stays honest.
+const ASKED_OTHERWISE: &[(&str, &str, &str)] = &[
+    ("door", "fire door", "a room's door is where its doorway is: a place, not an object"),
+    ("window", "sash window", "a room's window is a place on its wall ('by the window')"),
+    // The reader takes "robot vacuum", "roomba" and "robot hoover" for a robot that drives (a
+    // TurtleBot3); only "robovac" is left to the catalog's model, a prop that does not.
+    ("robot_vacuum", "robovac", "a robot vacuum is a robot (a TurtleBot3 drives as one)"),
+];
+
 #[test]
 fn an_empty_room_with_one_of_each_category_is_a_verified_scene_of_it() {
     let dir = tempfile::tempdir().unwrap();
@@ -24,7 +35,19 @@ fn an_empty_room_with_one_of_each_category_is_a_verified_scene_of_it() {
         for _ in 0..2 {
             s.spawn(|| {
                 while let Some(cat) = cats.get(next.fetch_add(1, Ordering::Relaxed)) {
-                    let prompt = format!("an empty room with one {}", cat.display);
+                    let otherwise = ASKED_OTHERWISE.iter().find(|(n, ..)| *n == cat.name);
+                    if otherwise.is_some() {
+                        let prompt = format!("an empty room with one {}", cat.display);
+                        match sw_planner::plan(&prompt) {
+                            Ok(p) if p.objects.iter().any(|g| g.category == cat.name) => failures.lock().unwrap().push(
+                                format!("{prompt:?}: is read as {} now: remove it from ASKED_OTHERWISE", cat.name),
+                            ),
+                            Ok(_) => {}
+                            Err(e) => failures.lock().unwrap().push(format!("{prompt:?}: error: {e}")),
+                        }
+                    }
+                    let words = otherwise.map_or(cat.display, |(_, words, _)| *words);
+                    let prompt = format!("an empty room with one {words}");
                     let out = dir.path().join(cat.name);
                     let problem = match generate(&prompt, &out, &Options::default(), &mut |_| {}) {
                         Err(e) => Some(format!("error: {e}")),

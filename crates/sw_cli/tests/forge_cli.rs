@@ -119,7 +119,7 @@ fn assets_go_to_an_s3_bucket_when_the_store_is_an_s3_url() {
 fn assets_generate_refuses_bad_prompts_with_one_line_and_exit_2() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("x");
-    for prompt in ["", "a teapot", "a washer", "A washer: outer diameter 10mm, inner diameter 12mm, 2mm thick"] {
+    for prompt in ["", "a hovercraft", "a washer", "A washer: outer diameter 10mm, inner diameter 12mm, 2mm thick"] {
         let (code, stdout, stderr) = run(&["assets", "generate", prompt, "--out", out.to_str().unwrap(), "--no-store"]);
         assert_eq!(code, 2, "{prompt}: {stdout}{stderr}");
         assert_eq!(stderr.trim().lines().count(), 1, "{stderr}");
@@ -133,7 +133,7 @@ fn bench_cad_measures_against_references_and_catches_a_wrong_one() {
     let suite = dir.path().join("mini.tsv");
     std::fs::write(
         &suite,
-        "# a small suite\nA1\tT1\tA cube with 20mm sides.\nA2\tT1\tA cylinder 10mm in diameter and 30mm tall.\nA3\tT2\tA teapot.\n",
+        "# a small suite\nA1\tT1\tA cube with 20mm sides.\nA2\tT1\tA cylinder 10mm in diameter and 30mm tall.\nA3\tT2\tA hovercraft.\n",
     )
     .unwrap();
     // A2's reference volume is deliberately 10 % off.

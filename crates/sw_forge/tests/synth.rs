@@ -212,7 +212,7 @@ fn prompts_it_cannot_honour_are_refused_with_their_words() {
             other => panic!("{prompt}: {other:?}"),
         }
     }
-    for p in ["", "a teapot", "a spaceship 20mm long"] {
+    for p in ["", "a hovercraft", "a spaceship 20mm long"] {
         assert!(matches!(generate_offline(runner(), p), Err(GenerateError::Synth(_))), "{p}");
     }
 }

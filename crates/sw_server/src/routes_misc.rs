@@ -80,8 +80,10 @@ fn catalog_matches(q: &str) -> Vec<Value> {
 /// The catalog category a description is of: the offline planner reads it as it reads a
 /// prompt, and the description is of its first object — "a trophy on a pedestal" is a
 /// trophy (the pedestal is where it stands), "a red office chair" is a chair. A first
-/// object the catalog does not hold (a proxy) is made by the forge.
-fn match_category(description: &str) -> Option<&'static sw_catalog::Category> {
+/// object the catalog does not hold (a proxy) is made by the forge, and so is one whose
+/// stated size (in the words or `size_m`) no object of its category has: "a flat washer,
+/// 20 mm across" is a part, not a washing machine.
+fn match_category(description: &str, size_m: Option<[f64; 3]>) -> Option<&'static sw_catalog::Category> {
     let plan = sw_planner::plan(description).ok()?;
     let first = plan.objects.iter().min_by_key(|o| {
         let phrase = o.phrase.to_lowercase();
@@ -90,7 +92,10 @@ fn match_category(description: &str) -> Option<&'static sw_catalog::Category> {
     if first.proxy.is_some() {
         return None;
     }
-    sw_catalog::find(&first.category)
+    let c = sw_catalog::find(&first.category)?;
+    let [w, d, _] = c.default_size();
+    let said = first.size.explicit.axes(w >= d);
+    (c.admits_size(said) && c.admits_size(size_m.map_or([None; 3], |s| s.map(Some)))).then_some(c)
 }
 
 /// The caller's generated assets nearest in meaning to `q` (the asset library's
@@ -164,7 +169,7 @@ type Report = Arc<dyn Fn(Value) + Send + Sync>;
 /// as, else the asset forge's (reused by meaning and size, or generated, validated,
 /// stored and indexed).
 async fn make_asset(s: &AppState, user_id: &str, r: AssetRequest, report: Report) -> ApiResult<Value> {
-    let category = match_category(&r.description).map(|c| c.name);
+    let category = match_category(&r.description, r.size_m).map(|c| c.name);
     let meta = match category.and_then(sw_catalog::find) {
         Some(c) => {
             report(json!({ "event": "progress", "message": format!("a catalog category: {}", c.display) }));
@@ -324,10 +329,10 @@ mod tests {
 
     #[test]
     fn a_description_is_of_its_first_object_not_of_what_it_stands_on() {
-        let cat = |d: &str| match_category(d).map(|c| c.name);
+        let cat = |d: &str| match_category(d, None).map(|c| c.name);
         // What it stands on, beside or under is not what is described.
         assert_eq!(cat("a trophy on a pedestal"), None, "a trophy, made by the forge");
-        assert_eq!(cat("a vase on a table"), None);
+        assert_eq!(cat("a vase on a table"), Some("vase"), "the catalog has vases (issue 21)");
         assert_ne!(cat("a lamp next to a shelf"), Some("shelf"), "a lamp, whatever it stands beside");
         // The thing itself, in the catalog.
         assert_eq!(cat("pedestal"), Some("pedestal"));
@@ -335,5 +340,20 @@ mod tests {
         assert_eq!(cat("a table with two mugs on it"), Some("table"));
         // Dimensioned parts go to the forge.
         assert_eq!(cat("a flat washer: outer diameter 120mm, inner diameter 40mm, thickness 10mm"), None);
+    }
+
+    #[test]
+    fn a_size_no_object_of_the_category_has_names_another_thing() {
+        let cat = |d: &str, size: Option<[f64; 3]>| match_category(d, size).map(|c| c.name);
+        // The same word at the category's size, in the words or in `size_m`, is the category.
+        assert_eq!(cat("a washer", None), Some("washing_machine"));
+        assert_eq!(cat("a washer 60 cm wide", None), Some("washing_machine"));
+        assert_eq!(cat("a mug 10 cm tall", None), Some("mug"));
+        assert_eq!(cat("a mug", Some([0.12, 0.09, 0.1])), Some("mug"));
+        // Far from it, it is something else, for the forge to make.
+        assert_eq!(cat("a flat washer, 20 mm across", None), None);
+        assert_eq!(cat("a washer", Some([0.02, 0.02, 0.002])), None);
+        assert_eq!(cat("a mug 2 m tall", None), None);
+        assert_eq!(cat("a table 5 mm wide", None), None);
     }
 }

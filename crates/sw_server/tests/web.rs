@@ -367,7 +367,7 @@ async fn the_forge_streams_its_progress_and_search_ranks_parts_by_meaning() {
 
     // What cannot be made: each failed attempt with its kind, then the reason.
     let (s, body) =
-        a.raw(Method::POST, "/api/assets?stream=1", Some(&ann), stream("a sentient teapot that sings opera")).await;
+        a.raw(Method::POST, "/api/assets?stream=1", Some(&ann), stream("a sentient hovercraft that sings opera")).await;
     assert_eq!(s, StatusCode::OK);
     let events = lines(&body);
     let failures: Vec<&Value> = events.iter().filter(|e| e["event"] == "failure").collect();

@@ -66,6 +66,11 @@ const CATALOG_FEATURES: &[(&str, &[&str])] = &[
     ("monitor", &["stand", "screen"]),
     ("shopping_cart", &["wheels", "handle", "basket"]),
     ("desk", &["drawers", "drawer"]),
+    ("bucket", &["handle", "wire handle"]),
+    ("saucepan", &["handle", "long handle"]),
+    ("coat_rack", &["hooks", "base", "round base"]),
+    ("teapot", &["handle", "lid", "spout"]),
+    ("desk_fan", &["base", "foot", "round foot", "stand"]),
 ];
 
 /// Size words and what they scale.
@@ -194,12 +199,23 @@ fn phrases() -> Vec<(Vec<String>, Candidate)> {
     for c in sw_catalog::categories() {
         out.push((split(c.display), Candidate::Catalog(c)));
         out.push((split(&c.name.replace('_', " ")), Candidate::Catalog(c)));
-        out.extend(c.synonyms.iter().map(|n| (split(n), Candidate::Catalog(c))));
+        out.extend(c.synonyms.iter().filter(|n| !names_a_part(n)).map(|n| (split(n), Candidate::Catalog(c))));
     }
     for b in objects::OBJECTS {
         out.extend(b.names.iter().map(|n| (split(n), Candidate::Object(b))));
     }
     out
+}
+
+/// A catalog object's other name that is one word the feature language reads as a body
+/// of a part ("washer" is a washing machine's and a flat ring's): the forge, asked for
+/// parts, reads it as the part, which needs sizes. The object's own name still makes it.
+fn names_a_part(name: &str) -> bool {
+    let mut words = name.split_whitespace().map(crate::synth::text::fold);
+    match (words.next(), words.next()) {
+        (Some(w), None) => matches!(crate::synth::lexicon::noun(&w), Some(crate::synth::lexicon::Noun::Body(_))),
+        _ => false,
+    }
 }
 
 fn unread(phrase: &str, reason: &str) -> SynthError {
@@ -224,35 +240,80 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             _ => None,
         })
         .collect();
-    let quote = |a: usize, b: usize| prompt.get(words[a].1..words[b].2).unwrap_or("").to_string();
-    // The object: the longest name found (ties as ranked), its first place.
-    let mut best: Option<(usize, usize, Candidate)> = None;
+    // The object: the longest name found, its first place; every object of that name there,
+    // as ranked.
+    let mut best: Option<(usize, usize)> = None;
+    let mut tied: Vec<Candidate> = Vec::new();
     for (name, cand) in phrases() {
         let n = name.len();
         if n == 0 || n > words.len() {
             continue;
         }
-        for at in 0..=words.len() - n {
-            if (0..n).all(|k| words[at + k].0 == name[k]) {
-                // Longest, then first said (features come after the object), then ranked.
-                let better = match &best {
-                    None => true,
-                    Some((ba, bn, bc)) => n > *bn || (n == *bn && (at < *ba || (at == *ba && cand.rank() < bc.rank()))),
-                };
-                if better {
-                    best = Some((at, n, cand));
-                }
-                break;
-            }
+        let Some(at) = (0..=words.len() - n).find(|&at| (0..n).all(|k| words[at + k].0 == name[k])) else {
+            continue;
+        };
+        // Longest, then first said (features come after the object).
+        let better = best.is_none_or(|(ba, bn)| n > bn || (n == bn && at < ba));
+        if better {
+            best = Some((at, n));
+            tied.clear();
+        }
+        if best == Some((at, n)) && !tied.iter().any(|c| c.same(&cand)) {
+            tied.push(cand);
         }
     }
-    let Some((at, n, cand)) = best else {
+    let Some((at, n)) = best else {
         let text = prompt.trim();
         return Err(unread(
             text,
             "the synthesizer knows no object by these words (a catalog object, a shape, or a dimensioned part)",
         ));
     };
+    tied.sort_by_key(Candidate::rank);
+    // The first object of the name that honours every word; else the refusal of the first
+    // one that knows the refused words (a part of it, a count of its feature), else the
+    // first one's: "a bathtub with legs" is the composition when the catalog's tub has none.
+    let mut refusals = Vec::new();
+    for cand in tied {
+        match read_as(prompt, &words, at, n, cand) {
+            Ok(spec) => return make(prompt, cand, &spec),
+            Err(r) => refusals.push(r),
+        }
+    }
+    let first_known = refusals.iter().position(|r| r.known).unwrap_or(0);
+    match refusals.into_iter().nth(first_known) {
+        Some(r) => Err(r.error),
+        None => Err(unread(prompt.trim(), "the synthesizer knows no object by these words")),
+    }
+}
+
+/// Why an object of the prompt's name cannot be made as the prompt says.
+struct Refusal {
+    error: SynthError,
+    /// The object knows the refused words (a part of it, a feature with another count).
+    known: bool,
+}
+
+impl Refusal {
+    fn known(error: SynthError) -> Self {
+        Self { error, known: true }
+    }
+
+    fn unknown(error: SynthError) -> Self {
+        Self { error, known: false }
+    }
+}
+
+/// Reads the words around the object's name (`n` words at `at`) as `cand`: its size words
+/// and the features it is said to have.
+fn read_as(
+    prompt: &str,
+    words: &[(String, usize, usize)],
+    at: usize,
+    n: usize,
+    cand: Candidate,
+) -> Result<Spec, Refusal> {
+    let quote = |a: usize, b: usize| prompt.get(words[a].1..words[b].2).unwrap_or("").to_string();
     let mut spec = Spec::default();
     // Before the name: size and plain words, or another name of it and "or" ("a goblet
     // or wine glass").
@@ -282,9 +343,11 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
                 .iter()
                 .any(|f| f.split_whitespace().map(crate::synth::text::fold).any(|x| x == *w)) =>
             {
-                return Err(unread(&quote(i, at + n - 1), &part_of(&cand)));
+                return Err(Refusal::known(unread(&quote(i, at + n - 1), &part_of(&cand))));
             }
-            None => return Err(unread(&quote(i, i), "a word the synthesizer cannot give this object")),
+            None => {
+                return Err(Refusal::unknown(unread(&quote(i, i), "a word the synthesizer cannot give this object")));
+            }
         }
     }
     // After it: "with …", "on …", "and …", "or <another name of it>": features it has.
@@ -313,7 +376,7 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             if same {
                 break;
             }
-            return Err(unread(&quote(i, words.len() - 1), "two different objects"));
+            return Err(Refusal::unknown(unread(&quote(i, words.len() - 1), "two different objects")));
         }
         // A count ("three steps", "four legs").
         let mut count = None;
@@ -334,21 +397,21 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             .filter(|f| f.len() + j <= words.len() && (0..f.len()).all(|k| words[j + k].0 == f[k]))
             .max_by_key(Vec::len);
         let Some(f) = hit else {
-            return Err(unread(
+            return Err(Refusal::unknown(unread(
                 &quote(i, (i + 2).min(words.len() - 1)),
                 "a feature the synthesizer cannot give this object",
-            ));
+            )));
         };
         if !joined {
-            return Err(unread(&quote(at, j + f.len() - 1), &part_of(&cand)));
+            return Err(Refusal::known(unread(&quote(at, j + f.len() - 1), &part_of(&cand))));
         }
         if let Some(c) = count {
-            check_count(&cand, &f, c).map_err(|reason| unread(&quote(i, j + f.len() - 1), &reason))?;
+            check_count(&cand, &f, c).map_err(|reason| Refusal::known(unread(&quote(i, j + f.len() - 1), &reason)))?;
             spec.count = Some(c);
         }
         i = j + f.len();
     }
-    make(prompt, cand, &spec)
+    Ok(spec)
 }
 
 /// Why a part of an object is not made as the object: the whole is never handed out for it.
@@ -369,7 +432,9 @@ fn check_count(cand: &Candidate, feature: &[String], c: u32) -> Result<(), Strin
     let ok = match cand {
         Candidate::Catalog(cat) => match (cat.name, f.as_str()) {
             ("chair" | "dining_table" | "table", "leg") => c == 4,
-            ("mug" | "cup", "handle") => c == 1,
+            ("mug" | "cup" | "bucket" | "saucepan" | "teapot", "handle") => c == 1,
+            // Two crossed bars: a hook at each of their four ends.
+            ("coat_rack", "hook") => c == 4,
             _ => false,
         },
         Candidate::Object(b) | Candidate::Basic(b) => match (b.names.first().copied(), f.as_str()) {
@@ -456,8 +521,16 @@ mod tests {
         assert_eq!(made("a coffee mug with a handle"), "catalog:mug");
         assert_eq!(made("a cone"), "composed:cone");
         assert_eq!(made("a traffic cone on a flat base"), "catalog:traffic_cone");
-        assert_eq!(made("a desk fan shape"), "composed:desk fan");
-        assert_eq!(made("a goblet or wine glass"), "composed:goblet");
+        // The catalog makes what it has, by its longest name ("desk fan", not "fan"); a
+        // longer name of a composition beats a shorter catalog one ("trophy cup", not "cup").
+        assert_eq!(made("a desk fan shape"), "catalog:desk_fan");
+        assert_eq!(made("a trophy cup"), "composed:trophy");
+        // Of one name, the object that has the features said: the catalog's bathtub has no
+        // legs, the composition has.
+        assert_eq!(made("a bathtub"), "catalog:bathtub");
+        assert_eq!(made("a bathtub with legs"), "composed:bathtub");
+        assert_eq!(made("a goblet or wine glass"), "catalog:wine_glass");
+        assert_eq!(made("a chalice or goblet"), "composed:goblet");
         assert_eq!(made("a staircase with three steps"), "composed:staircase");
     }
 
@@ -471,6 +544,20 @@ mod tests {
         assert!(e.starts_with("error"), "{e}");
         let e = made("a hammer or a saw");
         assert!(e.contains("saw"), "{e}");
+    }
+
+    #[test]
+    fn a_part_noun_is_the_part_not_the_catalog_object_of_that_other_name() {
+        // "washer", "rod", "wheel" are a washing machine's, a cylinder's, a tyre's other
+        // names and parts of the feature language: without sizes the part is refused.
+        for p in ["a washer", "a flat washer", "a rod", "a wheel", "a dowel"] {
+            let e = made(p);
+            assert!(e.starts_with("error") && e.contains("knows no object"), "{p}: {e}");
+        }
+        // The object's own names still make it.
+        assert_eq!(made("a washing machine"), "catalog:washing_machine");
+        assert_eq!(made("a front loader"), "catalog:washing_machine");
+        assert_eq!(made("a tire"), "catalog:tire");
     }
 
     #[test]
