@@ -378,7 +378,7 @@ async function main() {
     assert(/120\.0 × 120\.0 × 10\.0/.test(meshSize), `the preview's size: ${meshSize}`);
     assert((await page.locator('#preview').getAttribute('data-part')) !== '', 'the washer is previewed');
     await shot(page, '06-asset-studio');
-    await page.fill('#part-description', 'a sentient teapot that sings opera');
+    await page.fill('#part-description', 'a sentient hovercraft that sings opera');
     await page.click('#make-part');
     // The washer's preview goes at once: it is not the part asked for.
     assert((await page.locator('#preview').getAttribute('data-part')) === '', 'the previous part stayed in the preview');
