@@ -6,7 +6,7 @@ Run from a checkout, after `pip install './python[gym]'`:
 
 Each episode resets into a new variant of the prompt's scene (a new seed: another layout,
 other asset proportions and colours); the reward here is the negative distance of the
-robot's last link from the first free object, to show where a task plugs in.
+robot's tool point (its gripper's TCP site) from the first free object, to show where a task plugs in.
 """
 
 from __future__ import annotations
@@ -20,13 +20,22 @@ import numpy as np
 import scenewright.env  # noqa: F401  (registers scenewright/Scene-v0)
 
 
+def tool_site(model: mujoco.MjModel) -> int:
+    """The robot's tool point: its gripper's TCP site, else its flange's (`<robot>_tool0`)."""
+    names = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_SITE, i) or "" for i in range(model.nsite)]
+    for suffix in ("_gripper_tcp", "_tcp", "_tool0"):
+        for i, n in enumerate(names):
+            if n.endswith(suffix):
+                return i
+    raise ValueError("the scene's robot has no tool site (…_tcp or …_tool0)")
+
+
 def reach_reward(model: mujoco.MjModel, data: mujoco.MjData) -> float:
-    """Negative distance from the robot's last body to the first free object (0 without one)."""
+    """Negative distance from the robot's tool point to the first free object (0 without one)."""
     free = [model.jnt_bodyid[j] for j in range(model.njnt) if int(model.jnt_type[j]) == int(mujoco.mjtJoint.mjJNT_FREE)]
     if not free:
         return 0.0
-    tip = model.nbody - 1
-    return -float(np.linalg.norm(data.xpos[tip] - data.xpos[free[0]]))
+    return -float(np.linalg.norm(data.site_xpos[tool_site(model)] - data.xpos[free[0]]))
 
 
 def main() -> None:
