@@ -538,6 +538,10 @@ async function main() {
     await page.locator('.scene-card', { hasText: 'storage room' }).locator('button.delete').click();
     await page.getByText('Deleted 1 version').waitFor({ timeout: 20_000 });
     assert((await api(server, token, 'GET', `/api/scenes/${anomScene}`)).status === 404, 'the deleted scene is gone');
+    // The notice can come before the list is drawn again: give the list its moment, then check.
+    await page
+      .waitForFunction(() => document.querySelectorAll('.scene-card').length === 0, null, { timeout: 20_000 })
+      .catch(() => {});
     assert((await page.locator('.scene-card').count()) === 0, 'the deleted card is gone');
     await page.fill('#scene-search', '');
     await page.waitForFunction((n) => document.querySelectorAll('.scene-card').length === n, cards - 1);
