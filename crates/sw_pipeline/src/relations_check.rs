@@ -205,6 +205,11 @@ pub(crate) fn gap(a: &Aabb, b: &Aabb) -> f64 {
     if dx < 0.0 && dy < 0.0 { dx.max(dy) } else { dx.max(0.0).hypot(dy.max(0.0)) }
 }
 
+/// The target whose footprint is nearest a subject's, and the gap to it (`None` without targets).
+pub(crate) fn nearest_target(s: &Thing, targets: &[Thing]) -> Option<(usize, f64)> {
+    targets.iter().enumerate().map(|(i, t)| (i, gap(&s.body.bounds, &t.body.bounds))).min_by(|a, b| a.1.total_cmp(&b.1))
+}
+
 pub(crate) fn wall_gap(half: [f64; 2], b: &Aabb, w: Wall) -> f64 {
     match w {
         Wall::North => half[1] - b.max[1],

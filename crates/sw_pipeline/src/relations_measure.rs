@@ -8,7 +8,7 @@ use sw_plan::{Corner, Relation, RelationKind, ScenePlan, Wall};
 
 use crate::relations_check::{
     CORNER, DOOR, FRONT, FRONT_SIDE, NEAR, NEXT_TO, REST, Thing, Verdict, WALL, Written, center, dot, gap, half_along,
-    in_hull, inside, nearest_wall, site_under, wall_gap,
+    in_hull, inside, nearest_target, nearest_wall, site_under, wall_gap,
 };
 use crate::relations_places as places;
 
@@ -377,12 +377,7 @@ fn around(subjects: &[Thing], targets: &[Thing], v: &mut Verdict) {
     let mut per: Vec<(Vec<usize>, usize)> = vec![(Vec::new(), 0); targets.len()];
     let mut worst_gap: f64 = 0.0;
     for s in subjects {
-        let Some((ti, g)) = targets
-            .iter()
-            .enumerate()
-            .map(|(i, t)| (i, gap(&s.body.bounds, &t.body.bounds)))
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-        else {
+        let Some((ti, g)) = nearest_target(s, targets) else {
             return;
         };
         worst_gap = worst_gap.max(g);

@@ -10,8 +10,8 @@ use sw_geom::Aabb;
 use sw_plan::{Corner, EndOf, ExplicitSize, ScenePlan, SizeCheck, Wall};
 
 use crate::relations_check::{
-    CORNER, REST, Thing, Verdict, WALL, Written, center, dot, gap, half_along, inside, nearest_wall, site_under,
-    wall_gap,
+    CORNER, REST, Thing, Verdict, WALL, Written, center, dot, gap, half_along, inside, nearest_target, nearest_wall,
+    site_under, wall_gap,
 };
 use crate::relations_measure::side_of;
 use crate::scene_geom::{BodyGeom, Site};
@@ -190,12 +190,7 @@ pub(crate) fn on_each_side_of(subjects: &[Thing], targets: &[Thing], v: &mut Ver
     let mut per: Vec<Vec<usize>> = vec![Vec::new(); targets.len()];
     let mut worst: f64 = 0.0;
     for s in subjects {
-        let Some((ti, g)) = targets
-            .iter()
-            .enumerate()
-            .map(|(i, t)| (i, gap(&s.body.bounds, &t.body.bounds)))
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-        else {
+        let Some((ti, g)) = nearest_target(s, targets) else {
             return;
         };
         worst = worst.max(g);
