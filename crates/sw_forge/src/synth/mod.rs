@@ -12,6 +12,7 @@
 //! when every overlap is known, its through-holes when simple — comes from the same model
 //! analytically, so the validator can check the executed code against it.
 
+pub mod contradict;
 pub mod doc;
 pub mod lexicon;
 pub mod mention;
@@ -115,9 +116,13 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
             reason: "a coordinate outside 10 m".into(),
         });
     }
+    // Words that contradict each other are refused with them, whatever the first reader
+    // would make of them.
+    let takeoff = takeoff::Takeoff::read(&d);
+    takeoff.contradictions().map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
     let model = read::read(&d).map_err(|r| SynthError::Unread { phrase: r.phrase, reason: r.reason })?;
     // The second reading: what the words alone say the part measures.
-    takeoff::Takeoff::read(&d).check(&model).map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
+    takeoff.check(&model).map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
     Ok(finish(prompt, "features", &model))
 }
 

@@ -304,7 +304,7 @@ impl<'a> Takeoff<'a> {
     }
 
     /// Lengths that size a body (not a cut's, a treatment's, a pattern's or a placement's).
-    fn body_dims(&self, t: usize) -> Vec<usize> {
+    pub(super) fn body_dims(&self, t: usize) -> Vec<usize> {
         const FEATURE: &[&str] = &[
             "hole",
             "bore",
