@@ -411,6 +411,13 @@ def dev() -> dict[str, Ref]:
     t["WD_106"] = ((50, 40, 40), cone(40, 50))
     t["WD_107"] = ((100, 60, 30), 100 * 60 * 30 - 94 * 54 * 27)
     t["WD_108"] = ((100, 30, 30), (30 * 3 + 27 * 3) * 100)
+    # Session 4: patterns and restatements near the limits the contradiction checks draw.
+    t["WD_139"] = ((80, 80, 10), cyl(80, 10) - 8 * cyl(8, 10))
+    t["WD_140"] = ((100, 50, 10), 100 * 50 * 10 - 2 * cyl(12, 10))
+    t["WD_141"] = inch((4, 2, 2), cyl(2, 4))
+    t["WD_142"] = ((100, 100, 12), tube(100, 40, 12) - 4 * cyl(10, 12))
+    t["WD_143"] = ((150, 100, 6), 150 * 100 * 6 - 4 * cyl(9, 6))
+    t["WD_144"] = ((50, across_corners(20), 20), hexagon(20) * 50)
     return t
 
 
