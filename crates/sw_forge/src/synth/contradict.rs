@@ -87,6 +87,28 @@ impl Takeoff<'_> {
             && let Some(h) = host
         {
             self.treatments_fit(*b, h)?;
+            // "120 overall", "total height 35": of a part of one body, one of its extents.
+            let e = h.extents();
+            let d = self.doc;
+            if let Some((_, x)) = d.dims.iter().enumerate().find(|(k, x)| {
+                (x.has("overall") || x.has("total"))
+                    && matches!(x.role, Role::Length | Role::Height | Role::Width | Role::Thickness | Role::Bare)
+                    && x.restates.is_none()
+                    && self.owner[*k].is_none_or(|t| matches!(self.things[t].kind, Noun::Body(_) | Noun::Whole))
+                    && !e.iter().any(|v| !differ(*v, x.mm))
+            }) {
+                return Err(Disagreement {
+                    phrase: d.quote(x.phrase.0.min(x.tok), x.phrase.1.max(x.tok + 1) - 1),
+                    reason: format!(
+                        "{} mm overall is none of the sizes of the {} ({} x {} x {} mm)",
+                        n(x.mm),
+                        self.things[*b].noun,
+                        n(e[2]),
+                        n(e[1]),
+                        n(e[0])
+                    ),
+                });
+            }
         }
         for t in 0..self.things.len() {
             if let Noun::Cut(kind) = self.things[t].kind {
@@ -243,6 +265,25 @@ impl Takeoff<'_> {
                     }
                 }
             }
+            // A size said by its role that the list of sizes does not have ("70 x 40 x 25
+            // … 30 thick"), on a body of three sizes.
+            if lists.len() == 1 && lists[0].len() == 3 && matches!(hint, ShapeHint::Rect) {
+                let along = [Role::Length, Role::Width, Role::Height, Role::Thickness, Role::Depth];
+                if let Some(x) = dims.iter().find(|x| {
+                    x.list.is_none()
+                        && along.contains(&x.role)
+                        && key(x, &th.noun).is_empty()
+                        && !lists[0].iter().any(|v| !differ(*v, x.mm))
+                }) {
+                    return err(format!(
+                        "{} mm is none of its sizes {} x {} x {} mm",
+                        n(x.mm),
+                        n(lists[0][2]),
+                        n(lists[0][1]),
+                        n(lists[0][0])
+                    ));
+                }
+            }
         }
         // Shape words the sizes deny.
         let said = |w: &str| (th.phrase.0..=th.phrase.1).any(|i| d.is(i, w));
@@ -303,6 +344,11 @@ impl Takeoff<'_> {
             && i >= o * 0.995
         {
             return err(format!("its inside ({} mm) is not inside its outside ({} mm)", n(i), n(o)));
+        }
+        if let (Some(o), Some(i), Some(w)) = (outer, inner, wall)
+            && differ(o - 2.0 * w, i)
+        {
+            return err(format!("a {} mm wall makes the inside {} mm, not {} mm", n(w), n(o - 2.0 * w), n(i)));
         }
         if let (Some(o), Some(w)) = (outer, wall)
             && 2.0 * w >= o * 0.995
@@ -443,7 +489,17 @@ impl Takeoff<'_> {
             ([], [h]) => *h,
             _ => return Ok(()),
         };
-        let count = th.count.unwrap_or(1);
+        // Its count, also when written as a bare number before it ("7 holes").
+        let count = th.count.unwrap_or_else(|| {
+            (th.phrase.0..th.phrase.1)
+                .find_map(|i| match d.toks[i].kind {
+                    super::text::Tk::Num { v, unit: None, .. } if v.fract() == 0.0 && (1.0..=1000.0).contains(&v) => {
+                        Some(v as u32)
+                    }
+                    _ => None,
+                })
+                .unwrap_or(1)
+        });
         let err = |reason: String| Err(Disagreement { phrase: self.quote_thing(t), reason });
         // The pitch circle said with these holes: their own, else the next one after them in
         // their sentence.
@@ -581,6 +637,9 @@ mod tests {
         refused("Ø20 x 60 pin, 60 mm diameter.", "60 mm diameter");
         refused("A 10 mm thick plate, 100 x 50, 12 mm thick.", "12 mm thick");
         refused("Block 60 x 40 x 30 high, 40 high.", "40 high");
+        refused("Block 70 x 40 x 25. The block is 30 thick.", "30 thick");
+        refused("Plate 100 long, 60 wide, 8 thick, overall length 120.", "overall length 120");
+        refused("3 in OD x 2-1/2 in ID tube, 1/8 in wall, 6 in long", "1/8 in wall");
         refused("A cylinder 40 mm in diameter and 20 mm tall, 20 mm across.", "20 mm across");
         refused("A disc of radius 20, 50 across, 5 thick.", "50 across");
         refused("a round bar 20 dia, 100 long, 22 mm OD", "22 mm OD");
