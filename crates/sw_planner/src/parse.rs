@@ -38,6 +38,8 @@ pub(crate) struct Draft {
     /// `@robot:N`.
     pub robot_relations: Vec<(usize, RelationKind)>,
     pub approximated: Vec<Approximation>,
+    /// Groups said to stand on the floor ("a basket on the floor").
+    pub on_floor: Vec<String>,
 }
 
 /// How a group's count follows from another group's.

@@ -626,7 +626,13 @@ impl Parser<'_> {
                     (Cue::BackToBack, _) => RelationKind::BackToBack,
                     (Cue::Leaning(w), _) => RelationKind::Leaning { wall: w },
                     (Cue::Stacked, _) => RelationKind::Stacked { n: None, stacks: None },
-                    (Cue::Floor, _) => return,
+                    // "a bin on the floor": nothing to keep but that it stays there.
+                    (Cue::Floor, _) => {
+                        if !self.draft.on_floor.contains(&subject) {
+                            self.draft.on_floor.push(subject.clone());
+                        }
+                        return;
+                    }
                     _ => return,
                 };
                 if kind.targets().contains(&subject.as_str()) {
@@ -833,6 +839,11 @@ impl Parser<'_> {
             (Cue::InFront, [t]) => RelationKind::InFrontOf { target: t.clone() },
             (Cue::Behind, [t]) => RelationKind::Behind { target: t.clone() },
             (Cue::Around, [t]) | (Cue::FacingTarget, [t]) => RelationKind::Near { target: t.clone() },
+            // "two arms on opposite sides of the bench": one on each side; a single robot
+            // "either side of" something stands beside it.
+            (Cue::EachSide, [t]) if robot.count.is_some_and(|c| c >= 2.0) || robot.plural => {
+                Said::OnEachSideOf(t.clone()).kind()
+            }
             (Cue::EachSide, [t]) => RelationKind::NextTo { target: t.clone() },
             (Cue::In | Cue::Above, _) => return,
             (Cue::EndOf(end), [t]) => {
