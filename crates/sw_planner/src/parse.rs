@@ -734,6 +734,17 @@ impl<'a> Parser<'a> {
                     self.bind(Subject::Robot(idx));
                     return;
                 }
+                // "two Pandas …, one robot at each side": one of the robots already named
+                // (each in turn), not another robot.
+                if !word.exact
+                    && matches!(self.word(start), "one" | "each")
+                    && p.count.is_none_or(|c| c <= 1.0)
+                    && let Some(idx) =
+                        self.draft.robots.iter().rposition(|r| r.plural || r.count.is_some_and(|c| c >= 2.0))
+                {
+                    self.bind(Subject::Robot(idx));
+                    return;
+                }
                 let idx = self.draft.robots.len();
                 let mount = if word.on_mobile_base { Mount::MobileBase } else { Mount::Auto };
                 // "tables, each with a Panda on it": one on every table.

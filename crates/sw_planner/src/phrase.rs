@@ -688,7 +688,30 @@ impl Phrases<'_> {
                         let modifier = self.word(s + l - 1);
                         let tail = self.word(*w);
                         let tail_plural = singular(tail) != tail;
-                        singular(modifier) == modifier
+                        // "a cube out of reach", "the lid off": a particle, not a noun.
+                        let particle = matches!(
+                            tail,
+                            "out"
+                                | "up"
+                                | "down"
+                                | "off"
+                                | "away"
+                                | "over"
+                                | "back"
+                                | "aside"
+                                | "apart"
+                                | "together"
+                                | "closer"
+                                | "nearer"
+                                | "further"
+                                | "farther"
+                                | "upright"
+                                | "open"
+                                | "shut"
+                                | "closed"
+                        );
+                        !particle
+                            && singular(modifier) == modifier
                             && tail_plural == counted_plural
                             && !self.near_typo(&singular(tail))
                             && matches!(nouns[k + 1], Noun::Unknown(_))

@@ -1508,3 +1508,16 @@ fn small_things_placed_by_something_on_a_surface_share_it() {
         dump(&p)
     );
 }
+
+#[test]
+fn one_of_several_robots_is_one_of_them_not_another() {
+    let p = ok("two Pandas and one cube on a table, one robot each side");
+    assert_eq!(p.robots.len(), 1, "{}", dump(&p));
+    let table = group(&p, "table").id.clone();
+    assert_rel(&p, &robot(&p, "panda").id, RelationKind::OnEachSideOf { target: table });
+    // "them" after a singular host is the plural thing named before it.
+    let p = ok("two Pandas on a table with a cube between them");
+    let panda = robot(&p, "panda").id.clone();
+    assert_rel(&p, &group(&p, "cube").id, RelationKind::Between { first: panda.clone(), second: panda.clone() });
+    assert_rel(&p, &panda, RelationKind::Reach { target: group(&p, "cube").id.clone() });
+}
