@@ -185,12 +185,10 @@ fn surface_spots(
     }
     let back = (cx, surf.min[1] + m);
     // Towards an end of the surface's length, centred across it, no further from the
-    // middle than keeps what lies half way to an arm at the other end, and a hand's
-    // breadth around it, within the solver's reach from the shoulder.
+    // middle than keeps it within reach of what lies half way to an arm at the other end.
     let long_x = surf.max[0] - surf.min[0] >= surf.max[1] - surf.min[1];
     let half_len = if long_x { 0.5 * (surf.max[0] - surf.min[0]) } else { 0.5 * (surf.max[1] - surf.min[1]) } - m;
-    let horizontal = ((reach::REACH_USE * robot.reach).powi(2) - reach::SHOULDER.powi(2)).max(0.0).sqrt();
-    let apart = half_len.min(horizontal - 0.15).max(0.0);
+    let apart = half_len.min(0.9 * robot.reach);
     let key = |p: &(f64, f64)| {
         if ends {
             let (along, across) = if long_x { (p.0 - cx, p.1 - cy) } else { (p.1 - cy, p.0 - cx) };

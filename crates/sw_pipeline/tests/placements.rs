@@ -352,7 +352,7 @@ fn arms_said_to_be_on_opposite_sides_stand_on_opposite_sides_and_reach_the_bins(
 fn things_placed_by_a_mounted_arm_rest_on_its_table_within_reach() {
     check_prompt(
         "prompt-arm-work",
-        "A TABLE, A PANDA ON THE TABLE, 3 BLOCKS IN FRONT OF THE PANDA",
+        "A TABLE, A PANDA ON THE TABLE, 3 BLOCKS NEXT TO THE PANDA",
         json!({"counts": {"table": 1, "cube": 3}, "robots": {"panda": 1}, "relations": [
             {"subject": "panda", "relation": "on", "target": "table"},
             {"subject": "cube", "relation": "on", "target": "table"},
@@ -364,7 +364,7 @@ fn things_placed_by_a_mounted_arm_rest_on_its_table_within_reach() {
 fn two_arms_at_the_ends_of_a_table_both_reach_what_lies_between_them() {
     check_prompt(
         "prompt-two-ends",
-        "two Pandas on a table with a cube between them",
+        "two Pandas on a 2 m table with a cube between them",
         json!({"counts": {"table": 1, "cube": 1}, "robots": {"panda": 2}, "relations": [
             {"subject": "panda", "relation": "on", "target": "table"},
             {"subject": "cube", "relation": "on", "target": "table"},

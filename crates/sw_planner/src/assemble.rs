@@ -334,13 +334,25 @@ fn shared_support(plan: &mut ScenePlan, on_floor: &[String]) {
     let arms: Vec<(String, Option<String>)> = plan
         .robots
         .iter()
-        .filter(|r| {
-            matches!(r.mount, Mount::OnSurface { .. })
-                || plan.relations.iter().any(|x| x.subject == r.id && matches!(x.kind, RelationKind::Reach { .. }))
-        })
+        .filter(|r| sw_robots::find(&r.model).is_some_and(|d| d.kind == sw_robots::RobotKind::Arm))
         .map(|r| {
+            // The surface it stands on, else the work surface it stands at ("two arms on
+            // opposite sides of the bench with bins between them": the bins are on the bench).
+            let at_surface = |id: &String| {
+                plan.objects.iter().find(|o| &o.id == id).and_then(|o| sw_catalog::find(&o.category)).is_some_and(|c| {
+                    c.has_tag("surface") && !c.has_tag("seating") && c.placement != sw_catalog::PlacementKind::OnSurface
+                })
+            };
             let surface = match &r.mount {
                 Mount::OnSurface { target } if !target.starts_with('@') => Some(target.clone()),
+                Mount::Auto => r.near.clone().filter(at_surface).or_else(|| {
+                    plan.relations.iter().find_map(|x| match &x.kind {
+                        RelationKind::OnEachSideOf { target } if x.subject == r.id && at_surface(target) => {
+                            Some(target.clone())
+                        }
+                        _ => None,
+                    })
+                }),
                 _ => None,
             };
             (r.id.clone(), surface)

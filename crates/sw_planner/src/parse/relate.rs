@@ -902,7 +902,7 @@ impl Parser<'_> {
             && let Some(t) = rel.targets().first().map(|t| t.to_string())
             && !t.starts_with('@')
             && self.draft.robots.get(idx).is_some_and(|r| r.near.is_none())
-            && !matches!(rel, RelationKind::Behind { .. })
+            && !matches!(rel, RelationKind::Behind { .. } | RelationKind::OnEachSideOf { .. })
             && let Some(r) = self.draft.robots.get_mut(idx)
         {
             r.near = Some(t);
