@@ -345,14 +345,27 @@ fn shared_support(plan: &mut ScenePlan, on_floor: &[String]) {
             };
             let surface = match &r.mount {
                 Mount::OnSurface { target } if !target.starts_with('@') => Some(target.clone()),
-                Mount::Auto => r.near.clone().filter(at_surface).or_else(|| {
-                    plan.relations.iter().find_map(|x| match &x.kind {
-                        RelationKind::OnEachSideOf { target } if x.subject == r.id && at_surface(target) => {
-                            Some(target.clone())
-                        }
-                        _ => None,
+                Mount::Auto => r
+                    .near
+                    .clone()
+                    .filter(at_surface)
+                    .or_else(|| {
+                        plan.relations.iter().find_map(|x| match &x.kind {
+                            RelationKind::OnEachSideOf { target } if x.subject == r.id && at_surface(target) => {
+                                Some(target.clone())
+                            }
+                            _ => None,
+                        })
                     })
-                }),
+                    // Nothing said of where it stands, and one work surface in the scene ("a
+                    // table, two cubes, a Panda"): it works there.
+                    .or_else(|| {
+                        let mut work = plan.objects.iter().filter(|o| at_surface(&o.id));
+                        match (work.next(), work.next(), plan.relations.iter().any(|x| x.subject == r.id)) {
+                            (Some(o), None, false) => Some(o.id.clone()),
+                            _ => None,
+                        }
+                    }),
                 _ => None,
             };
             (r.id.clone(), surface)
@@ -432,8 +445,25 @@ fn shared_support(plan: &mut ScenePlan, on_floor: &[String]) {
         }
         plan.relations.extend(added);
     }
+    // Small things nothing places, in a scene whose arms all work at one surface ("a
+    // table, two cubes, a Panda on it"): the arms' work, on that surface.
+    let mut surfaces: Vec<&String> = arms.iter().filter_map(|(_, s)| s.as_ref()).collect();
+    surfaces.dedup();
+    let mut loose_work = Vec::new();
+    if let ([s], true) = (surfaces.as_slice(), arms.iter().all(|(_, x)| x.is_some())) {
+        for id in &small {
+            let said = plan.relations.iter().any(|r| &r.subject == id) || on_floor.contains(id);
+            if !said && id != *s {
+                plan.relations.push(Relation { subject: id.clone(), kind: RelationKind::On { target: (*s).clone() } });
+                loose_work.push(id.clone());
+            }
+        }
+    }
     let mut reach = Vec::new();
     for (arm, _) in &arms {
+        for id in &loose_work {
+            reach.push(Relation { subject: arm.clone(), kind: RelationKind::Reach { target: id.clone() } });
+        }
         for id in &small {
             let by_arm = plan.relations.iter().any(|r| &r.subject == id && placed_by(r).contains(arm));
             let r = Relation { subject: arm.clone(), kind: RelationKind::Reach { target: id.clone() } };

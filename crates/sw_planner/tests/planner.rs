@@ -1521,3 +1521,21 @@ fn one_of_several_robots_is_one_of_them_not_another() {
     assert_rel(&p, &group(&p, "cube").id, RelationKind::Between { first: panda.clone(), second: panda.clone() });
     assert_rel(&p, &panda, RelationKind::Reach { target: group(&p, "cube").id.clone() });
 }
+
+#[test]
+fn loose_small_things_are_the_work_of_the_only_arm_surface() {
+    // Nothing says where the cubes are: the Panda's table, within its reach.
+    let p = ok("table, two cubes, Panda");
+    let (cube, table, panda) =
+        (group(&p, "cube").id.clone(), group(&p, "table").id.clone(), robot(&p, "panda").id.clone());
+    assert_rel(&p, &cube, on(&table));
+    assert_rel(&p, &panda, RelationKind::Reach { target: cube });
+    let p = ok("a Panda on a table, a mug and a cup");
+    let table = group(&p, "table").id.clone();
+    assert_rel(&p, &group(&p, "mug").id, on(&table));
+    assert_rel(&p, &group(&p, "cup").id, on(&table));
+    // Two work surfaces and an arm that names neither: nothing is guessed.
+    let p = ok("a table, a desk, a mug and a Panda");
+    let mug = group(&p, "mug").id.clone();
+    assert!(!p.relations.iter().any(|r| r.subject == mug), "{}", dump(&p));
+}
