@@ -465,7 +465,10 @@ fn shared_support(plan: &mut ScenePlan, on_floor: &[String]) {
             reach.push(Relation { subject: arm.clone(), kind: RelationKind::Reach { target: id.clone() } });
         }
         for id in &small {
-            let by_arm = plan.relations.iter().any(|r| &r.subject == id && placed_by(r).contains(arm));
+            // What stands on the floor beside an arm is kept beside it, not hauled up to
+            // its shoulder's reach.
+            let resting = plan.relations.iter().any(|r| &r.subject == id && matches!(r.kind, RelationKind::On { .. }));
+            let by_arm = resting && plan.relations.iter().any(|r| &r.subject == id && placed_by(r).contains(arm));
             let r = Relation { subject: arm.clone(), kind: RelationKind::Reach { target: id.clone() } };
             if by_arm && !plan.relations.contains(&r) && !reach.contains(&r) {
                 reach.push(r);
