@@ -54,6 +54,9 @@ impl Vary {
     pub const NONE: Vary = Vary { colours: false, physics: false, lighting: false, camera: false };
 }
 
+/// `impratio` of an episode's scene (see `episode_scene`).
+const GRASP_IMPRATIO: f64 = 10.0;
+
 /// Writes the episode's `scene.xml` text from the package's, for `fps`, with the
 /// randomisation of `seed` applied to the `movable` bodies. Bodies in `named_colour` keep
 /// the hue the prompt named ("the red cube" stays red; only its shade varies).
@@ -69,6 +72,11 @@ pub fn episode_scene(
     let (timestep, substeps) = frame_timing(fps);
     // The shortest text that reads back as the same double.
     root.section("option").set("timestep", format!("{timestep}"));
+    // Grasping: elliptic friction cones and a high ratio of frictional to normal
+    // impedance, as MuJoCo's documentation advises for things held by friction alone —
+    // with the defaults a held ball or bottle creeps out of the pads while carried.
+    root.section("option").set("cone", "elliptic");
+    root.section("option").set("impratio", format!("{GRASP_IMPRATIO}"));
     let mut rng = Rng::derive(seed, "episode");
     let mut r = Randomisation { seed, light_scale: 1.0, ..Randomisation::default() };
     // Materials by name, for colours.

@@ -21,6 +21,8 @@ const ROT_TOL: f64 = 0.02;
 const ITERS: usize = 120;
 const DAMPING: f64 = 0.05;
 const MAX_STEP: f64 = 0.25;
+/// Two solutions closer than this (joint-space distance, rad) are the same posture.
+const DISTINCT: f64 = 0.3;
 
 /// Forward kinematics of the current qpos (positions, then the quantities the Jacobian
 /// reads).
@@ -116,4 +118,35 @@ pub(crate) fn solve_ik<M: ModelType>(
     rig.set_arm_q(data, &saved);
     fk(data);
     best.map(|(_, q)| q)
+}
+
+/// Distinct joint solutions for `t` (nearest to `near` first) from `near` and `restarts`
+/// seeded random starts over the whole joint range: the other postures of the arm (elbow
+/// up or down, wrist flipped) to try when the nearest one collides.
+pub(crate) fn solve_ik_all<M: ModelType>(
+    rig: &Rig,
+    data: &mut MjData<M>,
+    near: &[f64],
+    t: &Target,
+    restarts: usize,
+    rng: &mut Rng,
+) -> Vec<Vec<f64>> {
+    let saved = rig.arm_q(data);
+    let mut found: Vec<(f64, Vec<f64>)> = Vec::new();
+    for k in 0..=restarts {
+        let start: Vec<f64> = if k == 0 {
+            near.to_vec()
+        } else {
+            rig.arm.iter().map(|j| rng.range(j.lo.max(-std::f64::consts::PI), j.hi.min(std::f64::consts::PI))).collect()
+        };
+        let (q, ep, er) = solve_from(rig, data, &start, t);
+        if ep < POS_TOL * 2.0 && er < ROT_TOL * 2.0 && found.iter().all(|(_, f)| crate::motion::dist(f, &q) > DISTINCT) {
+            let d = crate::motion::dist(&q, near);
+            found.push((d, q));
+        }
+    }
+    rig.set_arm_q(data, &saved);
+    fk(data);
+    found.sort_by(|a, b| a.0.total_cmp(&b.0));
+    found.into_iter().map(|(_, q)| q).collect()
 }
