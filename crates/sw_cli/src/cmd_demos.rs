@@ -577,8 +577,10 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<Tried, Stop> {
         .map(|o| o.name.clone())
         .collect();
     let vary = if spec.randomise { sw_expert::Vary::ALL } else { sw_expert::Vary::NONE };
+    let focus: Vec<String> =
+        task.goals.iter().flat_map(|g| g.bodies()).map(str::to_string).filter(|b| movable.contains(b)).collect();
     let (xml, randomisation) =
-        match sw_expert::episode_scene(&package_xml, spec.fps, seed, &movable, &named_colour, vary) {
+        match sw_expert::episode_scene(&package_xml, spec.fps, seed, &movable, &named_colour, &focus, vary) {
             Ok(x) => x,
             Err(e) => return fail("scene", e.to_string(), family),
         };

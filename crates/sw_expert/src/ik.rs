@@ -140,7 +140,8 @@ pub(crate) fn solve_ik_all<M: ModelType>(
             rig.arm.iter().map(|j| rng.range(j.lo.max(-std::f64::consts::PI), j.hi.min(std::f64::consts::PI))).collect()
         };
         let (q, ep, er) = solve_from(rig, data, &start, t);
-        if ep < POS_TOL * 2.0 && er < ROT_TOL * 2.0 && found.iter().all(|(_, f)| crate::motion::dist(f, &q) > DISTINCT) {
+        if ep < POS_TOL * 2.0 && er < ROT_TOL * 2.0 && found.iter().all(|(_, f)| crate::motion::dist(f, &q) > DISTINCT)
+        {
             let d = crate::motion::dist(&q, near);
             found.push((d, q));
         }

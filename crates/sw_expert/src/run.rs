@@ -131,7 +131,13 @@ impl<'m> Runner<'m> {
         for c in self.data.contact().iter().take(ncon) {
             let b1 = model.geom_bodyid()[c.geom1 as usize] as usize;
             let b2 = model.geom_bodyid()[c.geom2 as usize] as usize;
-            let other = if b1 == body { b2 } else if b2 == body { b1 } else { continue };
+            let other = if b1 == body {
+                b2
+            } else if b2 == body {
+                b1
+            } else {
+                continue;
+            };
             if rig.hand_body[other] {
                 hand.push(other);
                 continue;

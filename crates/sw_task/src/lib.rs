@@ -250,10 +250,22 @@ mod tests {
         assert_eq!(imperative("sorting the cubes into the bins."), "sort the cubes into the bins");
         // The task after a dash, a colon or a label; the scene without the joint.
         for (prompt, scene) in [
-            ("a UR5e on a bench with a tin and a crate — drop the tin into the crate", "a UR5e on a bench with a tin and a crate"),
-            ("a UR5e on a bench with a tin and a crate - drop the tin into the crate", "a UR5e on a bench with a tin and a crate"),
-            ("a UR5e on a bench with a tin and a crate: drop the tin into the crate", "a UR5e on a bench with a tin and a crate"),
-            ("a UR5e on a bench with a tin and a crate. Task: drop the tin into the crate.", "a UR5e on a bench with a tin and a crate"),
+            (
+                "a UR5e on a bench with a tin and a crate — drop the tin into the crate",
+                "a UR5e on a bench with a tin and a crate",
+            ),
+            (
+                "a UR5e on a bench with a tin and a crate - drop the tin into the crate",
+                "a UR5e on a bench with a tin and a crate",
+            ),
+            (
+                "a UR5e on a bench with a tin and a crate: drop the tin into the crate",
+                "a UR5e on a bench with a tin and a crate",
+            ),
+            (
+                "a UR5e on a bench with a tin and a crate. Task: drop the tin into the crate.",
+                "a UR5e on a bench with a tin and a crate",
+            ),
         ] {
             let s = split_prompt(prompt).unwrap_or_else(|| panic!("{prompt}"));
             assert_eq!((s.scene.as_str(), s.instruction.as_str()), (scene, "drop the tin into the crate"), "{prompt}");

@@ -99,7 +99,10 @@ fn noun_phrase(words: &[String]) -> Option<NounPhrase> {
         }
     }
     // "pick the cube up": a trailing particle.
-    while ws.last().is_some_and(|w| matches!(*w, "up" | "away" | "over" | "down" | "please" | "carefully" | "too" | "also")) {
+    while ws
+        .last()
+        .is_some_and(|w| matches!(*w, "up" | "away" | "over" | "down" | "please" | "carefully" | "too" | "also"))
+    {
         ws.pop();
     }
     if ws.is_empty() {
@@ -170,7 +173,10 @@ pub(crate) fn read(instruction: &str) -> Result<Vec<Clause>, TaskError> {
         let side = rel_found.and_then(|(i, _, n)| {
             seg[i..i + n].iter().find_map(|w| {
                 let w = if w == "behind" { "back" } else { w.as_str() };
-                REGIONS.iter().find(|(name, r)| *name == w && !matches!(r, Region::Centre | Region::Corner)).map(|x| x.1)
+                REGIONS
+                    .iter()
+                    .find(|(name, r)| *name == w && !matches!(r, Region::Centre | Region::Corner))
+                    .map(|x| x.1)
             })
         });
         let antecedent = last_subjects.first().or(pending.first());
@@ -225,7 +231,8 @@ pub(crate) fn read(instruction: &str) -> Result<Vec<Clause>, TaskError> {
         };
         // "…, then the green one too": no verb and no place — the clause before's, again.
         let (mut rel, mut region, mut side) = (rel, region, side);
-        if verb_at.is_none() && rel.is_none()
+        if verb_at.is_none()
+            && rel.is_none()
             && let Some(prev) = out.last()
         {
             (rel, target, region, side) = (prev.rel, prev.target.clone(), prev.region, prev.side);
