@@ -112,6 +112,7 @@ def main(argv: list[str]) -> int:
     ap.add_argument("nouns")
     ap.add_argument("--bin", default=None, help="the scenewright binary (default: target/release, else target/debug)")
     ap.add_argument("--json", default=None, help="write every noun's outcome here")
+    ap.add_argument("--summary", action="store_true", help="no per-noun lines (for a held-out list)")
     args = ap.parse_args(argv)
     binary = args.bin or next(
         (
@@ -163,7 +164,7 @@ def main(argv: list[str]) -> int:
         by[f"tag {r['tag'] or '-'}"][r["outcome"]] += 1
     for key in sorted(by):
         print(f"  {key:18s} " + " ".join(f"{k} {n}" for k, n in by[key].most_common()))
-    for r in things:
+    for r in [] if args.summary else things:
         if r["outcome"] in ("silent_substitute", "wrong_kind_warned", "dropped", "error"):
             tail = r["stderr"][-100:] if r["outcome"] == "error" else ""
             print(f"  {r['outcome']}: {r['noun']!r} -> {r['categories']} {tail}")
