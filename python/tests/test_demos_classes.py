@@ -29,7 +29,8 @@ CLASSES = {
     "one_reference": "a Panda on a table with a red cube, a green cube and a bowl — "
     "put the red cube in the bowl, then the green one too",
     # A robot in brackets, the task after a colon, "the other".
-    "bracket_robot": "[Kinova Gen3] a table with a yellow cube and a blue cube: stack the yellow cube on the other cube",
+    "bracket_robot": "[Kinova Gen3] a table with a yellow cube and a blue cube: "
+    "stack the yellow cube on the other cube",
 }
 
 
