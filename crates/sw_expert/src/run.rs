@@ -158,12 +158,18 @@ impl<'m> Runner<'m> {
         let touching: Vec<String> =
             touching.into_iter().chain((!hand.is_empty()).then(|| "the fingers".to_string())).collect();
         let frame = self.rec.actions.len();
+        // Each finger's travel from closed, and the gripper's control: closed on nothing, or
+        // opened under it.
+        let travel: Vec<String> =
+            rig.finger_qpos.iter().map(|&a| format!("{:.0}", 1000.0 * self.data.qpos()[a])).collect();
         format!(
-            "{} left the hand while carried ({:.0} mm off at {:.1} s{})",
+            "{} left the hand while carried ({:.0} mm off at {:.1} s{}; fingers at {} mm, control {:.3})",
             name(body),
             drift * 1000.0,
             frame as f64 / f64::from(self.fps),
-            if touching.is_empty() { String::new() } else { format!(", touching {}", touching.join(", ")) }
+            if touching.is_empty() { String::new() } else { format!(", touching {}", touching.join(", ")) },
+            travel.join("/"),
+            self.ctrl[rig.grip_act]
         )
     }
 
