@@ -11,10 +11,11 @@ where the task's objects and targets are and how far each is from the tool, the 
 progress) to the action (the actuator controls held for one frame), as the expert recorded
 them; a joint's target as its step from the joint's position. The observations are read
 from MuJoCo while the recorded actions are replayed, the same way the rollouts read them,
-and in the robot's own frame: every episode is a new layout. It is trained on all but the last `--holdout` episodes and rolled
-out from the start of each held-out episode's scene (a layout it has not seen) in plain
-MuJoCo; success is the task's predicates (`scenewright.tasks`) at the end. A random policy
-(controls drawn within the recorded ranges) is rolled out from the same starts.
+and in the robot's own frame: every episode is a new layout. It is trained on all but the
+last `--holdout` episodes and rolled out from the start of each held-out episode's scene (a
+layout it has not seen) in plain MuJoCo; success is the task's predicates
+(`scenewright.tasks`) at the end. A random policy (controls drawn within the recorded
+ranges) is rolled out from the same starts.
 """
 
 from __future__ import annotations
