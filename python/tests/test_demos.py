@@ -9,6 +9,7 @@ import json
 import os
 import subprocess
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -126,3 +127,45 @@ def test_bad_input_is_one_line_and_exit_2(tmp_path: Path) -> None:
     (foreign / "notes.txt").write_text("mine")
     r = demos(foreign, "--prompt", PICK, "--episodes", "1")
     assert r.returncode == 2 and "not a scenewright demonstrations dataset" in r.stderr
+
+
+class Replay:
+    """A policy that plays recorded actions back, holding the last one."""
+
+    def __init__(self, actions: Any) -> None:
+        self.actions, self.t = actions, 0
+
+    def __call__(self, _obs: Any) -> Any:
+        a = self.actions[min(self.t, len(self.actions) - 1)]
+        self.t += 1
+        return a
+
+
+def test_the_behaviour_cloning_example_reads_and_rolls_out_what_it_trains_on(pick: tuple[Path, dict]) -> None:
+    """The BC example's own harness: its observations replayed with the recorded actions solve
+    every episode (so a policy's rollout is judged the way the expert's was), they have one
+    width in every episode, and a tiny training run completes."""
+    pytest.importorskip("pyarrow")
+    import importlib.util
+    import sys
+
+    import numpy as np
+
+    path = Path(__file__).resolve().parent.parent / "examples" / "train_bc.py"
+    spec = importlib.util.spec_from_file_location("train_bc", path)
+    assert spec and spec.loader
+    bc = importlib.util.module_from_spec(spec)
+    sys.modules["train_bc"] = bc
+    spec.loader.exec_module(bc)
+    out, _ = pick
+    eps = list(Demos(out).episodes())
+    horizon = int(1.2 * max(len(ep.frames()["action"]) for ep in eps))
+    widths = set()
+    for ep in eps:
+        xs, ys = bc.demonstrations(ep, horizon)
+        widths.add(len(xs[0]))
+        assert bc.rollout(ep, Replay(np.asarray(ys)), horizon), ep.index
+    assert len(widths) == 1, widths
+    xs, ys = bc.demonstrations(eps[0], horizon)
+    mlp = bc.Mlp.new(len(xs[0]), len(ys[0]), 16, np.random.default_rng(0))
+    assert np.isfinite(mlp.fit(np.asarray(xs), np.asarray(ys), 2, np.random.default_rng(0)))

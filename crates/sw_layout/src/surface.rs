@@ -412,93 +412,151 @@ fn try_surface(
         yaws = if along_x == wide_x { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
     }
     let from_right = ctx.rng.chance(0.5);
-    for local_yaw in yaws {
-        let rotated = local_yaw != 0.0;
-        let (ex, ey) = if rotated {
-            (0.5 * (b.max[1] - b.min[1]), 0.5 * (b.max[0] - b.min[0]))
-        } else {
-            (0.5 * (b.max[0] - b.min[0]), 0.5 * (b.max[1] - b.min[1]))
-        };
-        let m = 0.005;
-        let (x0, x1) = (surf.min[0] + ex + m, surf.max[0] - ex - m);
-        let (y0, y1) = (surf.min[1] + ey + m, surf.max[1] - ey - m);
-        if x1 < x0 || y1 < y0 {
+    // Where it is said to stand by something placed ("a plate next to the toaster", "blocks
+    // in front of the Panda"): the grid is tried nearest that first, and only spots that
+    // keep those relations until none does.
+    let group = ctx.input.objects[idx].group.clone();
+    let by: Vec<RelationKind> = ctx
+        .relations(&group)
+        .into_iter()
+        .filter(|r| {
+            matches!(
+                r,
+                RelationKind::NextTo { .. }
+                    | RelationKind::Near { .. }
+                    | RelationKind::InFrontOf { .. }
+                    | RelationKind::Behind { .. }
+            ) && r.targets().first().is_some_and(|t| !crate::relate::bodies(ctx, t).is_empty())
+        })
+        .cloned()
+        .collect();
+    let aims: Vec<[f64; 2]> = by
+        .iter()
+        .flat_map(|r| {
+            let sign = match r {
+                RelationKind::InFrontOf { .. } => 1.0,
+                RelationKind::Behind { .. } => -1.0,
+                _ => 0.0,
+            };
+            let t = r.targets().first().map(|t| t.to_string()).unwrap_or_default();
+            crate::relate::bodies(ctx, &t)
+                .into_iter()
+                .map(|(_, b)| {
+                    let (c, f) = (b.center(), b.front);
+                    let d = b.half_along([f[0] * sign, f[1] * sign]) + 0.15;
+                    [c[0] + sign * f[0] * d, c[1] + sign * f[1] * d]
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    for strict in [true, false] {
+        if strict && by.is_empty() {
             continue;
         }
-        // Offset of the item's origin from its footprint centre, in the surface frame.
-        let (cx, cy) = (0.5 * (b.min[0] + b.max[0]), 0.5 * (b.min[1] + b.max[1]));
-        let (ox, oy) = if rotated { (-cy, cx) } else { (cx, cy) };
-        let nx = ((x1 - x0) / STEP).floor() as usize;
-        let ny = ((y1 - y0) / STEP).floor() as usize;
-        let mut grid: Vec<(f64, f64)> = Vec::with_capacity((nx + 1) * (ny + 1));
-        for j in 0..=ny {
-            for i in 0..=nx {
-                let x = if from_right { x1 - i as f64 * STEP } else { x0 + i as f64 * STEP };
-                grid.push((x, y0 + j as f64 * STEP));
-            }
-        }
-        if !between.is_empty() {
-            // Between two arms: packed from the middle of the line between them outwards,
-            // so that each end stays within the reach of its arm.
-            let mids: Vec<[f64; 2]> = between
-                .iter()
-                .map(|(a, b)| {
-                    let (ca, cb) = (a.center(), b.center());
-                    [0.5 * (ca[0] + cb[0]), 0.5 * (ca[1] + cb[1])]
-                })
-                .collect();
-            let key = |p: &(f64, f64)| {
-                let w = host_spot.apply([p.0, p.1, 0.0]);
-                mids.iter().map(|m| (w[0] - m[0]).hypot(w[1] - m[1])).fold(f64::INFINITY, f64::min)
+        for local_yaw in yaws {
+            let rotated = local_yaw != 0.0;
+            let (ex, ey) = if rotated {
+                (0.5 * (b.max[1] - b.min[1]), 0.5 * (b.max[0] - b.min[0]))
+            } else {
+                (0.5 * (b.max[0] - b.min[0]), 0.5 * (b.max[1] - b.min[1]))
             };
-            grid.sort_by(|a, b| key(a).total_cmp(&key(b)));
-        }
-        {
-            for (x, y) in grid {
-                if edge && (x - surf.min[0]).min(surf.max[0] - x).min(y - surf.min[1]).min(surf.max[1] - y) > EDGE {
-                    continue;
+            let m = 0.005;
+            let (x0, x1) = (surf.min[0] + ex + m, surf.max[0] - ex - m);
+            let (y0, y1) = (surf.min[1] + ey + m, surf.max[1] - ey - m);
+            if x1 < x0 || y1 < y0 {
+                continue;
+            }
+            // Offset of the item's origin from its footprint centre, in the surface frame.
+            let (cx, cy) = (0.5 * (b.min[0] + b.max[0]), 0.5 * (b.min[1] + b.max[1]));
+            let (ox, oy) = if rotated { (-cy, cx) } else { (cx, cy) };
+            let nx = ((x1 - x0) / STEP).floor() as usize;
+            let ny = ((y1 - y0) / STEP).floor() as usize;
+            let mut grid: Vec<(f64, f64)> = Vec::with_capacity((nx + 1) * (ny + 1));
+            for j in 0..=ny {
+                for i in 0..=nx {
+                    let x = if from_right { x1 - i as f64 * STEP } else { x0 + i as f64 * STEP };
+                    grid.push((x, y0 + j as f64 * STEP));
                 }
-                if let Some(up) = side {
-                    // In the outer part of the half towards one long edge.
-                    let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
-                    let (hx, hy) = (0.5 * (surf.max[0] - surf.min[0]), 0.5 * (surf.max[1] - surf.min[1]));
-                    let (across, half, along, half_along) =
-                        if hx >= hy { (y - cy, hy, x - cx, hx) } else { (x - cx, hx, y - cy, hy) };
-                    let off = if up { across } else { -across };
-                    // On that side as seen from the middle (not nearer an end than the edge).
-                    if off < 0.3 * half || along.abs() / half_along >= off / half {
+            }
+            if !between.is_empty() {
+                // Between two arms: packed from the middle of the line between them outwards,
+                // so that each end stays within the reach of its arm.
+                let mids: Vec<[f64; 2]> = between
+                    .iter()
+                    .map(|(a, b)| {
+                        let (ca, cb) = (a.center(), b.center());
+                        [0.5 * (ca[0] + cb[0]), 0.5 * (ca[1] + cb[1])]
+                    })
+                    .collect();
+                let key = |p: &(f64, f64)| {
+                    let w = host_spot.apply([p.0, p.1, 0.0]);
+                    mids.iter().map(|m| (w[0] - m[0]).hypot(w[1] - m[1])).fold(f64::INFINITY, f64::min)
+                };
+                grid.sort_by(|a, b| key(a).total_cmp(&key(b)));
+            } else if !aims.is_empty() {
+                let key = |p: &(f64, f64)| {
+                    let w = host_spot.apply([p.0, p.1, 0.0]);
+                    aims.iter().map(|m| (w[0] - m[0]).hypot(w[1] - m[1])).fold(f64::INFINITY, f64::min)
+                };
+                grid.sort_by(|a, b| key(a).total_cmp(&key(b)));
+            }
+            {
+                for (x, y) in grid {
+                    if edge && (x - surf.min[0]).min(surf.max[0] - x).min(y - surf.min[1]).min(surf.max[1] - y) > EDGE {
                         continue;
                     }
-                }
-                let rect = [x - ex, y - ey, x + ex, y + ey];
-                let used = ctx.surface_use.get(&host).and_then(|u| u.get(si));
-                if used.is_some_and(|u| u.iter().any(|r| rects_overlap(r, &rect, SURFACE_GAP))) {
-                    continue;
-                }
-                if !between.is_empty() {
-                    // Its centre on the line between two arms (inside the hull of their bases).
-                    let c = host_spot.apply([x, y, surf.z]);
-                    if !between.iter().any(|(a, b)| crate::relate::in_hull(a, b, [c[0], c[1]])) {
+                    if let Some(up) = side {
+                        // In the outer part of the half towards one long edge.
+                        let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
+                        let (hx, hy) = (0.5 * (surf.max[0] - surf.min[0]), 0.5 * (surf.max[1] - surf.min[1]));
+                        let (across, half, along, half_along) =
+                            if hx >= hy { (y - cy, hy, x - cx, hx) } else { (x - cx, hx, y - cy, hy) };
+                        let off = if up { across } else { -across };
+                        // On that side as seen from the middle (not nearer an end than the edge).
+                        if off < 0.3 * half || along.abs() / half_along >= off / half {
+                            continue;
+                        }
+                    }
+                    let rect = [x - ex, y - ey, x + ex, y + ey];
+                    let used = ctx.surface_use.get(&host).and_then(|u| u.get(si));
+                    if used.is_some_and(|u| u.iter().any(|r| rects_overlap(r, &rect, SURFACE_GAP))) {
                         continue;
                     }
-                }
-                if !arms.is_empty() {
-                    let centre = host_spot.apply([x, y, surf.z + 0.5 * height]);
-                    let ok = |(base, r): &([f64; 3], f64)| reach::reaches(*base, *r, centre);
-                    if !(if all { arms.iter().all(ok) } else { arms.iter().any(ok) }) {
+                    if !between.is_empty() {
+                        // Its centre on the line between two arms (inside the hull of their bases).
+                        let c = host_spot.apply([x, y, surf.z]);
+                        if !between.iter().any(|(a, b)| crate::relate::in_hull(a, b, [c[0], c[1]])) {
+                            continue;
+                        }
+                    }
+                    if !arms.is_empty() {
+                        let centre = host_spot.apply([x, y, surf.z + 0.5 * height]);
+                        let ok = |(base, r): &([f64; 3], f64)| reach::reaches(*base, *r, centre);
+                        if !(if all { arms.iter().all(ok) } else { arms.iter().any(ok) }) {
+                            continue;
+                        }
+                    }
+                    let origin = host_spot.apply([x - ox, y - oy, surf.z - b.min[2]]);
+                    let spot = Spot::new(origin[0], origin[1], origin[2], host_spot.yaw + local_yaw);
+                    let boxes = spot.boxes(&ctx.local[idx]);
+                    if !ctx.space.fits(&boxes, 0.004, &[], false, &[]) {
                         continue;
                     }
+                    if strict {
+                        let body = crate::relate::Body::object(&ctx.local[idx], &spot);
+                        let n = ctx.instances(&group).len();
+                        if !by
+                            .iter()
+                            .all(|r| crate::relate::Check::new(ctx, r).in_group(ctx, &group).holds(ctx, &body, n))
+                        {
+                            continue;
+                        }
+                    }
+                    ctx.commit(idx, spot, Support::Object { object: host_name, surface: surf.name.clone() });
+                    let nsurf = ctx.input.objects[host].asset.surfaces.len();
+                    ctx.surface_use.entry(host).or_insert_with(|| vec![Vec::new(); nsurf])[si].push(rect);
+                    return true;
                 }
-                let origin = host_spot.apply([x - ox, y - oy, surf.z - b.min[2]]);
-                let spot = Spot::new(origin[0], origin[1], origin[2], host_spot.yaw + local_yaw);
-                let boxes = spot.boxes(&ctx.local[idx]);
-                if !ctx.space.fits(&boxes, 0.004, &[], false, &[]) {
-                    continue;
-                }
-                ctx.commit(idx, spot, Support::Object { object: host_name, surface: surf.name.clone() });
-                let nsurf = ctx.input.objects[host].asset.surfaces.len();
-                ctx.surface_use.entry(host).or_insert_with(|| vec![Vec::new(); nsurf])[si].push(rect);
-                return true;
             }
         }
     }

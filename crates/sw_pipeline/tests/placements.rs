@@ -328,3 +328,59 @@ fn two_pandas_on_either_side_of_a_table_share_its_items() {
         {"subject": "panda", "relation": "reach", "target": "table"}]});
     check("two-pandas", &p, line);
 }
+
+/// From a prompt: the offline reader's plan through the pipeline, judged as above.
+fn check_prompt(name: &str, prompt: &str, line: Value) {
+    let p = sw_planner::plan(prompt).unwrap_or_else(|e| panic!("{prompt:?}: {e}"));
+    let f = run(name, &p, &line, &[1, 2, 3]);
+    assert!(f.is_empty(), "{prompt:?}: {} failures:\n{}", f.len(), f.join("\n"));
+}
+
+#[test]
+fn arms_said_to_be_on_opposite_sides_stand_on_opposite_sides_and_reach_the_bins() {
+    check_prompt(
+        "prompt-two-arms",
+        "put two UR5e arms on opposite sides of a 2.4 m workbench with three bins between them",
+        json!({"counts": {"workbench": 1, "bin": 3}, "robots": {"ur5e": 2}, "relations": [
+            {"subject": "ur5e", "relation": "on_each_side_of", "target": "workbench"},
+            {"subject": "bin", "relation": "between", "target": "ur5e"},
+            {"subject": "ur5e", "relation": "reach", "target": "bin"}]}),
+    );
+}
+
+#[test]
+fn things_placed_by_a_mounted_arm_rest_on_its_table_within_reach() {
+    check_prompt(
+        "prompt-arm-work",
+        "A TABLE, A PANDA ON THE TABLE, 3 BLOCKS NEXT TO THE PANDA",
+        json!({"counts": {"table": 1, "cube": 3}, "robots": {"panda": 1}, "relations": [
+            {"subject": "panda", "relation": "on", "target": "table"},
+            {"subject": "cube", "relation": "on", "target": "table"},
+            {"subject": "panda", "relation": "reach", "target": "cube"}]}),
+    );
+}
+
+#[test]
+fn two_arms_at_the_ends_of_a_table_both_reach_what_lies_between_them() {
+    check_prompt(
+        "prompt-two-ends",
+        "two Pandas on a 2 m table with a cube between them",
+        json!({"counts": {"table": 1, "cube": 1}, "robots": {"panda": 2}, "relations": [
+            {"subject": "panda", "relation": "on", "target": "table"},
+            {"subject": "cube", "relation": "on", "target": "table"},
+            {"subject": "cube", "relation": "between", "target": "panda"},
+            {"subject": "panda", "relation": "reach", "target": "cube"}]}),
+    );
+}
+
+#[test]
+fn a_small_thing_beside_something_on_the_counter_is_on_the_counter() {
+    check_prompt(
+        "prompt-shared-support",
+        "kitchen with a toaster on the counter and a plate next to it",
+        json!({"counts": {"counter": 1, "toaster": 1, "plate": 1}, "robots": {}, "relations": [
+            {"subject": "toaster", "relation": "on", "target": "counter"},
+            {"subject": "plate", "relation": "on", "target": "counter"},
+            {"subject": "plate", "relation": "next_to", "target": "toaster"}]}),
+    );
+}

@@ -311,6 +311,7 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         }
     }
     plan.relations = resolved;
+    shared_support(&mut plan, &d.on_floor);
 
     plan.understanding.approximated = approximated;
     plan.understanding.not_understood = leftovers
@@ -323,6 +324,158 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
     drop_invalid_relations(&mut plan);
     plan.validate().map_err(|e| PlannerError::InvalidSize(e.to_string()))?;
     Ok(plan)
+}
+
+/// Small things placed by something that rests on a surface rest on it too ("a toaster
+/// on the counter and a plate next to it", "a hob set into the worktop with a kettle
+/// beside it", "a Panda on the table, three blocks in front of the Panda"), unless said
+/// to rest elsewhere; and an arm reaches the small things placed by it.
+fn shared_support(plan: &mut ScenePlan, on_floor: &[String]) {
+    let arms: Vec<(String, Option<String>)> = plan
+        .robots
+        .iter()
+        .filter(|r| sw_robots::find(&r.model).is_some_and(|d| d.kind == sw_robots::RobotKind::Arm))
+        .map(|r| {
+            // The surface it stands on, else the work surface it stands at ("two arms on
+            // opposite sides of the bench with bins between them": the bins are on the bench).
+            let at_surface = |id: &String| {
+                plan.objects.iter().find(|o| &o.id == id).and_then(|o| sw_catalog::find(&o.category)).is_some_and(|c| {
+                    c.has_tag("surface") && !c.has_tag("seating") && c.placement != sw_catalog::PlacementKind::OnSurface
+                })
+            };
+            let surface = match &r.mount {
+                Mount::OnSurface { target } if !target.starts_with('@') => Some(target.clone()),
+                Mount::Auto => r
+                    .near
+                    .clone()
+                    .filter(at_surface)
+                    .or_else(|| {
+                        plan.relations.iter().find_map(|x| match &x.kind {
+                            RelationKind::OnEachSideOf { target } if x.subject == r.id && at_surface(target) => {
+                                Some(target.clone())
+                            }
+                            _ => None,
+                        })
+                    })
+                    // Nothing said of where it stands, and one work surface in the scene ("a
+                    // table, two cubes, a Panda"): it works there.
+                    .or_else(|| {
+                        let mut work = plan.objects.iter().filter(|o| at_surface(&o.id));
+                        match (work.next(), work.next(), plan.relations.iter().any(|x| x.subject == r.id)) {
+                            (Some(o), None, false) => Some(o.id.clone()),
+                            _ => None,
+                        }
+                    }),
+                _ => None,
+            };
+            (r.id.clone(), surface)
+        })
+        .collect();
+    let small: Vec<String> = plan
+        .objects
+        .iter()
+        .filter(|o| match &o.proxy {
+            Some(p) => p.movable,
+            None => sw_catalog::find(&o.category).is_some_and(|c| c.placement == sw_catalog::PlacementKind::OnSurface),
+        })
+        .map(|o| o.id.clone())
+        .collect();
+    let is_object = |id: &str| plan.objects.iter().any(|o| o.id == id);
+    // The targets a subject is placed by.
+    let placed_by = |r: &Relation| -> Vec<String> {
+        match &r.kind {
+            RelationKind::NextTo { target }
+            | RelationKind::Near { target }
+            | RelationKind::InFrontOf { target }
+            | RelationKind::Behind { target }
+            | RelationKind::Around { target }
+            | RelationKind::OnEachSideOf { target } => vec![target.clone()],
+            RelationKind::Between { first, second } if first == second => vec![first.clone()],
+            RelationKind::Between { first, second } => vec![first.clone(), second.clone()],
+            _ => Vec::new(),
+        }
+    };
+    let support = |rels: &[Relation], id: &str| -> Option<String> {
+        if let Some((_, s)) = arms.iter().find(|(a, _)| a == id) {
+            return s.clone();
+        }
+        rels.iter().find_map(|r| match &r.kind {
+            RelationKind::On { target } | RelationKind::SetInto { target } if r.subject == id && is_object(target) => {
+                Some(target.clone())
+            }
+            _ => None,
+        })
+    };
+    let rests = |rels: &[Relation], id: &str| {
+        rels.iter().any(|r| {
+            r.subject == id
+                && matches!(
+                    r.kind,
+                    RelationKind::On { .. }
+                        | RelationKind::Inside { .. }
+                        | RelationKind::SetInto { .. }
+                        | RelationKind::Under { .. }
+                        | RelationKind::Loaded { .. }
+                        | RelationKind::Stacked { .. }
+                        | RelationKind::Leaning { .. }
+                        | RelationKind::AgainstWall { .. }
+                )
+        })
+    };
+    // Chains ("a kettle on the worktop, a mug by the kettle, a spoon by the mug") settle in
+    // as many rounds as there are small groups.
+    for _ in 0..small.len() {
+        let mut added = Vec::new();
+        for id in &small {
+            if rests(&plan.relations, id) || on_floor.contains(id) {
+                continue;
+            }
+            // All the things it is placed by share one surface.
+            let targets: Vec<String> = plan.relations.iter().filter(|r| &r.subject == id).flat_map(placed_by).collect();
+            let surfaces: Vec<Option<String>> = targets.iter().map(|t| support(&plan.relations, t)).collect();
+            if let Some(Some(s)) = surfaces.first()
+                && surfaces.iter().all(|x| x.as_ref() == Some(s))
+                && s != id
+            {
+                added.push(Relation { subject: id.clone(), kind: RelationKind::On { target: s.clone() } });
+            }
+        }
+        if added.is_empty() {
+            break;
+        }
+        plan.relations.extend(added);
+    }
+    // Small things nothing places, in a scene whose arms all work at one surface ("a
+    // table, two cubes, a Panda on it"): the arms' work, on that surface.
+    let mut surfaces: Vec<&String> = arms.iter().filter_map(|(_, s)| s.as_ref()).collect();
+    surfaces.dedup();
+    let mut loose_work = Vec::new();
+    if let ([s], true) = (surfaces.as_slice(), arms.iter().all(|(_, x)| x.is_some())) {
+        for id in &small {
+            let said = plan.relations.iter().any(|r| &r.subject == id) || on_floor.contains(id);
+            if !said && id != *s {
+                plan.relations.push(Relation { subject: id.clone(), kind: RelationKind::On { target: (*s).clone() } });
+                loose_work.push(id.clone());
+            }
+        }
+    }
+    let mut reach = Vec::new();
+    for (arm, _) in &arms {
+        for id in &loose_work {
+            reach.push(Relation { subject: arm.clone(), kind: RelationKind::Reach { target: id.clone() } });
+        }
+        for id in &small {
+            // What stands on the floor beside an arm is kept beside it, not hauled up to
+            // its shoulder's reach.
+            let resting = plan.relations.iter().any(|r| &r.subject == id && matches!(r.kind, RelationKind::On { .. }));
+            let by_arm = resting && plan.relations.iter().any(|r| &r.subject == id && placed_by(r).contains(arm));
+            let r = Relation { subject: arm.clone(), kind: RelationKind::Reach { target: id.clone() } };
+            if by_arm && !plan.relations.contains(&r) && !reach.contains(&r) {
+                reach.push(r);
+            }
+        }
+    }
+    plan.relations.extend(reach);
 }
 
 /// A relation the contract cannot state (a stack of robots, the end of a robot's row) is

@@ -38,6 +38,8 @@ pub(crate) struct Draft {
     /// `@robot:N`.
     pub robot_relations: Vec<(usize, RelationKind)>,
     pub approximated: Vec<Approximation>,
+    /// Groups said to stand on the floor ("a basket on the floor").
+    pub on_floor: Vec<String>,
 }
 
 /// How a group's count follows from another group's.
@@ -728,6 +730,17 @@ impl<'a> Parser<'a> {
                 // "the robot", "the arm": the robot already introduced.
                 if self.is_definite(start)
                     && let Some(idx) = self.resolve_robot(word.wants, word.kind, !word.exact)
+                {
+                    self.bind(Subject::Robot(idx));
+                    return;
+                }
+                // "two Pandas …, one robot at each side": one of the robots already named
+                // (each in turn), not another robot.
+                if !word.exact
+                    && matches!(self.word(start), "one" | "each")
+                    && p.count.is_none_or(|c| c <= 1.0)
+                    && let Some(idx) =
+                        self.draft.robots.iter().rposition(|r| r.plural || r.count.is_some_and(|c| c >= 2.0))
                 {
                     self.bind(Subject::Robot(idx));
                     return;

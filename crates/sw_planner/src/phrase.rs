@@ -389,6 +389,16 @@ impl Phrases<'_> {
         best.map(|(_, _, m)| m.clone())
     }
 
+    /// Whether `word` is a head noun of the same length and first letter with one letter
+    /// changed or two swapped ("chiar"): a typo, not a new noun. A letter more or less
+    /// makes another word as often as a typo ("balance" / "balancer", "sauce" / "saucer").
+    fn near_typo(&self, word: &str) -> bool {
+        word.chars().count() >= 5
+            && self.lex.head_words().any(|(w, _)| {
+                w.chars().next() == word.chars().next() && w.len() == word.len() && typo_distance(word, w) <= 1
+            })
+    }
+
     /// The category a noun's category is in the room named so far.
     fn room_sense(&self, cat: &'static str) -> &'static str {
         let Some(room) = self.room else { return cat };
@@ -488,7 +498,8 @@ impl Phrases<'_> {
     /// A count, modifiers and a head noun starting at `i`.
     pub fn noun_phrase(&self, i: usize, allow_unknown: bool, bare: Bare) -> Result<Option<NounPhrase>, PlannerError> {
         let mut j = i;
-        let quantity = quantity_at(self.toks, j);
+        // A number with a unit is a length ("a 1.2 m table"), never a count.
+        let quantity = quantity_at(self.toks, j).filter(|_| !matches!(self.length_at(j), Some((_, _, true))));
         if let Some(q) = quantity {
             j += q.len;
         }
@@ -545,7 +556,10 @@ impl Phrases<'_> {
         }
         let has_modifier = count.is_some() || color.is_some() || !sizes.is_empty() || !explicit.is_empty();
         let nouns = self.nouns_at(j, count.is_some());
-        let Some((head, head_at, head_len, mods)) = self.pick_head(&nouns, allow_unknown, has_modifier, bare) else {
+        let counted_plural = count.is_some_and(|c| c > 1.0);
+        let Some((head, head_at, head_len, mods)) =
+            self.pick_head(&nouns, allow_unknown, has_modifier, counted_plural, bare)
+        else {
             return Ok(None);
         };
         let mut descriptors = Vec::new();
@@ -560,6 +574,13 @@ impl Phrases<'_> {
         let mut end = head_at + head_len;
         let last = self.word(end - 1).to_string();
         let plural = singular(&last) != last;
+        // "a two post lift", "a four burner hob": a number before a run of singular nouns
+        // names a kind of the last one; it counts nothing.
+        let names_kind = count.is_some_and(|c| c > 1.0)
+            && !plural
+            && head_at + head_len >= j + 2
+            && (j..head_at + head_len).all(|k| singular(self.word(k)) == self.word(k));
+        let (count, quantity) = if names_kind { (None, None) } else { (count, quantity) };
         let head = match head {
             Head::Unknown(label) => {
                 let words: Vec<&str> = label.split(' ').collect();
@@ -627,6 +648,7 @@ impl Phrases<'_> {
         nouns: &[Noun],
         allow_unknown: bool,
         has_modifier: bool,
+        counted_plural: bool,
         bare: Bare,
     ) -> Option<(Head, usize, usize, Vec<Noun>)> {
         let last_known = nouns.iter().rposition(|n| matches!(n, Noun::Known(..) | Noun::Place(..)));
@@ -657,7 +679,51 @@ impl Phrases<'_> {
                     }
                     _ => false,
                 };
-                modifier_noun && allow_unknown && self.boundary(tail_end)
+                // English compounds are right-headed: a singular known noun before one unknown
+                // noun names a kind of it ("tomato sauce", "tyre changer", "fridge magnet"),
+                // when the unknown word agrees in number with the phrase's count (after "a
+                // mug", "sits" is a verb) and is no typo of a known noun.
+                let open_compound = match (&nouns[k], unknown_tail.as_slice()) {
+                    (Noun::Known(Meaning::Category(_), s, l), [w]) if k + 2 == nouns.len() => {
+                        let modifier = self.word(s + l - 1);
+                        let tail = self.word(*w);
+                        let tail_plural = singular(tail) != tail;
+                        // "a cube out of reach", "the lid off": a particle, not a noun.
+                        let particle = matches!(
+                            tail,
+                            "out"
+                                | "up"
+                                | "down"
+                                | "off"
+                                | "away"
+                                | "over"
+                                | "back"
+                                | "aside"
+                                | "apart"
+                                | "together"
+                                | "closer"
+                                | "nearer"
+                                | "further"
+                                | "farther"
+                                | "upright"
+                                | "open"
+                                | "shut"
+                                | "closed"
+                        );
+                        !particle
+                            && singular(modifier) == modifier
+                            && tail_plural == counted_plural
+                            && !self.near_typo(&singular(tail))
+                            && matches!(nouns[k + 1], Noun::Unknown(_))
+                    }
+                    _ => false,
+                };
+                // A word after the noun followed by a determiner or a count is a verb ("a
+                // mobile robot brings a shelf"), not the head of a compound.
+                (modifier_noun || open_compound)
+                    && allow_unknown
+                    && self.boundary(tail_end)
+                    && !self.starts_object(tail_end)
             };
             // "the table edge" is a place of the table; "desks back to back" is desks.
             if let (Noun::Place(..), Some(Noun::Known(_, ps, pl))) = (&nouns[k], k.checked_sub(1).map(|p| &nouns[p])) {
@@ -728,6 +794,16 @@ impl Phrases<'_> {
             return None;
         }
         Some((Head::Unknown(self.label(first, end)), first, end - first, Vec::new()))
+    }
+
+    /// Whether a determiner, possessive or count starts at `i`: what follows a verb, never
+    /// a noun phrase's head.
+    fn starts_object(&self, i: usize) -> bool {
+        quantity_at(self.toks, i).is_some()
+            || matches!(
+                self.word(i),
+                "the" | "its" | "their" | "these" | "those" | "his" | "her" | "my" | "our" | "your"
+            )
     }
 
     /// Words `from..to` lowercase, the last singular: a proxy's label.

@@ -1389,3 +1389,153 @@ fn snapshot_kitchen_chairs_around_a_table() {
     let p = ok("A kitchen with a wooden table in the middle and four chairs around it");
     insta::assert_json_snapshot!("kitchen_chairs_around_table", p);
 }
+
+// ------------------------------------------------------------------------ spans (issue 20)
+
+/// True when some proxy's label contains `word`.
+fn has_proxy_with(p: &ScenePlan, word: &str) -> bool {
+    p.objects.iter().any(|o| o.proxy.as_ref().is_some_and(|x| x.label.split(' ').any(|w| w == word)))
+}
+
+#[test]
+fn a_known_noun_before_an_unknown_one_modifies_it() {
+    // English compounds are right-headed: the unknown noun is the thing, the known one its kind.
+    let p = ok("a garage with a wheel balancer and a tyre changer");
+    assert_eq!(proxy(&p, "wheel balancer").count, 1);
+    assert_eq!(proxy(&p, "tyre changer").count, 1);
+    assert!(!p.objects.iter().any(|o| o.category == "tire"), "no tyre was asked for\n{}", dump(&p));
+    assert!(not_understood(&p).is_empty(), "{:?}", not_understood(&p));
+    // The count agrees with the head, not the modifier.
+    let p = ok("two tomato sauces and a mug on a table");
+    assert_eq!(proxy(&p, "tomato sauce").count, 2);
+    assert_eq!(group(&p, "mug").count, 1);
+    // A word one letter off a known noun is that noun misspelt, not a new thing.
+    let p = ok("a desk chiar");
+    assert_eq!(group(&p, "chair").count, 1);
+    assert!(!has_proxy_with(&p, "chiar"), "{}", dump(&p));
+}
+
+#[test]
+fn a_verb_after_a_noun_is_not_part_of_its_name() {
+    // "brings" before an object is a verb; after "a mug", "sits" cannot be a plural head.
+    let p = ok("a mobile robot brings a shelf pod to the station");
+    assert!(!has_proxy_with(&p, "bring") && !has_proxy_with(&p, "brings"), "{}", dump(&p));
+    assert_eq!(p.robots.len(), 1, "{}", dump(&p));
+    let p = ok("a mug sits on the table");
+    assert_eq!(group(&p, "mug").count, 1);
+    assert_rel(&p, &group(&p, "mug").id, on(&group(&p, "table").id));
+    assert!(!has_proxy_with(&p, "sit"), "{}", dump(&p));
+}
+
+#[test]
+fn a_number_inside_a_singular_name_counts_nothing() {
+    let p = ok("a car on a two post lift");
+    assert_eq!(proxy(&p, "post lift").count, 1, "{}", dump(&p));
+}
+
+#[test]
+fn recesses_and_pits_are_places_not_objects() {
+    for (prompt, word) in [
+        ("a living room with a bookcase in the alcove", "alcove"),
+        ("a garage with a creeper beside the pit", "pit"),
+        ("a kitchen with a dresser in the recess", "recess"),
+    ] {
+        let p = ok(prompt);
+        assert!(!has_proxy_with(&p, word), "{prompt:?}\n{}", dump(&p));
+        assert!(!not_understood(&p).contains(&word), "{prompt:?}: {:?}", not_understood(&p));
+    }
+}
+
+#[test]
+fn arms_on_opposite_sides_flank_their_work() {
+    for prompt in [
+        "put two UR5e arms on opposite sides of the workbench",
+        "2 UR5es on either side of a table",
+        "two Kinova arms at either side of a conveyor",
+    ] {
+        let p = ok(prompt);
+        let r = p.robots.first().unwrap_or_else(|| panic!("{prompt:?}: no robot\n{}", dump(&p)));
+        let target = p.objects.iter().find(|o| o.category != "cube").map(|o| o.id.clone()).unwrap();
+        assert_rel(&p, &r.id, RelationKind::OnEachSideOf { target });
+    }
+}
+
+#[test]
+fn a_length_before_a_relation_target_is_its_size() {
+    let p = ok("2 UR5es on either side of a 1.2 m table");
+    let t = group(&p, "table");
+    assert_rel(&p, &robot(&p, "ur5e").id, RelationKind::OnEachSideOf { target: t.id.clone() });
+    assert!(not_understood(&p).is_empty(), "{:?}", not_understood(&p));
+}
+
+#[test]
+fn things_placed_by_a_mounted_arm_are_its_work_on_its_surface() {
+    let p = ok("A TABLE, A PANDA ON THE TABLE, 3 BLOCKS IN FRONT OF THE PANDA");
+    let (cube, table, panda) =
+        (group(&p, "cube").id.clone(), group(&p, "table").id.clone(), robot(&p, "panda").id.clone());
+    assert_rel(&p, &cube, on(&table));
+    assert_rel(&p, &panda, RelationKind::Reach { target: cube });
+    // Furniture beside an arm is not put on its table.
+    let p = ok("a Panda on a table with a chair next to the robot");
+    let chair = group(&p, "chair").id.clone();
+    assert!(
+        !p.relations.iter().any(|r| r.subject == chair && matches!(r.kind, RelationKind::On { .. })),
+        "{}",
+        dump(&p)
+    );
+}
+
+#[test]
+fn small_things_placed_by_something_on_a_surface_share_it() {
+    // Beside a thing on the counter: on the counter.
+    let p = ok("kitchen with a toaster on the counter, a plate next to it");
+    assert_rel(&p, &group(&p, "plate").id, on(&group(&p, "counter").id));
+    // Beside a sink set into the worktop: on the worktop; and along a chain.
+    let p = ok("a kitchen with a sink in the counter, a kettle next to the sink and a mug next to the kettle");
+    let counter = group(&p, "counter").id.clone();
+    assert_rel(&p, &group(&p, "kettle").id, on(&counter));
+    assert_rel(&p, &group(&p, "mug").id, on(&counter));
+    // Said to rest elsewhere: stays there.
+    let p = ok("a lamp on the desk. A mug stands on the floor next to the lamp.");
+    let bin = group(&p, "mug").id.clone();
+    assert!(!p.relations.iter().any(|r| r.subject == bin && r.kind == on(&group(&p, "desk").id)), "{}", dump(&p));
+    // Furniture beside something on a table stays on the floor.
+    let p = ok("a table with a lamp on it and a chair next to the lamp");
+    let chair = group(&p, "chair").id.clone();
+    assert!(
+        !p.relations.iter().any(|r| r.subject == chair && matches!(r.kind, RelationKind::On { .. })),
+        "{}",
+        dump(&p)
+    );
+}
+
+#[test]
+fn one_of_several_robots_is_one_of_them_not_another() {
+    let p = ok("two Pandas and one cube on a table, one robot each side");
+    assert_eq!(p.robots.len(), 1, "{}", dump(&p));
+    let table = group(&p, "table").id.clone();
+    assert_rel(&p, &robot(&p, "panda").id, RelationKind::OnEachSideOf { target: table });
+    // "them" after a singular host is the plural thing named before it.
+    let p = ok("two Pandas on a table with a cube between them");
+    let panda = robot(&p, "panda").id.clone();
+    assert_rel(&p, &group(&p, "cube").id, RelationKind::Between { first: panda.clone(), second: panda.clone() });
+    assert_rel(&p, &panda, RelationKind::Reach { target: group(&p, "cube").id.clone() });
+}
+
+#[test]
+fn loose_small_things_are_the_work_of_the_only_arm_surface() {
+    // Nothing says where the cubes are: the Panda's table, within its reach.
+    let p = ok("table, two cubes, Panda");
+    let (cube, table, panda) =
+        (group(&p, "cube").id.clone(), group(&p, "table").id.clone(), robot(&p, "panda").id.clone());
+    assert_rel(&p, &cube, on(&table));
+    assert_rel(&p, &panda, RelationKind::Reach { target: cube });
+    let p = ok("a Panda on a table, a mug and a cup");
+    let table = group(&p, "table").id.clone();
+    assert_rel(&p, &group(&p, "mug").id, on(&table));
+    assert_rel(&p, &group(&p, "cup").id, on(&table));
+    // Two work surfaces and an arm that names neither: nothing is guessed.
+    let p = ok("a table, a desk, a mug and a Panda");
+    let mug = group(&p, "mug").id.clone();
+    assert!(!p.relations.iter().any(|r| r.subject == mug), "{}", dump(&p));
+}

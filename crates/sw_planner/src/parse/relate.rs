@@ -275,9 +275,12 @@ impl Parser<'_> {
         let w = self.word(j);
         if matches!(w, "it" | "them" | "this" | "that" | "these" | "those" | "one" | "each" | "both" | "all") {
             // "each with a stool and a vice on it": it is each host.
+            // "them" is the host only when there are several of it ("two Pandas on a table
+            // with a cube between them": the Pandas).
             if let Some(host) = self.each_host.clone().or_else(|| self.with_host.clone())
                 && self.subject != Some(Subject::Group(host.clone()))
                 && matches!(w, "it" | "them" | "one" | "each")
+                && (w != "them" || self.group_is_plural(&host) || self.each_host.is_some())
             {
                 return Some((host, j + 1));
             }
@@ -452,6 +455,10 @@ impl Parser<'_> {
             ("ground", "floor"),
         ];
         let mut k = j;
+        // "a 60 cm pedestal": its height, read with the phrase's sizes.
+        if let Some((_, len, true)) = self.phrases().length_at(k) {
+            k += len;
+        }
         while matches!(
             self.word(k),
             "steel" | "metal" | "small" | "large" | "low" | "high" | "tall" | "short" | "sturdy" | "fixed" | "wheeled"
@@ -626,7 +633,13 @@ impl Parser<'_> {
                     (Cue::BackToBack, _) => RelationKind::BackToBack,
                     (Cue::Leaning(w), _) => RelationKind::Leaning { wall: w },
                     (Cue::Stacked, _) => RelationKind::Stacked { n: None, stacks: None },
-                    (Cue::Floor, _) => return,
+                    // "a bin on the floor": nothing to keep but that it stays there.
+                    (Cue::Floor, _) => {
+                        if !self.draft.on_floor.contains(&subject) {
+                            self.draft.on_floor.push(subject.clone());
+                        }
+                        return;
+                    }
                     _ => return,
                 };
                 if kind.targets().contains(&subject.as_str()) {
@@ -833,7 +846,26 @@ impl Parser<'_> {
             (Cue::InFront, [t]) => RelationKind::InFrontOf { target: t.clone() },
             (Cue::Behind, [t]) => RelationKind::Behind { target: t.clone() },
             (Cue::Around, [t]) | (Cue::FacingTarget, [t]) => RelationKind::Near { target: t.clone() },
+            // "two arms on opposite sides of the bench": one on each side; a single robot
+            // "either side of" something stands beside it.
+            (Cue::EachSide, [t]) if robot.count.is_some_and(|c| c >= 2.0) || robot.plural => {
+                Said::OnEachSideOf(t.clone()).kind()
+            }
             (Cue::EachSide, [t]) => RelationKind::NextTo { target: t.clone() },
+            // "two Pandas on a table, one on each side": of what they stand on or work at,
+            // else of the last work surface named.
+            (Cue::Facing, []) if robot.count.is_some_and(|c| c >= 2.0) || robot.plural => {
+                let on = match &robot.mount {
+                    Mount::OnSurface { target } if !target.starts_with('@') => Some(target.clone()),
+                    _ => robot.near.clone(),
+                };
+                let work =
+                    on.or_else(|| self.draft.groups.iter().rev().map(|g| g.id.clone()).find(|g| self.group_is_work(g)));
+                match work {
+                    Some(t) => Said::OnEachSideOf(t).kind(),
+                    None => return,
+                }
+            }
             (Cue::In | Cue::Above, _) => return,
             (Cue::EndOf(end), [t]) => {
                 // A named end ("at the start of the belt") is stated as such; the end of the
@@ -870,7 +902,7 @@ impl Parser<'_> {
             && let Some(t) = rel.targets().first().map(|t| t.to_string())
             && !t.starts_with('@')
             && self.draft.robots.get(idx).is_some_and(|r| r.near.is_none())
-            && !matches!(rel, RelationKind::Behind { .. })
+            && !matches!(rel, RelationKind::Behind { .. } | RelationKind::OnEachSideOf { .. })
             && let Some(r) = self.draft.robots.get_mut(idx)
         {
             r.near = Some(t);
