@@ -20,6 +20,7 @@
 //! in `.cache/vocab/` (keyed by a hash of the texts and the model's config), so a run
 //! embeds only its unknown nouns.
 
+use std::cell::OnceCell;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -38,14 +39,17 @@ pub const SIBLING_MIN: f32 = 0.62;
 /// below it while a true kind ("santoku knife" and the chef's knife) stays above.
 pub const SENSE_MIN: f32 = 0.5;
 /// A noun whose head names a category but whose modifiers are foreign to it (not words
-/// of its names, tags, hypernyms or description) is that category only this close to
-/// its description: "a waffle iron" is no clothes iron, "a bread knife" is a knife.
+/// of its names, tags, hypernyms or description) is refused as that category when it is
+/// below this close to its description and another category's description is nearer by
+/// more than [`SENSE_MARGIN`]: "a waffle iron" is no clothes iron, while "a kids bicycle"
+/// (nothing is nearer than the bicycle) and "a bread knife" stay what their heads name.
 pub const NAMED_SENSE_MIN: f32 = 0.45;
-/// The nearest categories tell an unknown noun's kind of thing only this close.
+/// How much nearer another category's sense must be to take a noun away from the one its
+/// words name.
+pub const SENSE_MARGIN: f32 = 0.05;
+/// The nearest category tells an unknown noun's kind of thing only this close.
 pub const KIND_MIN: f32 = 0.45;
-/// How many of the nearest categories vote on an unknown noun's kind, and how many of
-/// the winning kind give the proxy its size.
-const KIND_VOTERS: usize = 5;
+/// How many of the nearest categories of the noun's kind give its proxy a size.
 const SIZE_VOTERS: usize = 3;
 /// A word the planner read as a typo of a catalog name ("trailer" for "trainer") is that
 /// name only when the model does not know the word itself, or knows it as this close in
@@ -198,6 +202,24 @@ fn modifiers_agree(modifiers: &[String], cat: &Category) -> bool {
     modifiers.iter().all(|m| own.binary_search(m).is_ok())
 }
 
+/// The category whose sense is nearest to `noun`, and its score (`None` without the model).
+fn nearest_sense(noun: &str, meaning: &dyn Meaning) -> Option<(&'static Category, f32)> {
+    let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
+    let s = meaning.senses(noun, &all)?;
+    all.into_iter().zip(s).max_by(|a, b| a.1.total_cmp(&b.1))
+}
+
+/// The largest sense score of `noun` over every category (`None` without the model).
+fn best_sense(noun: &str, meaning: &dyn Meaning) -> Option<f32> {
+    nearest_sense(noun, meaning).map(|(_, s)| s)
+}
+
+/// Whether a sense score takes a noun away from a category its head names: low, and
+/// another category is clearly nearer.
+fn sense_refuses(sense: f32, best: Option<f32>) -> bool {
+    sense < NAMED_SENSE_MIN && best.is_some_and(|b| sense < b - SENSE_MARGIN)
+}
+
 /// Resolves one noun phrase (a proxy's label).
 pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
     let words = noun_words(label);
@@ -211,6 +233,8 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
         let cats: Vec<&'static Category> = cands.iter().map(|(c, _)| *c).collect();
         let scores = meaning.scores(&text, &cats);
         let senses = meaning.senses(&text, &cats);
+        let best = OnceCell::new();
+        let best = || *best.get_or_init(|| best_sense(&text, meaning));
         // Whether candidate i is the thing named: its head names it and the modifiers
         // agree (by its own words, else by its sense), or it is a kind of one thing with
         // the noun that is close to it both by name and by sense.
@@ -219,23 +243,27 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
             let name = scores.as_ref().map(|s| s[i]);
             let sense = senses.as_ref().map(|s| s[i]);
             match tie {
-                Tie::Named => modifiers_agree(modifiers, cat) || sense.is_none_or(|s| s >= NAMED_SENSE_MIN),
+                Tie::Named => modifiers_agree(modifiers, cat) || !sense.is_some_and(|s| sense_refuses(s, best())),
                 Tie::HeadNamed | Tie::Sibling => {
-                    name.is_some_and(|s| s >= SIBLING_MIN) && sense.is_some_and(|s| s >= SENSE_MIN)
+                    name.is_some_and(|s| s >= SIBLING_MIN)
+                        && sense.is_some_and(|s| s >= SENSE_MIN && best().is_none_or(|b| s >= b - SENSE_MARGIN))
                 }
             }
         };
         let rank = |i: usize| -> (u8, u8, f32) {
             let (cat, tie) = cands[i];
+            let score = scores.as_ref().map_or(0.0, |s| s[i]);
             // A generic word gets its generic category: the one whose own display name
-            // is the head, before a sub-kind that lists the word as a synonym.
+            // is the head, before a sub-kind that lists the word as a synonym. A modified
+            // noun goes to the nearest of the categories named like it ("a santoku knife"
+            // is nearer the chef's knife than the table knife both named "knife").
             let generic = noun_words(cat.display) == words[words.len() - head_len..];
-            let tie_rank = match tie {
-                Tie::Named => 2,
-                Tie::HeadNamed => 1,
-                Tie::Sibling => 0,
+            let tie_rank = match (tie, modifiers.is_empty()) {
+                (Tie::Named, true) => 2,
+                (Tie::Named | Tie::HeadNamed, _) => 1,
+                (Tie::Sibling, _) => 0,
             };
-            (tie_rank, u8::from(generic), scores.as_ref().map_or(0.0, |s| s[i]))
+            (tie_rank, u8::from(generic && modifiers.is_empty()), score)
         };
         let best = (0..cands.len())
             .filter(|&i| admitted(i))
@@ -264,10 +292,10 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
     proxy_by_meaning(&text, meaning, None)
 }
 
-/// A labelled proxy for `text`: of kind `known` when the head said it, else the kind
-/// most of the nearest categories by meaning have (weighted by similarity); sized by the
-/// median of the default sizes of the nearest categories of that kind, within a factor
-/// of three of the kind's prior.
+/// A labelled proxy for `text`: of kind `known` when the head said it, else the kind of
+/// the nearest category by meaning (when close enough); sized by the median of the
+/// default sizes of the nearest categories of that kind, within a factor of three of the
+/// kind's prior.
 fn proxy_by_meaning(text: &str, meaning: &dyn Meaning, known: Option<Kind>) -> Resolution {
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
     let Some(s) = meaning.scores(text, &all) else {
@@ -276,13 +304,7 @@ fn proxy_by_meaning(text: &str, meaning: &dyn Meaning, known: Option<Kind>) -> R
     let mut order: Vec<usize> = (0..all.len()).collect();
     order.sort_by(|&a, &b| s[b].total_cmp(&s[a]));
     let nearest = order.first().map(|&i| (all[i].name, s[i]));
-    let kind = known.or_else(|| {
-        let mut votes: BTreeMap<Kind, f32> = BTreeMap::new();
-        for &i in order.iter().take(KIND_VOTERS).filter(|&&i| s[i] >= KIND_MIN) {
-            *votes.entry(all[i].kind).or_default() += s[i];
-        }
-        votes.into_iter().max_by(|a, b| a.1.total_cmp(&b.1)).map(|(k, _)| k)
-    });
+    let kind = known.or_else(|| order.first().filter(|&&i| s[i] >= KIND_MIN).map(|&i| all[i].kind));
     let size = kind.and_then(|k| {
         let near: Vec<[f64; 3]> = order
             .iter()
@@ -682,9 +704,21 @@ fn misreading(words: &[String], cat: &'static Category, meaning: &dyn Meaning) -
     if modifiers.is_empty() || modifiers_agree(modifiers, cat) {
         return None;
     }
-    let sense = meaning.senses(&words.join(" "), &[cat])?.first().copied()?;
-    (sense < NAMED_SENSE_MIN)
-        .then(|| format!("'{}' takes it away from a {} (similarity {sense:.2})", modifiers.join(" "), cat.display))
+    // The planner's reading stands unless the modifiers take the phrase to another kind
+    // of thing ("a yogurt pot" is food, not cookware); an adjective or a unit it does not
+    // know ("a prep table", "a 6 ft workbench") leaves it the same kind of thing.
+    let noun = words.join(" ");
+    let sense = meaning.senses(&noun, &[cat])?.first().copied()?;
+    let (nearest, best) = nearest_sense(&noun, meaning)?;
+    (sense_refuses(sense, Some(best)) && nearest.kind != cat.kind).then(|| {
+        format!(
+            "'{}' takes it away from a {} (similarity {sense:.2}) to a {} like the {}",
+            modifiers.join(" "),
+            cat.display,
+            nearest.kind.name(),
+            nearest.display
+        )
+    })
 }
 
 /// Groups the planner read as a category they are not ([`misreading`]): each becomes an

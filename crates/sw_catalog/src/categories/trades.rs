@@ -8,10 +8,7 @@ use sw_geom::{AssetBuilder, PlacementKind, Rng};
 
 use super::forms::{def, size3, whd};
 use super::household::{bar_x, hull, mass, part, sized, turn};
-use super::kit::{
-    DARK, GLASS, INK, LABEL_WHITE, MACHINE_PAINT, PLASTIC, RUBBER, STEEL, UPHOLSTERY, WOOD, collider_between, pick,
-    shade,
-};
+use super::kit::{DARK, INK, LABEL_WHITE, PLASTIC, RUBBER, STEEL, WOOD, collider_between, pick, shade};
 use crate::{Category, Kind, ParamDef, Params};
 
 const GARAGE: &[&str] = &["garage", "workshop", "automotive", "floor", "heavy"];
@@ -652,7 +649,7 @@ fn build_pencil_sharpener(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f6
 pub(crate) const CLOTHES_PEG: Category = def(
     "clothes_peg",
     "clothes peg",
-    &["clothespin", "clothes pin", "washing peg", "laundry peg", "peg"],
+    &["clothespin", "clothes pin", "washing peg", "laundry peg"],
     &["laundry", "home", "tabletop", "small", "graspable"],
     "a wooden or plastic spring clothes peg",
     &["laundry accessory", "clip"],
