@@ -72,7 +72,10 @@ def main() -> None:
             rows.append({"family": family, "prompt": prompt, "refused": r.stderr.strip()})
             continue
         summary = json.loads(r.stdout) if r.stdout.strip() else {}
-        attempts = [json.loads(x) for x in (out / "attempts.jsonl").read_text().splitlines() if x.strip()]
+        lines = [json.loads(x) for x in (out / "attempts.jsonl").read_text().splitlines() if x.strip()]
+        # A variant whose start already satisfied the task was drawn again: no attempt.
+        attempts = [a for a in lines if a["outcome"] != "resampled"]
+        f["resampled"] += len(lines) - len(attempts)
         solved = [a for a in attempts if a["outcome"] == "solved"]
         replayed = 0
         if (out / "meta" / "info.json").is_file():
@@ -96,13 +99,14 @@ def main() -> None:
                 "solved": len(solved),
                 "replayed": replayed,
                 "failures": dict(fails),
+                "reasons": [a.get("reason", "") for a in attempts if a["outcome"] != "solved"],
             }
         )
         print(f"{family:22} {len(solved):2}/{len(attempts):2} replayed {replayed:2}  {prompt}", flush=True)
     total: dict[str, float] = defaultdict(float)
     print()
-    print("| family | prompts | expert success | replayed = expert | episodes/min | bytes/episode |")
-    print("|---|---|---|---|---|---|")
+    print("| family | prompts | expert success | replayed = expert | starts redrawn | episodes/min | bytes/episode |")
+    print("|---|---|---|---|---|---|---|")
     for family, f in fam.items():
         for k, v in f.items():
             total[k] += v
@@ -111,13 +115,13 @@ def main() -> None:
         succ = 100 * f["solved"] / f["attempts"] if f["attempts"] else 0
         print(
             f"| {family} | {int(f['prompts'])} | {int(f['solved'])}/{int(f['attempts'])} ({succ:.0f} %) | "
-            f"{int(f['replayed'])}/{int(f['solved'])} | {rate:.1f} | {bpe:.0f} |"
+            f"{int(f['replayed'])}/{int(f['solved'])} | {int(f['resampled'])} | {rate:.1f} | {bpe:.0f} |"
         )
     succ = 100 * total["solved"] / total["attempts"] if total["attempts"] else 0
     rate = 60 * total["episodes"] / total["seconds"] if total["seconds"] else 0
     print(
         f"| all | {int(total['prompts'])} | {int(total['solved'])}/{int(total['attempts'])} ({succ:.0f} %) | "
-        f"{int(total['replayed'])}/{int(total['solved'])} | {rate:.1f} | "
+        f"{int(total['replayed'])}/{int(total['solved'])} | {int(total['resampled'])} | {rate:.1f} | "
         f"{total['bytes'] / max(total['episodes'], 1):.0f} |"
     )
     if args.json:

@@ -32,7 +32,7 @@ import judge_rel_groups as groups
 import judge_rel_place as place
 import judge_rel_sides as sides
 import judge_rel_support as support
-from judge_common import LineError, Relation, Verdict, matches
+from judge_common import LineError, Relation, Verdict, bind_line, line_keys, matches, names_category, use_vocabulary
 from judge_scene import Scene, SceneError, load
 
 CHECKS: dict[str, Callable[[Relation, Scene], Verdict]] = {
@@ -121,13 +121,13 @@ def parse_line(line: dict[str, Any]) -> list[Relation]:
 
 
 def check_counts(scene: Scene, line: dict[str, Any]) -> dict[str, Any]:
-    """Object bodies per category and robots per model against the line's expectations."""
+    """Object bodies per key and robots per model against the line's expectations."""
     objs = Counter(t.category for t in scene.objects)
     rows: list[dict[str, Any]] = []
     ok = True
     for field, exact in (("counts", True), ("min_counts", False)):
         for key, n in line.get(field, {}).items():
-            found = sum(objs[a] for a in key.split("|"))
+            found = sum(1 for t in scene.objects if matches(t, key))
             good = found == n if exact else found >= n
             ok &= good
             rows.append({"key": key, "expected": n if exact else f">= {n}", "found": found, "held": good})
@@ -137,15 +137,13 @@ def check_counts(scene: Scene, line: dict[str, Any]) -> dict[str, Any]:
         ok &= found == n
         robot_rows.append({"key": key, "expected": n, "found": found, "held": found == n})
     stray = sorted(r.name for r in scene.robots if not any(matches(r, k) for k in line["robots"]))
-    mentioned = {a for f in ("counts", "min_counts") for k in line.get(f, {}) for a in k.split("|")}
-    for r in line["relations"]:
-        for f in ("subject", "target", "target2"):
-            mentioned.update(str(r.get(f) or "").split("|"))
-    mentioned.update(line.get("allow_extra", []))
+    mentioned = line_keys(line)
     # A mount an arm stands on (a pedestal under "a Panda") is not an extra object.
     mounts = {o.category for o in scene.objects if any(support.rests_on(r, o) for r in scene.robots)}
     mounts -= {o.category for o in scene.objects if not any(support.rests_on(r, o) for r in scene.robots)}
-    extra = {c: k for c, k in sorted(objs.items()) if c not in mentioned and c not in mounts}
+    extra = {
+        c: k for c, k in sorted(objs.items()) if not any(names_category(c, a) for a in mentioned) and c not in mounts
+    }
     ok = ok and not stray and not extra
     return {"held": ok, "objects": rows, "robots": robot_rows, "unexpected_robots": stray, "extra_objects": extra}
 
@@ -153,6 +151,7 @@ def check_counts(scene: Scene, line: dict[str, Any]) -> dict[str, Any]:
 def judge(package: Path, line: dict[str, Any]) -> dict[str, Any]:
     """Judge one package against one suite line."""
     rels = parse_line(line)
+    bind_line(line)
     scene = load(package)
     out = []
     for r in rels:
@@ -203,8 +202,12 @@ def main(argv: list[str]) -> int:
     ap.add_argument("--suite", type=Path, help="a suite file (with --id)")
     ap.add_argument("--id", help="the suite line's id")
     ap.add_argument("--batch", type=Path, help='a JSONL file of {"package": DIR, "line": {…}}')
+    ap.add_argument(
+        "--vocabulary", type=Path, help="`scenewright assets list --json` output: keys match the catalog's names"
+    )
     args = ap.parse_args(argv)
     try:
+        use_vocabulary(args.vocabulary)
         if args.batch:
             for raw in args.batch.read_text().splitlines():
                 if not raw.strip():

@@ -4,11 +4,22 @@ A subject or target is a key: a catalog category (`shelf`), a robot model (`ur5e
 aliases `arm` (a robot with a shoulder and a fixed base) and `mobile` (a robot whose root
 moves freely), or alternatives joined by `|` (`shelf|pallet_rack`): every instance of
 any alternative present in the scene.
+
+With a vocabulary (the catalog's own names, from `scenewright assets list --json`), a key
+also names an object whose category is spelt the same but for spaces or one letter
+("bandsaw" for `band_saw`, "dock_leveler" for `dock_leveller`), or that the catalog says is
+a kind of it (`is_a`: a `stock_pot` is a "pot") — unless the same suite line names that
+category itself. The catalog's synonyms are not used: they are its own claims of likeness
+(a close substitute is listed as a synonym), and a judge that took them would let the
+catalog grade itself. Without a vocabulary, a key names its categories exactly
+(`--vocabulary none`).
 """
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from judge_scene import Scene, Thing
@@ -136,13 +147,94 @@ def robot_is(t: Thing, alias: str) -> bool:
     return t.shoulder is not None and not t.free
 
 
+def _snake(words: str) -> str:
+    return "_".join(words.lower().replace("-", " ").split())
+
+
+@dataclass
+class Vocabulary:
+    """Per catalog category, the keys that name it: its names and its kinds (not its synonyms)."""
+
+    names: dict[str, frozenset[str]]
+
+    @staticmethod
+    def read(path: Path) -> Vocabulary:
+        """Read `scenewright assets list --json` output."""
+        rows = json.loads(path.read_text())
+        names = {}
+        for row in rows:
+            words = [row["name"], row.get("display", ""), *row.get("is_a", [])]
+            names[row["name"]] = frozenset(_snake(w) for w in words if w)
+        return Vocabulary(names)
+
+
+VOCABULARY: Vocabulary | None = None
+# The categories the suite line being judged names itself: never matched through a word.
+_NAMED: frozenset[str] = frozenset()
+
+
+def use_vocabulary(path: Path | None) -> None:
+    """Match keys through the catalog's names (a path) or exactly (None)."""
+    global VOCABULARY
+    VOCABULARY = Vocabulary.read(path) if path else None
+
+
+def line_keys(line: dict[str, Any]) -> set[str]:
+    """Every key alternative a suite line mentions (counts, relations, allowed extras)."""
+    keys = {a for f in ("counts", "min_counts") for k in line.get(f, {}) for a in k.split("|")}
+    for r in line.get("relations", []):
+        for f in ("subject", "target", "target2"):
+            keys.update(a for a in str(r.get(f) or "").split("|") if a)
+    keys.update(line.get("allow_extra", []))
+    return keys
+
+
+def bind_line(line: dict[str, Any]) -> None:
+    """Judge the next package against this line (its own category names win over words)."""
+    global _NAMED
+    _NAMED = frozenset(line_keys(line))
+
+
+def spelt_alike(a: str, b: str) -> bool:
+    """Tell whether two names are one word spelt two ways.
+
+    The same but for spaces, or (7 letters or more) for one letter added, dropped or changed.
+    """
+    a, b = a.replace("_", ""), b.replace("_", "")
+    if a == b:
+        return True
+    if min(len(a), len(b)) < 7 or abs(len(a) - len(b)) > 1:
+        return False
+    if len(a) > len(b):
+        a, b = b, a
+    i = 0
+    while i < len(a) and a[i] == b[i]:
+        i += 1
+    return a[i + (len(a) == len(b)) :] == b[i + 1 :]
+
+
+def names_category(category: str, alt: str) -> bool:
+    """Whether a key alternative names a catalog category, exactly or through the vocabulary."""
+    if category == alt:
+        return True
+    if VOCABULARY is None or category in _NAMED:
+        return False
+    # A key that is itself a catalog category names only that one (a pallet jack is no pallet rack).
+    if alt in VOCABULARY.names:
+        return alt in VOCABULARY.names[category] if category in VOCABULARY.names else False
+    return spelt_alike(category, alt) or alt in VOCABULARY.names.get(category, frozenset())
+
+
 def matches(t: Thing, key: str) -> bool:
     """Whether a thing is an instance of a key."""
     for alt in key.split("|"):
         if alt in ROBOT_ALIASES:
             if robot_is(t, alt):
                 return True
-        elif t.category == alt:
+        elif t.kind == "robot":
+            if t.category == alt:
+                return True
+        elif names_category(t.category, alt):
             return True
     return False
 

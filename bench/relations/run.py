@@ -9,6 +9,11 @@ mismatches.
         [--suite bench/relations/suite.jsonl] [--only ID[,ID]] [--work DIR] [--keep] [--json FILE]
     .cache/venv/bin/python bench/relations/run.py --report FILE   # the tables of an earlier --json
 
+A corpus file (bench/relations/corpus/dev.jsonl) is a suite too. `--summary` prints only the
+issue-20 measures (relations held, fully right, count keys exact, object precision, arms), no
+per-prompt line: the way to score a held-out set. Keys match the catalog's own names and kinds
+(`--vocabulary auto`, from the binary's `assets list --json`; `none` matches them exactly).
+
 Packages are written under --work (a temporary directory, removed at the end unless --keep).
 A package that fails to generate counts every one of its relations as not held.
 """
@@ -30,7 +35,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
 from judge import judge  # noqa: E402
-from judge_common import LineError  # noqa: E402
+from judge_common import LineError, use_vocabulary  # noqa: E402
 from judge_scene import SceneError  # noqa: E402
 
 ROOT = HERE.parent.parent
@@ -57,6 +62,21 @@ def generate(binary: Path, prompt: str, out: Path, seed: int) -> tuple[bool, str
         return True, "", dt
     last = (p.stderr.strip().splitlines() or ["?"])[-1]
     return False, f"exit {p.returncode}: {last}", dt
+
+
+def vocabulary(choice: str, binary: Path, work: Path) -> Path | None:
+    """Return the catalog's names for the judge: `auto` asks the binary, `none` matches keys exactly."""
+    if choice == "none":
+        return None
+    if choice != "auto":
+        return Path(choice)
+    proc = subprocess.run([str(binary), "assets", "list", "--json"], capture_output=True, text=True, timeout=120)
+    if proc.returncode != 0:
+        raise SystemExit(f"run: `{binary} assets list --json` failed: {proc.stderr.strip()[:200]}")
+    work.mkdir(parents=True, exist_ok=True)
+    path = work / "vocabulary.json"
+    path.write_text(proc.stdout)
+    return path
 
 
 def run(args: argparse.Namespace) -> dict[str, Any]:
@@ -88,6 +108,8 @@ def run(args: argparse.Namespace) -> dict[str, Any]:
                 }
             res.update({"seed": seed, "verified": verified, "note": note, "seconds": round(secs, 3)})
             results.append(res)
+            if args.summary:
+                continue
             mark = "ok " if res["all_held"] and res["counts"]["held"] else "-- "
             print(
                 f"{mark}[{i}/{len(lines)}] {line['id']} seed {seed}: {res['held']}/{res['total']} held"
@@ -96,6 +118,46 @@ def run(args: argparse.Namespace) -> dict[str, Any]:
                 flush=True,
             )
     return {"seeds": args.seeds, "suite": str(args.suite), "results": results}
+
+
+def _expected(e: Any) -> int | None:
+    """Return a count row's expected number (None for an `>= n` row)."""
+    return e if isinstance(e, int) else None
+
+
+def measures(data: dict[str, Any]) -> str:
+    """Format the issue-20 measures of a run, with no per-prompt detail (safe for a held-out set)."""
+    rs = data["results"]
+    held = sum(r["held"] for r in rs)
+    total = sum(r["total"] for r in rs)
+    full = sum(1 for r in rs if r["all_held"] and r["counts"]["held"] and r["verified"])
+    keys = [o for r in rs for o in r["counts"]["objects"] + r["counts"]["robots"]]
+    exact = sum(1 for o in keys if o["held"])
+    placed = good = 0
+    for r in rs:
+        c = r["counts"]
+        for o in c["objects"] + c["robots"]:
+            want = _expected(o["expected"])
+            placed += o["found"]
+            good += o["found"] if want is None else min(o["found"], want)
+        placed += sum(c.get("extra_objects", {}).values()) + len(c.get("unexpected_robots", []))
+    clean = sum(1 for r in rs if not (r["counts"].get("extra_objects") or r["counts"].get("unexpected_robots")))
+    arms = [r for r in rs if any(x["relation"] == "reach" for x in r["relations"])]
+    arms_ok = sum(1 for r in arms if all(x["held"] for x in r["relations"] if x["relation"] == "reach"))
+
+    def pct(a: int, b: int) -> str:
+        return f"{a}/{b} = {100.0 * a / max(1, b):.1f} %"
+
+    return "\n".join(
+        [
+            f"{len(rs)} scenes ({len({r['id'] for r in rs})} prompts x {data['seeds']} seeds)",
+            f"relations held {pct(held, total)}",
+            f"fully right (every relation held, counts exact, verified) {pct(full, len(rs))}",
+            f"count keys exact {pct(exact, len(keys))}",
+            f"object precision {pct(good, placed)}; scenes with no unasked object {clean}/{len(rs)}",
+            f"arms reaching all their work {arms_ok}/{len(arms)} scenes",
+        ]
+    )
 
 
 def report(data: dict[str, Any]) -> str:
@@ -162,9 +224,18 @@ def main() -> int:
     ap.add_argument("--keep", action="store_true", help="keep the packages")
     ap.add_argument("--json", type=Path, help="write every verdict here")
     ap.add_argument("--report", type=Path, help="print the tables of an earlier --json file and stop")
+    ap.add_argument(
+        "--summary", action="store_true", help="print only the measures, no per-prompt lines (for held-out sets)"
+    )
+    ap.add_argument(
+        "--vocabulary",
+        default="auto",
+        help="keys match the catalog's names and kinds: `auto` (the binary's `assets list --json`), a file, or `none`",
+    )
     args = ap.parse_args()
     if args.report:
-        print(report(json.loads(args.report.read_text())))
+        data = json.loads(args.report.read_text())
+        print(measures(data) if args.summary else report(data) + "\n\n" + measures(data))
         return 0
     if not args.binary.is_file():
         print(f"run: no binary at {args.binary} (cargo build --release -p sw_cli)", file=sys.stderr)
@@ -176,13 +247,14 @@ def main() -> int:
     if temp:
         args.work = Path(tempfile.mkdtemp(prefix="relations-"))
     try:
+        use_vocabulary(vocabulary(args.vocabulary, args.binary, args.work))
         data = run(args)
     finally:
         if temp and not args.keep:
             shutil.rmtree(args.work, ignore_errors=True)
     if args.json:
         args.json.write_text(json.dumps(data, indent=1))
-    print(report(data))
+    print(measures(data) if args.summary else report(data) + "\n\n" + measures(data))
     return 0
 
 

@@ -3,15 +3,19 @@ r"""Behaviour cloning on a `scenewright demos` dataset, against a random policy.
 Make demonstrations, then train and evaluate (needs `pyarrow`; the network is NumPy):
 
     scenewright demos --prompt "a Panda on a table that puts the red cube in the bowl" \\
-        --episodes 60 --out out/pick
-    python python/examples/train_bc.py out/pick --holdout 10
+        --episodes 200 --out out/pick
+    python python/examples/train_bc.py out/pick --holdout 20
 
-The policy maps an observation (the robot's joint positions, the moved thing's pose, the
-episode's progress) to the action (the actuator controls held for one frame), as the
-expert recorded them. It is trained on all but the last `--holdout` episodes and rolled
-out from the start of each held-out episode's scene (a layout it has not seen) in plain
-MuJoCo; success is the task's predicates (`scenewright.tasks`) at the end. A random policy
-(controls drawn within the recorded ranges) is rolled out from the same starts.
+The policy maps an observation (the robot's joint positions, where its tool centre point is,
+where the task's objects and targets are and how far each is from the tool, the episode's
+progress) to the action (the actuator controls held for one frame), as the expert recorded
+them; a joint's target as its step from the joint's position. The observations are read
+from MuJoCo while the recorded actions are replayed, the same way the rollouts read them,
+and in the robot's own frame: every episode is a new layout. It is trained on all but the
+last `--holdout` episodes and rolled out from the start of each held-out episode's scene (a
+layout it has not seen) in plain MuJoCo; success is the task's predicates
+(`scenewright.tasks`) at the end. A random policy (controls drawn within the recorded
+ranges) is rolled out from the same starts.
 """
 
 from __future__ import annotations
@@ -27,12 +31,46 @@ import numpy as np
 from scenewright.demos import DemoEpisode, Demos
 from scenewright.tasks import holds
 
-Policy = Callable[[np.ndarray, np.ndarray, int], np.ndarray]
+Policy = Callable[[np.ndarray], np.ndarray]
 
 
-def features(state: np.ndarray, env: np.ndarray, progress: float) -> np.ndarray:
-    """The policy's input: joint positions, the moved things' poses, the episode's progress."""
-    return np.concatenate([state, env, [progress]])
+@dataclass
+class Observer:
+    """Reads a policy's input from an episode's scene: what its task is about, by id."""
+
+    qadr: list[int]
+    base: int
+    tcp: int
+    bodies: list[int]
+    horizon: int
+
+    @staticmethod
+    def of(ep: DemoEpisode, model: mujoco.MjModel, horizon: int) -> Observer:
+        """The observer of one episode (its own robot, tool site, objects and targets)."""
+        names = ep.info["features"]["observation.state"]["names"]
+        qadr = [int(model.jnt_qposadr[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, n)]) for n in names]
+        tcp = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_SITE, ep.task["gripper"]["tcp_site"])
+        # The robot's own frame: the top body of the chain its first joint moves.
+        first = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, names[0])
+        base = int(model.body_rootid[model.jnt_bodyid[first]])
+        wanted: list[str] = []
+        for goal in ep.task["goals"]:
+            for key in ("object", "target"):
+                v = goal.get(key)
+                wanted += v if isinstance(v, list) else [v] if v else []
+        bodies = [mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, n) for n in dict.fromkeys(wanted)]
+        return Observer(qadr, base, tcp, [b for b in bodies if b >= 0], horizon)
+
+    def __call__(self, data: mujoco.MjData, t: int) -> np.ndarray:
+        """Read the input at frame t.
+
+        Joint positions; in the robot's own frame (each episode stands it somewhere else) the
+        tool's position and each body's position and offset from the tool; the progress.
+        """
+        origin, rot = data.xpos[self.base], data.xmat[self.base].reshape(3, 3)
+        tool = (data.site_xpos[self.tcp] - origin) @ rot
+        where = [((data.xpos[b] - origin) @ rot, (data.xpos[b] - origin) @ rot - tool) for b in self.bodies]
+        return np.concatenate([data.qpos[self.qadr], tool, *(np.concatenate(w) for w in where), [t / self.horizon]])
 
 
 @dataclass
@@ -98,20 +136,32 @@ class Mlp:
         return loss
 
 
-def rollout(ep: DemoEpisode, policy: Policy, horizon: int) -> bool:
-    """Runs `policy(obs, t)` from the episode's start; True when its task holds at the end."""
+def substeps(ep: DemoEpisode, model: mujoco.MjModel) -> int:
+    """Physics steps per frame: each action is held for 1/fps."""
+    fps, dt = int(ep.info["fps"]), float(model.opt.timestep)
+    return round(1.0 / (fps * dt))
+
+
+def demonstrations(ep: DemoEpisode, horizon: int) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """(observation, action) per frame, read in MuJoCo while the recorded actions replay."""
     model, data = ep.load()
-    names = ep.info["features"]["observation.state"]["names"]
-    qadr = [int(model.jnt_qposadr[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, n)]) for n in names]
-    env_names = ep.info["features"].get("observation.environment_state", {}).get("names", [])
-    bodies = []
-    for n in env_names[::7]:
-        bodies.append(mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, n.split(".")[0]))
-    substeps = round(1.0 / (int(ep.info["fps"]) * model.opt.timestep))
+    observe, n = Observer.of(ep, model, horizon), substeps(ep, model)
+    xs, ys = [], []
+    for t, action in enumerate(ep.frames()["action"]):
+        xs.append(observe(data, t))
+        ys.append(action)
+        data.ctrl[:] = action
+        mujoco.mj_step(model, data, nstep=n)
+    return xs, ys
+
+
+def rollout(ep: DemoEpisode, policy: Policy, horizon: int) -> bool:
+    """Runs the policy from the episode's start for `horizon` frames; True when its task holds then."""
+    model, data = ep.load()
+    observe, n = Observer.of(ep, model, horizon), substeps(ep, model)
     for t in range(horizon):
-        env = np.concatenate([np.concatenate([data.xpos[b], data.xquat[b]]) for b in bodies]) if bodies else np.zeros(0)
-        data.ctrl[:] = policy(data.qpos[qadr], env, t)
-        mujoco.mj_step(model, data, nstep=substeps)
+        data.ctrl[:] = policy(observe(data, t))
+        mujoco.mj_step(model, data, nstep=n)
     mujoco.mj_forward(model, data)
     return holds(ep.task, model, data)
 
@@ -121,7 +171,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("dataset")
     ap.add_argument("--holdout", type=int, default=5)
-    ap.add_argument("--epochs", type=int, default=60)
+    ap.add_argument("--epochs", type=int, default=150)
     ap.add_argument("--hidden", type=int, default=256)
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args()
@@ -131,22 +181,28 @@ def main() -> None:
     if len(eps) <= args.holdout:
         raise SystemExit(f"{len(eps)} episodes: need more than --holdout {args.holdout}")
     train, test = eps[: -args.holdout], eps[-args.holdout :]
-    xs, ys, lengths = [], [], []
+    # Long enough for the slowest demonstration, with a margin for a policy a little slower.
+    horizon = int(1.2 * max(len(ep.frames()["action"]) for ep in train))
+    xs: list[np.ndarray] = []
+    ys: list[np.ndarray] = []
     for ep in train:
-        f = ep.frames()
-        n = len(f["action"])
-        lengths.append(n)
-        env = f.get("observation.environment_state", np.zeros((n, 0)))
-        for t in range(n):
-            xs.append(features(f["observation.state"][t], env[t], t / n))
-            ys.append(f["action"][t])
+        x_ep, y_ep = demonstrations(ep, horizon)
+        xs += x_ep
+        ys += y_ep
     x, y = np.asarray(xs), np.asarray(ys)
+    # A joint's target is learnt as its step from where the joint is (the observation's first
+    # entries are the joint positions, in the state's order): one reach looks alike wherever
+    # the arm starts, and an error does not throw the arm across the room.
+    state = eps[0].info["features"]["observation.state"]["names"]
+    steps = [(a, state.index(n)) for a, n in enumerate(eps[0].info["features"]["action"]["names"]) if n in state]
+    rel = np.zeros((x.shape[1], y.shape[1]))
+    for a, q in steps:
+        rel[q, a] = 1.0
     mlp = Mlp.new(x.shape[1], y.shape[1], args.hidden, rng)
-    loss = mlp.fit(x, y, args.epochs, rng)
-    horizon = int(np.mean(lengths))
+    loss = mlp.fit(x, y - x @ rel, args.epochs, rng)
     lo, hi = y.min(0), y.max(0)
-    bc = sum(rollout(ep, lambda s, e, t: mlp(features(s, e, t / horizon)), horizon) for ep in test)
-    rand = sum(rollout(ep, lambda s, e, t: rng.uniform(lo, hi), horizon) for ep in test)
+    bc = sum(rollout(ep, lambda o: mlp(o) + o @ rel, horizon) for ep in test)
+    rand = sum(rollout(ep, lambda _o: rng.uniform(lo, hi), horizon) for ep in test)
     print(f"trained on {len(train)} episodes ({len(x)} frames), final loss {loss:.4f}")
     print(f"behaviour cloning: {bc}/{len(test)} held-out episodes solved ({100 * bc / len(test):.0f} %)")
     print(f"random policy:     {rand}/{len(test)} ({100 * rand / len(test):.0f} %)")

@@ -17,7 +17,8 @@ from math import cos, pi, radians, sin, sqrt, tan
 from typing import Any
 
 import cadquery as cq
-from refs import CLEAR, INCH, SWG16, TAP, dev, heldout
+
+from refs import CLEAR, INCH, SWG16, TAP, dev, heldout, heldout2
 
 Shape = Any  # a CadQuery solid; cadquery ships no type information
 I = INCH  # noqa: E741 - an inch, written the way the descriptions write it
@@ -350,6 +351,47 @@ def programs() -> dict[str, Callable[[], Shape]]:
     return p
 
 
+def programs_v2() -> dict[str, Callable[[], Shape]]:
+    """The held-out v2 parts (heldout2.tsv)."""
+    p: dict[str, Callable[[], Shape]] = {}
+    p["WH2_001"] = lambda: tube(12, 6.4, 0, 15)
+    p["WH2_002"] = lambda: cut(box(200, 80, 12), *holes(13.5, [(-80, 0), (80, 0)]))
+    p["WH2_003"] = lambda: on_edges(cz(25, 0, 180), "%CIRCLE", "chamfer", 2)
+    p["WH2_004"] = lambda: cut(
+        fuse(cz(120, 0, 15), cz(60, 15, 25)), cz(40, -1, 26), *holes(CLEAR[8], pcd(6, 95), -1, 16)
+    )
+    p["WH2_005"] = lambda: cut(cz(8, 0, 20), cz(TAP[4], -1, 21))
+    p["WH2_006"] = lambda: tube(33.7, 28.5, 0, 400)
+    p["WH2_007"] = lambda: tube(37, 21, 0, 3)
+    p["WH2_008"] = lambda: cut(hexbar(18, 10.8), cz(TAP[12], -1, 12))
+    p["WH2_009"] = lambda: on_edges(tube(22, 16, 0, 30), R(1), "chamfer", 1)
+    p["WH2_010"] = lambda: cut(box(70, 70, 3), cz(38.1, -5, 5), *holes(5, corners(47.14, 47.14)))
+    p["WH2_011"] = lambda: tube(90, 82, 0, 150)
+    p["WH2_012"] = lambda: cut(box(60, 40, 25), *holes(TAP[6], [(-20, 0), (20, 0)]))
+    bot = 14 - 2 * 10 * tan(radians(19))
+    groove = [(0, 0), (50, 0), (50, 8), (40, 15 - bot / 2), (40, 15 + bot / 2), (50, 22), (50, 30), (0, 30)]
+    p["WH2_013"] = lambda: cut(revolve(groove), cz(25, -1, 31), span(0, 12.5 + 3.3, -4, 4, -1, 31))
+    key = span(0, 2 * I, -0.09375 * I, 0.09375 * I, (0.375 - 0.09375) * I, I)
+    p["WH2_014"] = lambda: cut(cx(0.75 * I, 0, 8 * I), key)
+    p["WH2_015"] = lambda: cut(tube(2 * I, 1.5 * I, 0, I), cx(0.201 * I, 0, 2 * I, 0, 0.5 * I))
+    p["WH2_016"] = lambda: hexbar(0.875 * I, 3 * I)
+    p["WH2_017"] = lambda: cut(on_edges(cz(150, 0, 10), "%CIRCLE", "fillet", 2), cz(50, -1, 11))
+    legs = [span(0, 60, 0, 40, 0, 5), span(0, 5, 0, 40, 0, 60)]
+    bores = [cz(6.6, -1, 6, 20, 20), cz(6.6, -1, 6, 45, 20), cx(6.6, -1, 6, 20, 20), cx(6.6, -1, 6, 20, 45)]
+    p["WH2_018"] = lambda: cut(fuse(*legs), *bores)
+    r5 = 20 / (2 * sin(radians(36)))
+    p["WH2_019"] = lambda: ngon(5, 2 * r5, 15)
+    p["WH2_020"] = lambda: revolve([(0, 0), (30, 0), (15, 40), (0, 40)])
+    arc = (30 * cos(pi / 4), 30 * sin(pi / 4))
+    p["WH2_021"] = lambda: cq.Workplane("XY").lineTo(30, 0).threePointArc(arc, (0, 30)).close().extrude(100).val()
+    p["WH2_022"] = lambda: cut(tube(25, 10, 0, 40), cx(TAP[4], 0, 20, 0, 10), cx(TAP[4], 0, 20, 0, 30))
+    web = [cz(8.5, -1, 5, x, 20) for x in (20, 50, 80)]
+    p["WH2_023"] = lambda: cut(span(0, 100, 0, 40, 0, 30), span(-1, 101, 4, 36, 4, 31), *web)
+    p["WH2_024"] = lambda: cz(35, 0, 50)
+    p["WH2_025"] = lambda: cut(hexbar(22, 60), cy(8, -20, 20, 0, 30))
+    return p
+
+
 def rack_program(module: float, pressure_deg: float, face: float, height: float, teeth: int) -> Shape:
     pitch = pi * module
     slope = tan(radians(pressure_deg))
@@ -382,8 +424,8 @@ def measure(shape: Shape) -> tuple[list[float], float, int, bool]:
 
 
 def main(argv: list[str]) -> int:
-    refs = heldout() | dev()
-    progs = programs()
+    refs = heldout() | dev() | heldout2()
+    progs = programs() | programs_v2()
     wanted = argv or sorted(refs)
     problems = 0
     worst_e = worst_v = 0.0

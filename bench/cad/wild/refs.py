@@ -1,4 +1,4 @@
-"""Independent references for the wild part corpus (bench/cad/wild/dev.tsv and heldout.tsv).
+"""Independent references for the wild part corpus (bench/cad/wild/dev.tsv, heldout.tsv and heldout2.tsv).
 
 Every part a description asks for gets its bounding box and volume here, worked out by hand
 from the description's words as closed formulas: prisms and solids of revolution, Pappus for
@@ -33,7 +33,7 @@ from collections.abc import Callable
 from math import acos, asin, cos, pi, radians, sin, sqrt, tan
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SUITES = ("heldout.tsv", "dev.tsv")
+SUITES = ("heldout.tsv", "dev.tsv", "heldout2.tsv")
 OUT = os.path.join(HERE, "refs.tsv")
 
 INCH = 25.4
@@ -414,6 +414,44 @@ def dev() -> dict[str, Ref]:
     return t
 
 
+def heldout2() -> dict[str, Ref]:
+    """The held-out v2 parts (frozen 2026-11-27)."""
+    t: dict[str, Ref] = {}
+    t["WH2_001"] = ((15, 12, 12), tube(12, 6.4, 15))
+    t["WH2_002"] = ((200, 80, 12), 200 * 80 * 12 - 2 * cyl(13.5, 12))
+    t["WH2_003"] = ((180, 25, 25), cyl(25, 180) - 2 * chamfer_outer(12.5, 2))
+    t["WH2_004"] = ((120, 120, 25), cyl(120, 15) + cyl(60, 10) - cyl(40, 25) - 6 * cyl(CLEAR[8], 15))
+    t["WH2_005"] = ((20, 8, 8), cyl(8, 20) - cyl(TAP[4], 20))
+    t["WH2_006"] = ((400, 33.7, 33.7), tube(33.7, 33.7 - 2 * 2.6, 400))
+    t["WH2_007"] = ((37, 37, 3), tube(37, 21, 3))
+    t["WH2_008"] = ((across_corners(18), 18, 10.8), hexagon(18) * 10.8 - cyl(TAP[12], 10.8))
+    t["WH2_009"] = ((30, 22, 22), tube(22, 16, 30) - 2 * chamfer_outer(11, 1))
+    t["WH2_010"] = ((70, 70, 3), 70 * 70 * 3 - cyl(38.1, 3) - 4 * cyl(5, 3))
+    t["WH2_011"] = ((150, 90, 90), tube(90, 82, 150))
+    t["WH2_012"] = ((60, 40, 25), 60 * 40 * 25 - 2 * cyl(TAP[6], 25))
+    blank = cyl(100, 30) - cyl(25, 30) - keyway_in_bore(12.5, 8, 3.3) * 30 - v_groove(50, 14, 10, 38)
+    t["WH2_013"] = ((100, 100, 30), blank)
+    # A 3/16 x 3/32 keyway 2 in long on a 3/4 in shaft (depth from the shaft's surface, t1).
+    t["WH2_014"] = inch((8, 0.75, 0.75), cyl(0.75, 8) - keyway_on_shaft(0.375, 0.1875, 0.09375) * 2)
+    t["WH2_015"] = inch((2, 2, 1), tube(2, 1.5, 1) - radial_hole(0.201, 0.75, 1.0))
+    t["WH2_016"] = inch((3, across_corners(0.875), 0.875), hexagon(0.875) * 3)
+    t["WH2_017"] = ((150, 150, 10), tube(150, 50, 10) - 2 * fillet_outer(75, 2))
+    # Two 60 x 40 legs of 5 mm plate sharing the 5 x 5 corner, less two holes in each leg.
+    t["WH2_018"] = ((60, 60, 40), 40 * 5 * (60 + 60 - 5) - 4 * cyl(6.6, 5))
+    # A regular pentagon of side s lying on a side: circumradius R = s / (2 sin 36°), width
+    # corner to corner 2R sin 72°, height R (1 + cos 36°).
+    r5 = 20 / (2 * sin(radians(36)))
+    t["WH2_019"] = ((2 * r5 * sin(radians(72)), r5 * (1 + cos(radians(36))), 15), ngon_ac(5, 2 * r5) * 15)
+    t["WH2_020"] = ((60, 60, 40), pi * 40 * (30 * 30 + 30 * 15 + 15 * 15) / 3)
+    t["WH2_021"] = ((100, 30, 30), disc(60) / 4 * 100)
+    t["WH2_022"] = ((40, 25, 25), tube(25, 10, 40) - 2 * radial_hole(TAP[4], 5, 12.5))
+    t["WH2_023"] = ((100, 40, 30), (40 * 30 - 32 * 26) * 100 - 3 * cyl(8.5, 4))
+    t["WH2_024"] = ((50, 35, 35), cyl(35, 50))
+    # The cross hole runs between two parallel flats, 22 apart: a plain cylinder.
+    t["WH2_025"] = ((60, across_corners(22), 22), hexagon(22) * 60 - cyl(8, 22))
+    return t
+
+
 def rack(module: float, pressure_deg: float, face: float, height: float, teeth: int) -> Ref:
     """A straight-sided rack: every tooth a trapezoid (addendum 1 m, dedendum 1.25 m, flanks
     at the pressure angle, thickness half a pitch on the pitch line), centred in its pitch,
@@ -442,7 +480,7 @@ def suite_rows() -> list[dict[str, str]]:
 
 def table() -> list[tuple[str, str, str]]:
     """(id, bbox, volume) for every description, in file order; refusals carry no numbers."""
-    refs = heldout() | dev()
+    refs = heldout() | dev() | heldout2()
     out: list[tuple[str, str, str]] = []
     problems: list[str] = []
     seen: set[str] = set()

@@ -109,6 +109,7 @@ def main(argv: list[str]) -> int:
     ap.add_argument("suite")
     ap.add_argument("--bin", default=None, help="the scenewright binary (default: target/release, else target/debug)")
     ap.add_argument("--json", default=None, help="write every row's outcome here")
+    ap.add_argument("--summary", action="store_true", help="no per-part lines (for a held-out set)")
     args = ap.parse_args(argv)
     binary = args.bin or next(
         (
@@ -142,7 +143,7 @@ def main(argv: list[str]) -> int:
     print(f"{os.path.basename(args.suite)}: " + ", ".join(f"{k} {by['all'][k]}" for k in kinds))
     for key in sorted(k for k in by if k != "all"):
         print(f"  {key:11s} " + " ".join(f"{k} {by[key][k]}" for k in kinds if by[key][k]))
-    for o in outcomes:
+    for o in [] if args.summary else outcomes:
         if o["outcome"] in ("wrong", "error"):
             print(f"  {o['outcome']}: {o['id']} {o['stderr'][:120]}")
     if args.json:

@@ -95,6 +95,9 @@ struct CategoryInfo {
     placement: sw_geom::PlacementKind,
     movable: bool,
     synonyms: &'static [&'static str],
+    /// What it is a kind of ("pot" for a stock pot): the words a suite's keys and a
+    /// reader may name it by besides its own names.
+    is_a: &'static [&'static str],
     tags: &'static [&'static str],
     default_size_m: [f64; 3],
 }
@@ -128,6 +131,7 @@ fn category_info(c: &'static sw_catalog::Category) -> CategoryInfo {
         placement: c.placement,
         movable: c.movable,
         synonyms: c.synonyms,
+        is_a: c.is_a,
         tags: c.tags,
         default_size_m: c.default_size(),
     }

@@ -28,6 +28,8 @@ use crate::output::{print, print_json};
 
 /// Attempts a slot makes before it is given up.
 const TRIES: u32 = 20;
+/// The outcome logged for a variant whose start already satisfied the task.
+const RESAMPLED: &str = "resampled";
 /// Seeds tried up front to find a scene the task can be bound to.
 const PREFLIGHT_TRIES: u64 = 5;
 /// Largest episodes per prompt, frames per second, image side.
@@ -298,6 +300,8 @@ pub(crate) struct Summary {
     pub resumed_episodes: usize,
     pub removed_partial: usize,
     pub gave_up: usize,
+    /// Variants drawn again because their start already satisfied the task (not attempts).
+    pub resampled: usize,
     pub interrupted: bool,
 }
 
@@ -326,6 +330,7 @@ struct Stats {
     frames: u64,
     bytes: u64,
     gave_up: usize,
+    resampled: usize,
 }
 
 pub(crate) fn run(a: DemosArgs) -> Result<u8, Failure> {
@@ -422,6 +427,7 @@ pub(crate) fn run(a: DemosArgs) -> Result<u8, Failure> {
         resumed_episodes: resumed.episodes,
         removed_partial: resumed.removed_partial,
         gave_up: st.gave_up,
+        resampled: st.resampled,
         interrupted: stop.load(Ordering::SeqCst) && episodes < wanted,
     };
     report(&summary, a.json);
@@ -438,17 +444,26 @@ fn worker(sh: &Shared<'_>) {
     while !sh.stop.load(Ordering::SeqCst) {
         let Some(p) = lock(&sh.pending).pop() else { break };
         let mut done = false;
-        for _ in 0..TRIES {
+        let (mut tries, mut resampled) = (0, 0);
+        // A start that already satisfies the task poses no task: the variant is drawn
+        // again without using up a try (at most TRIES times; after that each counts).
+        while tries < TRIES {
             if sh.stop.load(Ordering::SeqCst) {
                 return;
             }
             let seed = sh.seeds[p].fetch_add(1, Ordering::SeqCst);
             match attempt(sh, p, seed) {
-                Ok(true) => {
+                Ok(Tried::Episode) => {
                     done = true;
                     break;
                 }
-                Ok(false) => {}
+                Ok(Tried::Failed) => tries += 1,
+                Ok(Tried::Resampled) => {
+                    resampled += 1;
+                    if resampled > TRIES {
+                        tries += 1;
+                    }
+                }
                 Err(Stop::Interrupted) => return,
                 Err(Stop::Fatal(message)) => {
                     lock(&sh.fatal).get_or_insert(message);
@@ -464,6 +479,14 @@ fn worker(sh: &Shared<'_>) {
     }
 }
 
+/// What became of one attempt.
+enum Tried {
+    Episode,
+    Failed,
+    /// The variant's start already satisfied the task: no attempt, a new variant.
+    Resampled,
+}
+
 enum Stop {
     Interrupted,
     Fatal(String),
@@ -473,8 +496,8 @@ fn fatal(e: impl std::fmt::Display) -> Stop {
     Stop::Fatal(e.to_string())
 }
 
-/// One attempt at an episode of prompt `p` with `seed`: true when it became an episode.
-fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<bool, Stop> {
+/// One attempt at an episode of prompt `p` with `seed`.
+fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<Tried, Stop> {
     let started = Instant::now();
     let spec = sh.dir.spec();
     let job = &sh.jobs[p];
@@ -490,6 +513,11 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<bool, Stop> {
             seconds: (started.elapsed().as_secs_f64() * 1000.0).round() / 1000.0,
         };
         let mut st = lock(&sh.stats);
+        if outcome == RESAMPLED {
+            st.resampled += 1;
+            drop(st);
+            return sh.dir.log_attempt(&line).map_err(fatal);
+        }
         st.attempts += 1;
         if let Some(f) = family {
             let e = st.families.entry(f).or_insert((0, 0));
@@ -506,11 +534,14 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<bool, Stop> {
         drop(st);
         sh.dir.log_attempt(&line).map_err(fatal)
     };
-    let fail = |outcome: &str, reason: String, family: Option<String>| -> Result<bool, Stop> {
+    let fail = |outcome: &str, reason: String, family: Option<String>| -> Result<Tried, Stop> {
         let _ = std::fs::remove_dir_all(&work);
-        record(outcome, Some(reason.chars().take(160).collect()), family, None)?;
+        record(outcome, Some(reason.chars().take(240).collect()), family, None)?;
+        if outcome == RESAMPLED {
+            return Ok(Tried::Resampled);
+        }
         sh.progress.failed();
-        Ok(false)
+        Ok(Tried::Failed)
     };
     // A verified scene variant.
     let opts = Options { seed, cancel: Some(sh.stop.clone()), ..Options::default() };
@@ -546,8 +577,10 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<bool, Stop> {
         .map(|o| o.name.clone())
         .collect();
     let vary = if spec.randomise { sw_expert::Vary::ALL } else { sw_expert::Vary::NONE };
+    let focus: Vec<String> =
+        task.goals.iter().flat_map(|g| g.bodies()).map(str::to_string).filter(|b| movable.contains(b)).collect();
     let (xml, randomisation) =
-        match sw_expert::episode_scene(&package_xml, spec.fps, seed, &movable, &named_colour, vary) {
+        match sw_expert::episode_scene(&package_xml, spec.fps, seed, &movable, &named_colour, &focus, vary) {
             Ok(x) => x,
             Err(e) => return fail("scene", e.to_string(), family),
         };
@@ -555,6 +588,7 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<bool, Stop> {
     let eopts = sw_expert::ExpertOptions { fps: spec.fps, seed, max_seconds: 30.0 * task.goals.len().max(1) as f64 };
     let ep = match sw_expert::solve(&pkg.join("scene.xml"), &task, &robot_model, &eopts) {
         Ok(ep) => ep,
+        Err(e @ sw_expert::ExpertError::AlreadySatisfied(_)) => return fail(RESAMPLED, e.to_string(), family),
         Err(e) => return fail(e.kind(), e.to_string(), family),
     };
     if !ep.success {
@@ -684,7 +718,7 @@ fn commit(
     image_stats: BTreeMap<String, sw_lerobot::FeatureStats>,
     randomisation: sw_expert::Randomisation,
     started: Instant,
-) -> Result<bool, Stop> {
+) -> Result<Tried, Stop> {
     let spec = sh.dir.spec();
     let actions = f32_rows(&ep.recording.actions);
     let states = f32_rows(&ep.recording.states);
@@ -748,7 +782,7 @@ fn commit(
             seconds: started.elapsed().as_secs_f64(),
         };
         sh.dir.log_attempt(&line).map_err(fatal)?;
-        return Ok(false);
+        return Ok(Tried::Failed);
     }
     let mut eps = lock(&sh.dir.episodes);
     let index = eps.len() as u64;
@@ -823,7 +857,7 @@ fn commit(
     }
     drop(last);
     sh.progress.made();
-    Ok(true)
+    Ok(Tried::Episode)
 }
 
 fn dir_size(p: &Path) -> u64 {
@@ -868,6 +902,9 @@ fn report(s: &Summary, json: bool) {
         s.attempts,
         if failures.is_empty() { String::new() } else { format!(" · discarded: {}", failures.join(", ")) }
     ));
+    if s.resampled > 0 {
+        lines.push(format!("redrawn  {} variants whose start already satisfied the task", s.resampled));
+    }
     for (f, (ok, n)) in &s.families {
         lines.push(format!("family   {f}: {ok}/{n}"));
     }

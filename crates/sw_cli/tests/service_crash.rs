@@ -4,8 +4,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use std::io::{BufRead, BufReader, Read, Write};
-use std::net::{SocketAddr, TcpStream};
+use std::io::{BufRead, BufReader};
+use std::net::SocketAddr;
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::sync::{Arc, Mutex};
@@ -13,30 +13,9 @@ use std::time::{Duration, Instant};
 
 use serde_json::{Value, json};
 
-const BIN: &str = env!("CARGO_BIN_EXE_scenewright");
+mod common;
 
-/// A child process that is killed when dropped, so a failing test leaves none behind.
-struct Proc(Child);
-
-impl std::ops::Deref for Proc {
-    type Target = Child;
-    fn deref(&self) -> &Child {
-        &self.0
-    }
-}
-
-impl std::ops::DerefMut for Proc {
-    fn deref_mut(&mut self) -> &mut Child {
-        &mut self.0
-    }
-}
-
-impl Drop for Proc {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
+use common::{BIN, Proc, http};
 
 /// A `scenewright serve`, and the address it printed.
 fn serve(data: &Path, workers: usize) -> (Proc, SocketAddr) {
@@ -44,27 +23,12 @@ fn serve(data: &Path, workers: usize) -> (Proc, SocketAddr) {
 }
 
 fn serve_on(data: &Path, database: Option<&str>, workers: usize) -> (Proc, SocketAddr) {
-    let mut child = Proc(
-        Command::new(BIN)
-            .args(["serve", "--addr", "127.0.0.1:0", "--lease-ms", "1500", "--workers", &workers.to_string(), "--data"])
-            .arg(data)
-            .args(database.map(|d| vec!["--database", d]).unwrap_or_default())
-            .stdin(Stdio::null())
-            .stdout(Stdio::null())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap(),
-    );
-    let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
-    let addr = loop {
-        let line = lines.next().expect("serve exited before listening").unwrap();
-        if let Some(a) = line.strip_prefix("listening on http://") {
-            break a.trim().parse().unwrap();
-        }
-    };
-    // Keep draining its log so it never blocks on a full pipe.
-    std::thread::spawn(move || for _ in lines {});
-    (child, addr)
+    let workers = workers.to_string();
+    let mut args = vec!["--lease-ms", "1500", "--workers", &workers];
+    if let Some(d) = database {
+        args.extend(["--database", d]);
+    }
+    common::serve(data, &args)
 }
 
 fn worker(data: &Path, workers: usize) -> Proc {
@@ -83,27 +47,6 @@ fn worker_on(data: &Path, database: Option<&str>, workers: usize) -> Proc {
             .spawn()
             .unwrap(),
     )
-}
-
-fn http(addr: SocketAddr, method: &str, path: &str, token: Option<&str>, body: Option<Value>) -> (u16, Value) {
-    let mut s = TcpStream::connect(addr).unwrap();
-    let body = body.map(|b| b.to_string()).unwrap_or_default();
-    let mut req =
-        format!("{method} {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\nContent-Length: {}\r\n", body.len());
-    if !body.is_empty() {
-        req.push_str("Content-Type: application/json\r\n");
-    }
-    if let Some(t) = token {
-        req.push_str(&format!("Authorization: Bearer {t}\r\n"));
-    }
-    req.push_str("\r\n");
-    req.push_str(&body);
-    s.write_all(req.as_bytes()).unwrap();
-    let mut buf = String::new();
-    s.read_to_string(&mut buf).unwrap();
-    let status = buf.split(' ').nth(1).unwrap().parse().unwrap();
-    let body = buf.split_once("\r\n\r\n").map(|x| x.1).unwrap_or("");
-    (status, serde_json::from_str(body).unwrap_or(Value::Null))
 }
 
 fn login(addr: SocketAddr) -> String {

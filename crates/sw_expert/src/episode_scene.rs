@@ -54,21 +54,31 @@ impl Vary {
     pub const NONE: Vary = Vary { colours: false, physics: false, lighting: false, camera: false };
 }
 
+/// `impratio` of an episode's scene (see `episode_scene`).
+const GRASP_IMPRATIO: f64 = 10.0;
+
 /// Writes the episode's `scene.xml` text from the package's, for `fps`, with the
 /// randomisation of `seed` applied to the `movable` bodies. Bodies in `named_colour` keep
-/// the hue the prompt named ("the red cube" stays red; only its shade varies).
+/// the hue the prompt named ("the red cube" stays red; only its shade varies). The front
+/// camera is aimed at the `focus` bodies (the task's), keeping its direction.
 pub fn episode_scene(
     package_xml: &str,
     fps: u32,
     seed: u64,
     movable: &[String],
     named_colour: &[String],
+    focus: &[String],
     vary: Vary,
 ) -> Result<(String, Randomisation), ExpertError> {
     let mut root = Element::parse(package_xml).map_err(|e| ExpertError::Scene(format!("scene.xml: {}", e.message)))?;
     let (timestep, substeps) = frame_timing(fps);
     // The shortest text that reads back as the same double.
     root.section("option").set("timestep", format!("{timestep}"));
+    // Grasping: elliptic friction cones and a high ratio of frictional to normal
+    // impedance, as MuJoCo's documentation advises for things held by friction alone —
+    // with the defaults a held ball or bottle creeps out of the pads while carried.
+    root.section("option").set("cone", "elliptic");
+    root.section("option").set("impratio", format!("{GRASP_IMPRATIO}"));
     let mut rng = Rng::derive(seed, "episode");
     let mut r = Randomisation { seed, light_scale: 1.0, ..Randomisation::default() };
     // Materials by name, for colours.
@@ -117,6 +127,7 @@ pub fn episode_scene(
                 }
             }
         }
+        frame_front_camera(world, focus);
         if vary.camera {
             let off = [rng.range(-0.03, 0.03), rng.range(-0.03, 0.03), rng.range(-0.03, 0.03)];
             let turn = rng.range(-0.04, 0.04);
@@ -196,6 +207,44 @@ fn scale_inertial(e: &mut Element, s: f64) {
         }
     }
 }
+
+/// Aims the `front` camera at the top-level bodies named in `focus`, from its own
+/// direction, near enough that they fill the middle of the image: the scene's camera frames
+/// the whole work area around the robot, which leaves the things a task moves small and at
+/// the image's edge.
+fn frame_front_camera(world: &mut Element, focus: &[String]) {
+    let pts: Vec<[f64; 3]> = world
+        .children
+        .iter()
+        .filter(|b| b.name == "body" && b.get("name").is_some_and(|n| focus.iter().any(|f| f == n)))
+        .filter_map(|b| b.get("pos").map(parse_nums))
+        .filter(|p| p.len() == 3)
+        .map(|p| [p[0], p[1], p[2] + FOCUS_LIFT])
+        .collect();
+    if pts.is_empty() {
+        return;
+    }
+    let n = pts.len() as f64;
+    let c = [0, 1, 2].map(|i| pts.iter().map(|p| p[i]).sum::<f64>() / n);
+    let spread = pts.iter().map(|p| ((p[0] - c[0]).powi(2) + (p[1] - c[1]).powi(2)).sqrt()).fold(0.0, f64::max);
+    for cam in world.children.iter_mut().filter(|e| e.name == "camera" && e.get("name") == Some("front")) {
+        let Some(xy) = cam.get("xyaxes").map(parse_nums).filter(|v| v.len() == 6) else { continue };
+        // The camera looks along −z, z = x × y.
+        let z = [xy[1] * xy[5] - xy[2] * xy[4], xy[2] * xy[3] - xy[0] * xy[5], xy[0] * xy[4] - xy[1] * xy[3]];
+        let fovy = cam.get("fovy").and_then(|f| f.trim().parse::<f64>().ok()).unwrap_or(45.0);
+        let half = (0.5 * fovy).to_radians().tan().max(0.1);
+        let dist = ((spread + FOCUS_MARGIN) / half).clamp(FOCUS_NEAREST, FOCUS_FARTHEST);
+        cam.set("pos", nums(&[c[0] + z[0] * dist, c[1] + z[1] * dist, c[2] + z[2] * dist]));
+    }
+}
+
+/// Height above a focus body's origin that the front camera aims at, m (the hand works there).
+const FOCUS_LIFT: f64 = 0.08;
+/// Room left around the focus bodies in the front camera's view, m.
+const FOCUS_MARGIN: f64 = 0.12;
+/// The front camera's distance from what it frames, m.
+const FOCUS_NEAREST: f64 = 0.6;
+const FOCUS_FARTHEST: f64 = 2.5;
 
 fn parse_nums(s: &str) -> Vec<f64> {
     s.split_whitespace().filter_map(|x| x.parse().ok()).collect()

@@ -8,7 +8,7 @@ use sw_geom::Rng;
 use sw_task::{Predicate, Snapshot, Task};
 
 use crate::grasp::{APPROACH, Grasp, free_spots, grasps, local_box, support_under};
-use crate::ik::{Target, fk, solve_ik};
+use crate::ik::{Target, fk, solve_ik, solve_ik_all};
 use crate::math::{V3, add, rot_z, sub};
 use crate::motion::{Allow, Checker, Held, plan};
 use crate::rig::Rig;
@@ -27,6 +27,46 @@ const CARRY_SPEED: f64 = 0.6;
 const TURNS: [f64; 4] = [0.0, std::f64::consts::FRAC_PI_2, -std::f64::consts::FRAC_PI_2, std::f64::consts::PI];
 /// IK restarts per pose.
 const RESTARTS: usize = 12;
+/// Pitches of the hand tried for a grasp, in order (each both ways), rad.
+const PITCHES: [f64; 3] = [0.0, 0.35, 0.7];
+/// Grasps tried when the thing slips out on the lift.
+const GRASP_TRIES: usize = 2;
+
+/// A collision-free joint solution, or why there is none.
+enum Posture {
+    Free(Vec<f64>),
+    NoIk,
+    /// Every posture found collides (the last pair of bodies hit).
+    Hit(Option<(usize, usize)>),
+}
+
+/// Why the grasp candidates of a thing were rejected, for the attempt's log line.
+#[derive(Debug, Default)]
+struct Rejections {
+    tried: usize,
+    ik_above: usize,
+    ik_at: usize,
+    /// Collisions, by the pair of bodies' names.
+    hits: std::collections::BTreeMap<String, usize>,
+}
+
+impl Rejections {
+    fn hit(&mut self, model: &MjModel, pair: Option<(usize, usize)>) {
+        let name = |b: usize| model.id_to_name(MjtObjBase::mjOBJ_BODY, b).unwrap_or("?").to_string();
+        let key = pair.map_or_else(|| "?".to_string(), |(a, b)| format!("{}–{}", name(a), name(b)));
+        *self.hits.entry(key).or_insert(0) += 1;
+    }
+}
+
+impl std::fmt::Display for Rejections {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} tried: {} no IK above, {} no IK at the grasp", self.tried, self.ik_above, self.ik_at)?;
+        for (k, n) in &self.hits {
+            write!(f, ", {n} hit {k}")?;
+        }
+        Ok(())
+    }
+}
 
 pub(crate) struct Expert<'a, 'm> {
     pub model: &'m MjModel,
@@ -79,6 +119,31 @@ impl<'a, 'm> Expert<'a, 'm> {
         out.ok_or_else(|| ExpertError::Path("no collision-free path for the arm was found".into()))
     }
 
+    /// Joints that put the tool at `t` free of collisions: the nearest posture, else the
+    /// arm's other postures (elbow, shoulder, wrist flipped) from restarts over the whole
+    /// joint range.
+    fn posture(&mut self, near: &[f64], t: &Target, allow: Allow) -> Posture {
+        let Some(first) = self.ik(near, t) else { return Posture::NoIk };
+        let mut c = Checker::new(self.rig, allow);
+        let free = c.free(&mut self.scratch, &first);
+        if free {
+            self.stats.collision_checks += c.checks;
+            return Posture::Free(first);
+        }
+        let mut hit = c.hit;
+        self.stats.ik_solves += 1;
+        let alt = solve_ik_all(self.rig, &mut self.scratch, near, t, RESTARTS, &mut self.rng);
+        for q in alt.into_iter().filter(|q| crate::motion::dist(q, &first) > 0.3) {
+            if c.free(&mut self.scratch, &q) {
+                self.stats.collision_checks += c.checks;
+                return Posture::Free(q);
+            }
+            hit = c.hit;
+        }
+        self.stats.collision_checks += c.checks;
+        Posture::Hit(hit)
+    }
+
     /// Runs every goal in order.
     pub fn solve(&mut self, task: &Task) -> Result<(), ExpertError> {
         // Let the scene come to rest with the gripper open.
@@ -91,6 +156,7 @@ impl<'a, 'm> Expert<'a, 'm> {
     }
 
     fn goal(&mut self, g: &Predicate) -> Result<(), ExpertError> {
+        self.run.holding = None;
         let Some(object) = g.subject() else {
             return Err(ExpertError::Unsupported(format!("the expert does not drive mobile bases yet ({})", g.name())));
         };
@@ -118,8 +184,35 @@ impl<'a, 'm> Expert<'a, 'm> {
         self.place(object, held, &dests)
     }
 
-    /// Grasps `object` and lifts it; the thing's pose in the hand.
+    /// Grasps `object` and lifts it, trying again (from a fresh look at where it lies)
+    /// when it slips out on the lift; the thing's pose in the hand.
     fn pick(&mut self, object: &str, body: usize, qadr: usize) -> Result<Held, ExpertError> {
+        let mut last = None;
+        for _ in 0..GRASP_TRIES {
+            match self.pick_once(object, body, qadr) {
+                Ok(h) => return Ok(h),
+                Err(e @ ExpertError::Failed(_)) => {
+                    // Let go, back off upwards, and look again.
+                    self.run.grip(self.rig, self.rig.grip_open, 0.4)?;
+                    self.sync_scratch();
+                    let here = self.run.arm_target(self.rig);
+                    let (tp, tr) = self.rig.tcp_pose(&self.scratch);
+                    let up = Target { pos: add(tp, [0.0, 0.0, 0.5 * APPROACH]), rot: tr };
+                    if let Ok(back) = self.line(&here, tp, &up, 2) {
+                        self.run.follow(self.rig, &back, 0.5)?;
+                    }
+                    self.run.hold(self.rig, 0.3)?;
+                    last = Some(e);
+                }
+                Err(e) => return Err(e),
+            }
+        }
+        Err(last.unwrap_or_else(|| ExpertError::Failed(format!("{object} could not be picked"))))
+    }
+
+    /// One grasp and lift of `object`. Candidates straight from above first; when none of
+    /// them has a free joint solution, the same grasps with the hand pitched more and more.
+    fn pick_once(&mut self, object: &str, body: usize, qadr: usize) -> Result<Held, ExpertError> {
         self.sync_scratch();
         let snap = self.snapshot();
         let bounds = snap
@@ -130,46 +223,66 @@ impl<'a, 'm> Expert<'a, 'm> {
         let support = support_under(&snap, object);
         let candidates: Vec<Grasp> = grasps(self.model, &self.scratch, self.rig, body, object, &bounds, support)?;
         let now = self.run.arm_target(self.rig);
-        // The first candidate whose approach and grasp poses are solvable and free.
-        let mut chosen: Option<(Grasp, Vec<f64>, Vec<f64>)> = None;
-        let mut best_d = f64::INFINITY;
-        for c in &candidates {
-            self.rig.set_fingers(&mut self.scratch, self.rig.opening_for(c.width).1);
-            let Some(q_above) = self.ik(&now, &c.above(APPROACH)) else { continue };
-            let Some(q_at) = self.ik(&q_above, &c.at) else { continue };
-            let mut free_check = Checker::new(self.rig, Allow::default());
-            let ok_above = free_check.free(&mut self.scratch, &q_above);
-            let mut touch = Checker::new(self.rig, Allow { held: None, touch: Some((body, c.geom)) });
-            let ok_at = touch.free(&mut self.scratch, &q_at);
-            self.stats.collision_checks += free_check.checks + touch.checks;
-            if !(ok_above && ok_at) {
-                continue;
+        let mut why = Rejections::default();
+        let mut chosen: Option<(Grasp, Vec<f64>)> = None;
+        for pitch in PITCHES {
+            let mut best_d = f64::INFINITY;
+            for c0 in &candidates {
+                let signs: &[f64] = if pitch == 0.0 { &[1.0] } else { &[1.0, -1.0] };
+                for sign in signs {
+                    let c = c0.pitched(sign * pitch);
+                    why.tried += 1;
+                    self.rig.set_fingers(&mut self.scratch, self.rig.opening_for(c.width).1);
+                    let q_above = match self.posture(&now, &c.above(APPROACH), Allow::default()) {
+                        Posture::Free(q) => q,
+                        Posture::NoIk => {
+                            why.ik_above += 1;
+                            continue;
+                        }
+                        Posture::Hit(pair) => {
+                            why.hit(self.model, pair);
+                            continue;
+                        }
+                    };
+                    let Some(q_at) = self.ik(&q_above, &c.at) else {
+                        why.ik_at += 1;
+                        continue;
+                    };
+                    let mut touch = Checker::new(self.rig, Allow { held: None, touch: Some((body, c.geom)) });
+                    let free_at = touch.free(&mut self.scratch, &q_at);
+                    self.stats.collision_checks += touch.checks;
+                    if !free_at {
+                        why.hit(self.model, touch.hit);
+                        continue;
+                    }
+                    let d = crate::motion::dist(&now, &q_above);
+                    if d < best_d {
+                        best_d = d;
+                        chosen = Some((c, q_above));
+                    }
+                }
             }
-            let d = crate::motion::dist(&now, &q_above);
-            if d < best_d {
-                best_d = d;
-                chosen = Some((*c, q_above, q_at));
+            if chosen.is_some() {
+                break;
             }
         }
         self.sync_scratch();
-        let (grasp, q_above, q_at) = chosen.ok_or_else(|| {
-            ExpertError::Ik(format!("no grasp of {object} is reachable without collision ({} tried)", candidates.len()))
-        })?;
+        let (grasp, q_above) = chosen
+            .ok_or_else(|| ExpertError::Ik(format!("no grasp of {object} is reachable without collision ({why})")))?;
         let path = self.plan_to(Allow::default(), &q_above)?;
         self.run.ctrl[self.rig.grip_act] = self.rig.opening_for(grasp.width).0;
         self.run.follow(self.rig, &path, 1.0)?;
         self.sync_scratch();
         let down = self.line(&q_above, grasp.above(APPROACH).pos, &grasp.at, 4)?;
-        debug_assert!(q_at.len() == self.rig.n());
-        self.run.follow(self.rig, &down, 0.35)?;
-        self.run.grip(self.rig, self.rig.grip_closed, 0.6)?;
+        self.run.follow(self.rig, &down, 0.3)?;
+        self.run.grip(self.rig, self.rig.grip_closed, 0.7)?;
         let z0 = self.run.data.xpos()[body][2];
         self.sync_scratch();
         let here = self.run.arm_target(self.rig);
         let (tp, tr) = self.rig.tcp_pose(&self.scratch);
         let up = Target { pos: add(tp, [0.0, 0.0, LIFT]), rot: tr };
         let lift = self.line(&here, tp, &up, 4)?;
-        self.run.follow(self.rig, &lift, 0.4)?;
+        self.run.follow(self.rig, &lift, 0.3)?;
         let rise = self.run.data.xpos()[body][2] - z0;
         if rise < 0.5 * LIFT {
             return Err(ExpertError::Failed(format!(
@@ -177,7 +290,9 @@ impl<'a, 'm> Expert<'a, 'm> {
                 rise * 1000.0
             )));
         }
-        Ok(Held::grasped(self.rig, &self.run.data, body, qadr))
+        let held = Held::grasped(self.rig, &self.run.data, body, qadr);
+        self.run.holding = Some((held, self.rig.tcp));
+        Ok(held)
     }
 
     /// Where the thing's bottom centre may go for the goal, best first.
@@ -309,6 +424,8 @@ impl<'a, 'm> Expert<'a, 'm> {
     /// Carries the held thing so that its bottom centre comes to one of `dests`, lets go
     /// and retreats.
     fn place(&mut self, object: &str, held: Held, dests: &[V3]) -> Result<(), ExpertError> {
+        // Where it sits in the hand now (a ball may have turned between the pads).
+        let held = Held::grasped(self.rig, &self.run.data, held.body, held.qpos);
         let snap = self.snapshot();
         let me = snap.bodies.get(object).ok_or_else(|| ExpertError::Scene(format!("no {object}")))?;
         let bottom = [me.bounds.center()[0], me.bounds.center()[1], me.bounds.min[2]];
@@ -319,41 +436,40 @@ impl<'a, 'm> Expert<'a, 'm> {
         // The thing may be turned about the vertical on the way (a quarter or half turn):
         // the wrist often cannot keep the grasp's heading at the far place.
         let hand = sub(tp, bottom);
+        let mut why = Rejections::default();
+        let allow = Allow { held: Some(held), touch: None };
         'search: for d in dests.iter().take(12) {
             for turn in TURNS {
                 let rz = rot_z(turn);
                 let rot = crate::math::mat_mul(&rz, &tr);
                 let release = Target { pos: add(*d, crate::math::mat_vec(&rz, hand)), rot };
                 let above = Target { pos: add(release.pos, [0.0, 0.0, APPROACH]), rot };
-                let Some(q_above) = self.ik(&now, &above) else { continue };
-                let Some(q_rel) = self.ik(&q_above, &release) else { continue };
-                let mut c = Checker::new(self.rig, Allow { held: Some(held), touch: None });
-                let ok = c.free(&mut self.scratch, &q_above);
-                self.stats.collision_checks += c.checks;
-                if ok {
-                    chosen = Some((above, release, q_above, q_rel));
-                    break 'search;
+                why.tried += 1;
+                // The nearest posture above the place, or another when it collides.
+                match self.posture(&now, &above, allow) {
+                    Posture::Free(q_above) => {
+                        if self.ik(&q_above, &release).is_some() {
+                            chosen = Some((above, release, q_above));
+                            break 'search;
+                        }
+                        why.ik_at += 1;
+                    }
+                    Posture::NoIk => why.ik_above += 1,
+                    Posture::Hit(pair) => why.hit(self.model, pair),
                 }
             }
         }
         self.sync_scratch();
-        let (above, release, q_above, _q_rel) =
-            chosen.ok_or_else(|| ExpertError::Ik(format!("no place for {object} is reachable with it in the hand")))?;
+        let (above, release, q_above) = chosen.ok_or_else(|| {
+            ExpertError::Ik(format!("no place for {object} is reachable with it in the hand ({why})"))
+        })?;
         let path = self.plan_to(Allow { held: Some(held), touch: None }, &q_above)?;
+        // The run fails the frame the thing leaves the hand (Runner::holding).
         self.run.follow(self.rig, &path, CARRY_SPEED)?;
-        // Still in the hand?
-        let (tp2, tr2) = self.rig.tcp_pose(&self.run.data);
-        let expected = add(tp2, crate::math::mat_vec(&tr2, held.rel_pos));
-        let slip = crate::math::norm(sub(self.run.data.xpos()[held.body], expected));
-        if slip > 0.03 {
-            return Err(ExpertError::Failed(format!(
-                "{object} slipped in the hand while carried ({:.0} mm)",
-                slip * 1000.0
-            )));
-        }
         self.sync_scratch();
         let down = self.line(&q_above, above.pos, &release, 4)?;
-        self.run.follow(self.rig, &down, 0.35)?;
+        self.run.follow(self.rig, &down, 0.3)?;
+        self.run.holding = None;
         self.run.grip(self.rig, self.rig.grip_open, 0.5)?;
         self.sync_scratch();
         let here = self.run.arm_target(self.rig);

@@ -9,7 +9,7 @@ use sw_task::{Bounds, Snapshot};
 
 use crate::ExpertError;
 use crate::ik::Target;
-use crate::math::{M3, V3, add, col, cross, from_cols, mat_vec, quat_to_mat};
+use crate::math::{M3, V3, add, col, cross, from_cols, mat_mul, mat_vec, quat_to_mat, rot_axis, scale, sub};
 use crate::rig::Rig;
 
 /// Clearance kept between the gripper's opening and the thing, m.
@@ -59,9 +59,19 @@ pub(crate) struct Grasp {
 }
 
 impl Grasp {
-    /// The pose `APPROACH` above the grasp.
+    /// The pose `h` back from the grasp along the tool's approach axis (straight above it
+    /// for a top-down grasp).
     pub fn above(&self, h: f64) -> Target {
-        Target { pos: add(self.at.pos, [0.0, 0.0, h]), rot: self.at.rot }
+        Target { pos: sub(self.at.pos, scale(col(&self.at.rot, 2), h)), rot: self.at.rot }
+    }
+
+    /// The same grasp with the hand pitched by `angle` about the fingers' closing axis: the
+    /// pads close across the same width at the same point, the approach comes in slanted
+    /// (for things close to the arm's base or under an overhang, where straight down has
+    /// no joint solution or the forearm hits something).
+    pub fn pitched(&self, angle: f64) -> Grasp {
+        let closing = col(&self.at.rot, 1);
+        Grasp { at: Target { pos: self.at.pos, rot: mat_mul(&rot_axis(closing, angle), &self.at.rot) }, ..*self }
     }
 }
 

@@ -21,6 +21,8 @@ const ROT_TOL: f64 = 0.02;
 const ITERS: usize = 120;
 const DAMPING: f64 = 0.05;
 const MAX_STEP: f64 = 0.25;
+/// Two solutions closer than this (joint-space distance, rad) are the same posture.
+const DISTINCT: f64 = 0.3;
 
 /// Forward kinematics of the current qpos (positions, then the quantities the Jacobian
 /// reads).
@@ -78,6 +80,29 @@ fn solve_from<M: ModelType>(rig: &Rig, data: &mut MjData<M>, start: &[f64], t: &
     (q, errs.0, errs.1)
 }
 
+/// Solves for `t` from start 0 (`near`) and `restarts` more (`start_of(k)`), handing each
+/// converged solution to `visit(k, q)` until it returns true; the state is left as it was.
+fn each_solution<M: ModelType>(
+    rig: &Rig,
+    data: &mut MjData<M>,
+    near: &[f64],
+    t: &Target,
+    restarts: usize,
+    mut start_of: impl FnMut(usize) -> Vec<f64>,
+    mut visit: impl FnMut(usize, Vec<f64>) -> bool,
+) {
+    let saved = rig.arm_q(data);
+    for k in 0..=restarts {
+        let start = if k == 0 { near.to_vec() } else { start_of(k) };
+        let (q, ep, er) = solve_from(rig, data, &start, t);
+        if ep < POS_TOL * 2.0 && er < ROT_TOL * 2.0 && visit(k, q) {
+            break;
+        }
+    }
+    rig.set_arm_q(data, &saved);
+    fk(data);
+}
+
 /// Joint positions that put the tool at `t`, nearest to `near` among the solutions found
 /// from `near` and up to `restarts` seeded random starts. `None` when none converges.
 pub(crate) fn solve_ik<M: ModelType>(
@@ -88,32 +113,45 @@ pub(crate) fn solve_ik<M: ModelType>(
     restarts: usize,
     rng: &mut Rng,
 ) -> Option<Vec<f64>> {
-    let saved = rig.arm_q(data);
     let mut best: Option<(f64, Vec<f64>)> = None;
-    for k in 0..=restarts {
-        let start: Vec<f64> = if k == 0 {
-            near.to_vec()
-        } else {
-            // Around the current pose first, wider later.
-            let spread = if k < restarts / 2 { 0.6 } else { 2.5 };
-            rig.arm.iter().zip(near).map(|(j, q)| (q + rng.range(-spread, spread)).clamp(j.lo, j.hi)).collect()
-        };
-        let (q, ep, er) = solve_from(rig, data, &start, t);
-        if ep < POS_TOL * 2.0 && er < ROT_TOL * 2.0 {
-            let d: f64 = q.iter().zip(near).map(|(a, b)| (a - b).powi(2)).sum::<f64>().sqrt();
-            if best.as_ref().is_none_or(|(bd, _)| d < *bd) {
-                best = Some((d, q));
-            }
-            // The first from the current pose is near enough.
-            if k == 0 {
-                break;
-            }
-            if best.as_ref().is_some_and(|(bd, _)| *bd < 1.0) {
-                break;
-            }
+    // Around the current pose first, wider later.
+    let start_of = |k: usize| -> Vec<f64> {
+        let spread = if k < restarts / 2 { 0.6 } else { 2.5 };
+        rig.arm.iter().zip(near).map(|(j, q)| (q + rng.range(-spread, spread)).clamp(j.lo, j.hi)).collect()
+    };
+    each_solution(rig, data, near, t, restarts, start_of, |k, q| {
+        let d = crate::motion::dist(&q, near);
+        if best.as_ref().is_none_or(|(bd, _)| d < *bd) {
+            best = Some((d, q));
         }
-    }
-    rig.set_arm_q(data, &saved);
-    fk(data);
+        // The first from the current pose is near enough; so is any within 1 rad.
+        k == 0 || best.as_ref().is_some_and(|(bd, _)| *bd < 1.0)
+    });
     best.map(|(_, q)| q)
+}
+
+/// Distinct joint solutions for `t` (nearest to `near` first) from `near` and `restarts`
+/// seeded random starts over the whole joint range: the other postures of the arm (elbow
+/// up or down, wrist flipped) to try when the nearest one collides.
+pub(crate) fn solve_ik_all<M: ModelType>(
+    rig: &Rig,
+    data: &mut MjData<M>,
+    near: &[f64],
+    t: &Target,
+    restarts: usize,
+    rng: &mut Rng,
+) -> Vec<Vec<f64>> {
+    let mut found: Vec<(f64, Vec<f64>)> = Vec::new();
+    let start_of = |_: usize| -> Vec<f64> {
+        let pi = std::f64::consts::PI;
+        rig.arm.iter().map(|j| rng.range(j.lo.max(-pi), j.hi.min(pi))).collect()
+    };
+    each_solution(rig, data, near, t, restarts, start_of, |_, q| {
+        if found.iter().all(|(_, f)| crate::motion::dist(f, &q) > DISTINCT) {
+            found.push((crate::motion::dist(&q, near), q));
+        }
+        false
+    });
+    found.sort_by(|a, b| a.0.total_cmp(&b.0));
+    found.into_iter().map(|(_, q)| q).collect()
 }

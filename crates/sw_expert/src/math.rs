@@ -67,6 +67,25 @@ pub(crate) fn rot_z(yaw: f64) -> M3 {
     [c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0]
 }
 
+/// Rotation by `angle` about the unit `axis` (Rodrigues).
+pub(crate) fn rot_axis(axis: V3, angle: f64) -> M3 {
+    let n = norm(axis).max(1e-12);
+    let [x, y, z] = [axis[0] / n, axis[1] / n, axis[2] / n];
+    let (s, c) = angle.sin_cos();
+    let t = 1.0 - c;
+    [
+        t * x * x + c,
+        t * x * y - s * z,
+        t * x * z + s * y,
+        t * x * y + s * z,
+        t * y * y + c,
+        t * y * z - s * x,
+        t * x * z - s * y,
+        t * y * z + s * x,
+        t * z * z + c,
+    ]
+}
+
 /// The rotation vector (axis × angle) taking `from` to `to`: log(to · fromᵀ).
 pub(crate) fn rotation_error(to: &M3, from: &M3) -> V3 {
     let r = mat_mul(to, &transpose(from));

@@ -31,6 +31,9 @@ pub(crate) struct Held {
     pub qpos: usize,
     pub rel_pos: V3,
     pub rel_rot: M3,
+    /// Its centre of mass in the tool frame: what must stay put in the hand (a ball
+    /// may turn between the pads, which moves its frame's origin but not its centre).
+    pub rel_com: V3,
 }
 
 impl Held {
@@ -40,7 +43,19 @@ impl Held {
         let bp = data.xpos()[body];
         let br = data.xmat()[body];
         let rt = transpose(&tr);
-        Held { body, qpos, rel_pos: mat_vec(&rt, crate::math::sub(bp, tp)), rel_rot: mat_mul(&rt, &br) }
+        Held {
+            body,
+            qpos,
+            rel_pos: mat_vec(&rt, crate::math::sub(bp, tp)),
+            rel_rot: mat_mul(&rt, &br),
+            rel_com: mat_vec(&rt, crate::math::sub(data.xipos()[body], tp)),
+        }
+    }
+
+    /// How far the thing is from where the grasp put it in the hand, m.
+    pub fn drift<M: ModelType>(&self, data: &MjData<M>, tcp: usize) -> f64 {
+        let (tp, tr) = (data.site_xpos()[tcp], data.site_xmat()[tcp]);
+        crate::math::norm(crate::math::sub(data.xipos()[self.body], add(tp, mat_vec(&tr, self.rel_com))))
     }
 
     /// Moves the held thing's free joint to follow the tool (after `fk`).
@@ -70,11 +85,13 @@ pub(crate) struct Checker<'r> {
     pub rig: &'r Rig,
     pub allow: Allow,
     pub checks: usize,
+    /// The two bodies of the last contact that made a configuration a collision.
+    pub hit: Option<(usize, usize)>,
 }
 
 impl<'r> Checker<'r> {
     pub fn new(rig: &'r Rig, allow: Allow) -> Self {
-        Self { rig, allow, checks: 0 }
+        Self { rig, allow, checks: 0, hit: None }
     }
 
     /// True when configuration `q` is free of collisions.
@@ -101,9 +118,9 @@ impl<'r> Checker<'r> {
             if !involves(b1) && !involves(b2) {
                 continue;
             }
-            // The robot's base on its mount never moves.
+            // The robot's base on its mount never moves (but a carried thing must clear it).
             let base = |b: usize| b == self.rig.base_body || (self.rig.robot_body[b] && root[b] as usize == b);
-            if base(b1) || base(b2) {
+            if (base(b1) || base(b2)) && held.is_none_or(|h| h != b1 && h != b2) {
                 continue;
             }
             // Fingers on the thing they hold or are about to.
@@ -118,6 +135,7 @@ impl<'r> Checker<'r> {
             {
                 continue;
             }
+            self.hit = Some((b1, b2));
             return false;
         }
         true

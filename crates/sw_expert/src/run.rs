@@ -15,6 +15,11 @@ const MIN_SEGMENT: f64 = 0.3;
 const SETTLE_MAX: f64 = 1.0;
 /// An arm has arrived when every joint is this close to its target, rad.
 const ARRIVED: f64 = 0.01;
+/// How far a held thing may move from where the grasp put it in the hand before it
+/// counts as lost when the fingers no longer touch it, m.
+const HELD_DRIFT: f64 = 0.03;
+/// How far it may move while the fingers still hold it (turned between the pads), m.
+const HELD_TURNED: f64 = 0.08;
 
 /// What is recorded per frame.
 #[derive(Debug, Clone, Default)]
@@ -40,6 +45,9 @@ pub(crate) struct Runner<'m> {
     /// Bodies whose pose is recorded in `env`.
     pub tracked: Vec<usize>,
     pub max_frames: usize,
+    /// The thing in the hand, watched every frame: the run fails the frame it leaves the
+    /// hand, naming what it touches then.
+    pub holding: Option<(crate::motion::Held, usize)>,
 }
 
 impl<'m> Runner<'m> {
@@ -65,6 +73,7 @@ impl<'m> Runner<'m> {
             rec: Recording::default(),
             tracked,
             max_frames: (max_seconds * f64::from(fps)).ceil() as usize,
+            holding: None,
         })
     }
 
@@ -100,7 +109,68 @@ impl<'m> Runner<'m> {
         if self.data.qpos().iter().any(|v| !v.is_finite()) {
             return Err(ExpertError::Failed("the simulation became unstable".into()));
         }
+        if let Some((held, tcp)) = self.holding {
+            // Out of the pads, or turned far in them (a tall thing may pivot a little
+            // between the pads and still be carried).
+            let drift = held.drift(&self.data, tcp);
+            if drift > HELD_DRIFT && (drift > HELD_TURNED || self.touching(rig, held.body).1.is_empty()) {
+                return Err(ExpertError::Failed(self.lost(rig, held.body, drift)));
+            }
+        }
         Ok(())
+    }
+
+    /// What `body` touches now: (other things, by their top-level body's name; the
+    /// robot's bodies, the hand's own left out).
+    fn touching(&self, rig: &Rig, body: usize) -> (Vec<String>, Vec<usize>) {
+        let model = self.data.model();
+        let name = |b: usize| model.id_to_name(MjtObjBase::mjOBJ_BODY, b).unwrap_or("?").to_string();
+        let root = model.body_rootid();
+        let (mut things, mut hand) = (Vec::new(), Vec::new());
+        let ncon = self.data.ncon().max(0) as usize;
+        for c in self.data.contact().iter().take(ncon) {
+            let b1 = model.geom_bodyid()[c.geom1 as usize] as usize;
+            let b2 = model.geom_bodyid()[c.geom2 as usize] as usize;
+            let other = if b1 == body {
+                b2
+            } else if b2 == body {
+                b1
+            } else {
+                continue;
+            };
+            if rig.hand_body[other] {
+                hand.push(other);
+                continue;
+            }
+            let n = if rig.robot_body[other] { name(other) } else { name(root[other] as usize) };
+            if !things.contains(&n) {
+                things.push(n);
+            }
+        }
+        (things, hand)
+    }
+
+    /// Why the held `body` left the hand: what it touches now.
+    fn lost(&self, rig: &Rig, body: usize, drift: f64) -> String {
+        let model = self.data.model();
+        let name = |b: usize| model.id_to_name(MjtObjBase::mjOBJ_BODY, b).unwrap_or("?").to_string();
+        let (touching, hand) = self.touching(rig, body);
+        let touching: Vec<String> =
+            touching.into_iter().chain((!hand.is_empty()).then(|| "the fingers".to_string())).collect();
+        let frame = self.rec.actions.len();
+        // Each finger's travel from closed, and the gripper's control: closed on nothing, or
+        // opened under it.
+        let travel: Vec<String> =
+            rig.finger_qpos.iter().map(|&a| format!("{:.0}", 1000.0 * self.data.qpos()[a])).collect();
+        format!(
+            "{} left the hand while carried ({:.0} mm off at {:.1} s{}; fingers at {} mm, control {:.3})",
+            name(body),
+            drift * 1000.0,
+            frame as f64 / f64::from(self.fps),
+            if touching.is_empty() { String::new() } else { format!(", touching {}", touching.join(", ")) },
+            travel.join("/"),
+            self.ctrl[rig.grip_act]
+        )
     }
 
     fn set_arm_ctrl(&mut self, rig: &Rig, q: &[f64]) {

@@ -35,7 +35,8 @@ fn robot_model(dir: &Path, robot: &str) -> String {
 fn run(dir: &Path, task: &Task, seed: u64) -> (Result<sw_expert::Episode, sw_expert::ExpertError>, PathBuf) {
     let xml = std::fs::read_to_string(dir.join("scene.xml")).unwrap();
     let movable = task.moved_objects().into_iter().map(str::to_string).collect::<Vec<_>>();
-    let (text, _) = episode_scene(&xml, 15, seed, &movable, &[], Vary::ALL).unwrap();
+    let focus: Vec<String> = task.goals.iter().flat_map(|g| g.bodies()).map(str::to_string).collect();
+    let (text, _) = episode_scene(&xml, 15, seed, &movable, &[], &focus, Vary::ALL).unwrap();
     let path = dir.join("episode.xml");
     std::fs::write(&path, text).unwrap();
     let opts = ExpertOptions { fps: 15, seed, max_seconds: 60.0 };
@@ -110,4 +111,68 @@ fn a_task_that_already_holds_is_refused_at_the_start() {
     let task = bind(&dir, "put the cube on the table").unwrap();
     let (ep, _) = run(&dir, &task, 1);
     assert!(matches!(ep, Err(sw_expert::ExpertError::AlreadySatisfied(_))), "{:?}", ep.map(|e| e.success));
+}
+
+#[test]
+fn references_and_sides_bind_to_the_things_meant() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = package("a Panda on a table with a red cube, a green cube and a bowl", 4, tmp.path());
+    let plan: sw_plan::ScenePlan =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("plan.json")).unwrap()).unwrap();
+    let layout: sw_plan::LaidOutScene =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("layout.json")).unwrap()).unwrap();
+    let colour = |name: &str| {
+        let group = &layout.object(name).unwrap().group;
+        plan.objects.iter().find(|o| &o.id == group).and_then(|o| o.color.as_ref()).map(|c| c.name.clone())
+    };
+    // "the green one": the green cube, a second goal of the same kind.
+    let task = bind(&dir, "put the red cube in the bowl, then the green one too").unwrap();
+    let moved: Vec<&str> = task.goals.iter().filter_map(sw_task::Predicate::subject).collect();
+    assert_eq!(moved.len(), 2, "{:?}", task.goals);
+    assert_eq!(colour(moved[0]).as_deref(), Some("red"));
+    assert_eq!(colour(moved[1]).as_deref(), Some("green"));
+    assert!(task.goals.iter().all(|g| matches!(g, sw_task::Predicate::Inside { .. })), "{:?}", task.goals);
+    // "the other cube": not the one moved.
+    let task = bind(&dir, "stack the green cube on the other cube").unwrap();
+    match &task.goals[..] {
+        [sw_task::Predicate::StackedOn { object, target }] => {
+            assert_ne!(object, target);
+            assert_eq!(colour(target).as_deref(), Some("red"));
+        }
+        g => panic!("{g:?}"),
+    }
+    // A side of the surface the thing stands on is a part of it, not beside it.
+    let task = bind(&dir, "slide the red cube to the left of the table").unwrap();
+    assert!(matches!(&task.goals[..], [sw_task::Predicate::InRegion { .. }]), "{:?}", task.goals);
+}
+
+#[test]
+fn the_front_camera_frames_the_things_the_task_moves() {
+    let tmp = tempfile::tempdir().unwrap();
+    for (k, prompt) in ["a Panda on a table with a red cube and a bowl", "a UR5e on a table with a cylinder and a bin"]
+        .iter()
+        .enumerate()
+    {
+        let dir = package(prompt, 5 + k as u64, tmp.path());
+        let task = bind(&dir, if k == 0 { "put the cube in the bowl" } else { "put the cylinder in the bin" }).unwrap();
+        let (_, scene) = run(&dir, &task, 3);
+        let model = MjModel::from_xml(&scene).unwrap();
+        let mut data = model.make_data();
+        data.reset_keyframe(model.name_to_id(MjtObjBase::mjOBJ_KEY, "home").unwrap()).unwrap();
+        data.forward();
+        let cam = model.name_to_id(MjtObjBase::mjOBJ_CAMERA, "front").unwrap();
+        let (p, m) = (data.cam_xpos()[cam], data.cam_xmat()[cam]);
+        let half = (0.5 * model.cam_fovy()[cam]).to_radians().tan();
+        for g in &task.goals {
+            for b in g.bodies() {
+                let x = data.xpos()[model.name_to_id(MjtObjBase::mjOBJ_BODY, b).unwrap()];
+                let d = [x[0] - p[0], x[1] - p[1], x[2] - p[2]];
+                // Camera frame: x right, y up, looking along −z.
+                let c = [0, 1, 2].map(|i| m[i] * d[0] + m[3 + i] * d[1] + m[6 + i] * d[2]);
+                assert!(c[2] < 0.0, "{prompt}: {b} is behind the front camera");
+                let (u, v) = (c[0] / (-c[2] * half), c[1] / (-c[2] * half));
+                assert!(u.abs() < 0.85 && v.abs() < 0.85, "{prompt}: {b} at ({u:.2}, {v:.2}) of the image");
+            }
+        }
+    }
 }

@@ -220,9 +220,10 @@ pub fn fill(input: &FillInput<'_>, level: FillLevel) -> FillOutcome {
 
     // 1. Furniture along the walls (and in the open for tables), in the profile's order.
     let mut hosts: Vec<(String, Asset, [f64; 3], f64)> = Vec::new();
+    // A stated table counts as the dining table the room would get: one place, one thing.
     let present = |cat: &str, added: &[Added]| {
-        scene.objects.iter().filter(|o| o.category == cat).count()
-            + added.iter().filter(|a| a.placed.category == cat).count()
+        scene.objects.iter().filter(|o| same_role(&o.category, cat)).count()
+            + added.iter().filter(|a| same_role(&a.placed.category, cat)).count()
     };
     let mut furniture_short = 0usize;
     for item in profile.furniture {
@@ -295,6 +296,26 @@ pub fn fill(input: &FillInput<'_>, level: FillLevel) -> FillOutcome {
         }
     }
     out
+}
+
+/// Whether two categories take one place in a room: the same category, or one a kind of
+/// the other (a dining table is a table, so a stated table is the room's dining table).
+fn same_role(a: &str, b: &str) -> bool {
+    if a == b {
+        return true;
+    }
+    match (sw_catalog::find(a), sw_catalog::find(b)) {
+        (Some(x), Some(y)) => x.is_a.contains(&y.display) || y.is_a.contains(&x.display),
+        _ => false,
+    }
+}
+
+/// Whether a room holds one of a category at most when it is filled: appliances and
+/// machines (a kitchen has a kettle, not four), unlike mugs, jars and books.
+fn one_per_room(category: &str) -> bool {
+    use sw_catalog::Kind;
+    sw_catalog::find(category)
+        .is_some_and(|c| matches!(c.kind, Kind::SmallAppliance | Kind::LargeAppliance | Kind::Machine))
 }
 
 fn added(name: String, category: &str, asset: Asset, pos: [f64; 3], yaw: f64, support: Support) -> Added {
@@ -465,6 +486,12 @@ fn clutter_surface(
         }
         let Some(item) = profiles::pick(items, rng) else { break };
         let seed = rng.next_u64();
+        if one_per_room(item.category)
+            && (input.scene.objects.iter().any(|o| same_role(&o.category, item.category))
+                || out.added.iter().any(|a| same_role(&a.placed.category, item.category)))
+        {
+            continue;
+        }
         let Ok(asset) = sw_catalog::generate(&sw_catalog::AssetRequest::new(item.category, seed)) else { continue };
         if !asset.is_free() {
             continue;

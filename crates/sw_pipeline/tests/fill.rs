@@ -78,6 +78,34 @@ fn a_cluttered_kitchen_keeps_the_stated_objects_and_the_robots_work_as_they_were
 }
 
 #[test]
+fn a_fill_adds_no_second_of_what_was_stated_and_one_of_each_appliance() {
+    // A stated table is the kitchen's table: no dining table beside it. And however many
+    // counters there are, a kitchen has a kettle and a toaster, not four of each.
+    for seed in [1, 2, 3] {
+        let (o, _d) = run(
+            "a kitchen with a counter along the wall, a sink, a fridge and a table with four chairs",
+            seed,
+            Some(FillLevel::Cluttered),
+        );
+        assert!(sw_pipeline::succeeded(&o.report), "{:?}", o.report.verification);
+        let added: Vec<_> = o.layout.objects.iter().filter(|p| p.added).collect();
+        assert!(added.len() >= 40, "seed {seed}: only {} added", added.len());
+        for a in &added {
+            let cat = sw_catalog::find(&a.category).unwrap();
+            assert!(!cat.is_a.contains(&"table"), "seed {seed}: {} added beside the stated table", a.name);
+        }
+        let mut appliances = std::collections::BTreeMap::<&str, usize>::new();
+        for p in &o.layout.objects {
+            let cat = sw_catalog::find(&p.category).unwrap();
+            if matches!(cat.kind, sw_catalog::Kind::SmallAppliance | sw_catalog::Kind::LargeAppliance) {
+                *appliances.entry(cat.name).or_default() += 1;
+            }
+        }
+        assert!(appliances.values().all(|&n| n == 1), "seed {seed}: {appliances:?}");
+    }
+}
+
+#[test]
 fn rooms_of_each_kind_are_furnished_the_way_they_are_used() {
     for (prompt, expect) in [
         ("a bedroom", "bed"),

@@ -214,14 +214,35 @@ fn clause_goals(
     }
     let targets: Option<Vec<String>> = match &c.target {
         Some(np) => {
+            // Where a thing goes is another thing than the ones moved ("stack the red cube
+            // on the other cube"); "the other …" is also none named before.
             let found = facts.objects(np)?;
-            Some(if np.every { found } else { vec![pick_one(&found, np, &mut Vec::new(), notes)] })
+            let mut taken = subjects.clone();
+            if np.other {
+                taken.extend(used.iter().cloned());
+            }
+            let rest: Vec<String> = found.iter().filter(|f| !subjects.contains(f)).cloned().collect();
+            Some(match (np.every, rest.is_empty()) {
+                (true, false) => rest,
+                (true, true) => found,
+                (false, _) => vec![pick_one(&found, np, &mut taken, notes)],
+            })
         }
         None => None,
     };
+    // "slide the cup to the right of the table" with the cup on that table: a part of its
+    // surface, not beside the table (which it already is).
+    let on_target = |s: &String| match (facts.object(s).map(|o| &o.support), targets.as_ref()) {
+        (Some(Support::Object { object, .. }), Some(t)) => *object == t[0],
+        _ => false,
+    };
+    let region = match (c.region, c.rel, c.side) {
+        (None, Some(Rel::Near), Some(side)) if subjects.iter().all(on_target) => Some(side),
+        (r, _, _) => r,
+    };
     let mut goals = Vec::new();
     let family;
-    match (c.action, c.rel, c.region) {
+    match (c.action, c.rel, region) {
         (Action::Open | Action::Close, _, _) => {
             family = Family::Articulated;
             for s in &subjects {

@@ -69,6 +69,10 @@ pub struct SplitPrompt {
 /// the cubes into the bins", "... . Put the red cube in the bowl"); `None` when it asks
 /// for none.
 pub fn split_prompt(prompt: &str) -> Option<SplitPrompt> {
+    // A robot named in brackets ("(Panda)", "[robot: UR5e]") is part of the scene wherever
+    // it stands; the brackets go.
+    let (prompt, robots) = lift_bracketed_robots(prompt);
+    let prompt = prompt.as_str();
     let t = words::tokens(prompt);
     let start = words::task_start(&t)?;
     // The same clause in the prompt's own text: find the verb's word there.
@@ -83,12 +87,14 @@ pub fn split_prompt(prompt: &str) -> Option<SplitPrompt> {
         from = i + verb.len();
     }
     let cut = cut?;
-    let instruction = prompt[cut..].trim().trim_end_matches(['.', '!', ' ']).to_string();
-    let mut scene = prompt[..cut].trim_end().to_string();
-    for tail in [" that", " which", " who", " to", ",", ".", ";", " and"] {
-        if scene.to_lowercase().ends_with(tail) {
-            scene.truncate(scene.len() - tail.len());
-            scene = scene.trim_end().to_string();
+    let instruction = prompt[cut..].trim().trim_end_matches(|c: char| c.is_whitespace() || words::breaks_clause(c));
+    let instruction = instruction.to_string();
+    let head = prompt[..cut].trim_start_matches(|c: char| c.is_whitespace() || words::breaks_clause(c));
+    let mut scene = trim_scene_tail(head);
+    for r in robots {
+        let named = words::tokens(&scene).iter().any(|w| words::tokens(&r).contains(w));
+        if !named {
+            scene = if scene.is_empty() { format!("a {r}") } else { format!("{scene} and a {r}") };
         }
     }
     let missing = task_things_missing_from(&scene, &instruction);
@@ -101,6 +107,54 @@ pub fn split_prompt(prompt: &str) -> Option<SplitPrompt> {
         scene = format!("{scene}{surface}");
     }
     Some(SplitPrompt { scene, instruction })
+}
+
+/// The scene words before a task clause without what joined them to it: trailing
+/// punctuation, dashes, brackets and linking words ("… a bowl — ", "… a Panda that",
+/// "… Task:").
+fn trim_scene_tail(scene: &str) -> String {
+    let mut s = scene.to_string();
+    loop {
+        let t = s.trim_end_matches(|c: char| c.is_whitespace() || c == '-' || words::breaks_clause(c)).to_string();
+        let lower = t.to_lowercase();
+        let tail = [" that", " which", " who", " to", " and", " then", " task", " goal", " instruction"]
+            .iter()
+            .find(|w| lower.ends_with(*w) || lower == w.trim_start());
+        match tail {
+            Some(w) => s = t[..t.len() - w.trim_start().len()].to_string(),
+            None => return t,
+        }
+    }
+}
+
+/// Bracketed groups that name a robot, taken out of the prompt: the prompt without them
+/// and the robots' words ("UR5e" from "[robot: UR5e]").
+fn lift_bracketed_robots(prompt: &str) -> (String, Vec<String>) {
+    let mut out = String::with_capacity(prompt.len());
+    let mut robots = Vec::new();
+    let mut rest = prompt;
+    while let Some(open) = rest.find(['(', '[']) {
+        let close_char = if rest[open..].starts_with('(') { ')' } else { ']' };
+        let Some(len) = rest[open + 1..].find(close_char) else { break };
+        let inner = &rest[open + 1..open + 1 + len];
+        let t = words::tokens(inner);
+        let names_robot = t.iter().any(|w| matches!(sw_planner::vocab::noun(w), sw_planner::vocab::Noun::Robot { .. }));
+        let robot: Vec<String> = t
+            .into_iter()
+            .filter(|w| !matches!(w.as_str(), "," | "robot" | "arm" | "by" | "using" | "with" | "the" | "a" | "an"))
+            .collect();
+        out.push_str(&rest[..open]);
+        if !names_robot || robot.is_empty() {
+            out.push_str(&rest[open..open + 2 + len]);
+        } else {
+            // The group is a clause break where it stood.
+            out.push_str(", ");
+            robots.push(robot.join(" "));
+        }
+        rest = &rest[open + 2 + len..];
+    }
+    out.push_str(rest);
+    (out, robots)
 }
 
 /// The byte index of `word` as a whole word in `text`.
@@ -194,6 +248,43 @@ mod tests {
         // A machine doing something is a scene, not a task: no robot named before it.
         assert_eq!(split_prompt("a warehouse with a conveyor moving boxes onto a pallet and a UR5e"), None);
         assert_eq!(imperative("sorting the cubes into the bins."), "sort the cubes into the bins");
+        // The task after a dash, a colon or a label; the scene without the joint.
+        for (prompt, scene) in [
+            (
+                "a UR5e on a bench with a tin and a crate — drop the tin into the crate",
+                "a UR5e on a bench with a tin and a crate",
+            ),
+            (
+                "a UR5e on a bench with a tin and a crate - drop the tin into the crate",
+                "a UR5e on a bench with a tin and a crate",
+            ),
+            (
+                "a UR5e on a bench with a tin and a crate: drop the tin into the crate",
+                "a UR5e on a bench with a tin and a crate",
+            ),
+            (
+                "a UR5e on a bench with a tin and a crate. Task: drop the tin into the crate.",
+                "a UR5e on a bench with a tin and a crate",
+            ),
+        ] {
+            let s = split_prompt(prompt).unwrap_or_else(|| panic!("{prompt}"));
+            assert_eq!((s.scene.as_str(), s.instruction.as_str()), (scene, "drop the tin into the crate"), "{prompt}");
+        }
+        // A robot in brackets is the scene's, wherever it stands, and never part of the task.
+        for prompt in [
+            "a bench with a tin and a crate. Drop the tin into the crate (Kinova Gen3)",
+            "[robot: Kinova Gen3] a bench with a tin and a crate; drop the tin into the crate",
+            "a bench with a tin and a crate (Kinova Gen3) - drop the tin into the crate",
+        ] {
+            let s = split_prompt(prompt).unwrap_or_else(|| panic!("{prompt}"));
+            assert_eq!(s.instruction.to_lowercase(), "drop the tin into the crate", "{prompt}");
+            assert!(s.scene.to_lowercase().contains("kinova gen3"), "{prompt}: {}", s.scene);
+            assert!(!s.scene.contains(['(', '[']), "{prompt}: {}", s.scene);
+        }
+        // Brackets that name no robot stay in the scene's words.
+        let s = split_prompt("a bench with a tin (empty) and a crate. Drop the tin into the crate")
+            .unwrap_or_else(|| panic!());
+        assert!(s.scene.contains("(empty)"), "{}", s.scene);
         assert_eq!(imperative("Put the mug in the sink"), "put the mug in the sink");
         assert_eq!(
             imperative("picks up the red cube and places it in the bowl"),
