@@ -814,7 +814,7 @@ fn build_games_console(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const GAME_CONTROLLER: Category = def(
     "game_controller",
     "game controller",
-    &["gamepad", "joypad", "controller", "joystick", "xbox controller", "ps5 controller"],
+    &["gamepad", "joypad", "joystick", "games controller", "xbox controller", "ps5 controller"],
     HOME,
     "a two-handed game controller with thumbsticks and buttons",
     &["electronics", "input device"],
