@@ -20,6 +20,7 @@
 //! in `.cache/vocab/` (keyed by a hash of the texts and the model's config), so a run
 //! embeds only its unknown nouns.
 
+use std::cell::OnceCell;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -28,11 +29,36 @@ use sha2::{Digest, Sha256};
 use sw_catalog::{Category, Kind};
 use sw_plan::{Approximation, Dims, ProxyPlan, ScenePlan, Stage, Warning};
 
-/// A sibling (a category of the same hypernym as the noun) is taken only this close in
-/// meaning, cosine similarity of MiniLM vectors (tuned on bench/vocab/dev.tsv).
+/// A sibling (a category of the same hypernym as the noun) or a category named alike
+/// is taken only this close in meaning to one of its names, cosine similarity of MiniLM
+/// vectors (tuned on bench/vocab/dev.tsv).
 pub const SIBLING_MIN: f32 = 0.62;
-/// The nearest category tells an unknown noun's kind of thing only this close.
-pub const KIND_MIN: f32 = 0.58;
+/// … and only this close to its one-line description: the description carries the
+/// category's sense, so a noun that shares a head word with one of its names but means
+/// another thing ("salt shaker" and "lab shaker", "rocking horse" and "sawhorse") falls
+/// below it while a true kind ("santoku knife" and the chef's knife) stays above.
+pub const SENSE_MIN: f32 = 0.5;
+/// A noun whose head names a category but whose modifiers are foreign to it (not words
+/// of its names, tags, hypernyms or description) is refused as that category when it is
+/// below this close to its description and another category's description is nearer by
+/// more than [`SENSE_MARGIN`]: "a waffle iron" is no clothes iron, while "a kids bicycle"
+/// (nothing is nearer than the bicycle) and "a bread knife" stay what their heads name.
+pub const NAMED_SENSE_MIN: f32 = 0.45;
+/// How much nearer another category's sense must be to take a noun away from the one its
+/// words name.
+pub const SENSE_MARGIN: f32 = 0.05;
+/// The nearest categories tell an unknown noun's kind of thing only this close.
+pub const KIND_MIN: f32 = 0.45;
+/// How many of the nearest categories vote on an unknown noun's kind (each by its
+/// similarity over its rank, so that the nearest counts most but four close neighbours
+/// of one kind outvote it: "a trailer" is nearest a toy car but among vehicles), and how
+/// many of the winning kind give its proxy a size.
+const KIND_VOTERS: usize = 5;
+const SIZE_VOTERS: usize = 3;
+/// A word the planner read as a typo of a catalog name ("trailer" for "trainer") is that
+/// name only when the model does not know the word itself, or knows it as this close in
+/// meaning (a spelling variant: "tyre" and "tire" 0.84, "trailer" and "trainer" 0.27).
+pub const TYPO_SENSE_MIN: f32 = 0.6;
 /// A noun with no candidate by its head that is this much nearer to an abstract noun
 /// ([`ABSTRACT`]) than to every category names nothing physical ("a happiness"): it is
 /// left out, with a warning.
@@ -79,8 +105,9 @@ pub const ABSTRACT: &[&str] = &[
 pub enum Resolution {
     /// A kind of this category (its head names it, or a close sibling by meaning).
     Category { name: &'static str, score: Option<f32>, lexical: bool },
-    /// A labelled proxy sized by the prior of this kind.
-    Proxy { kind: Option<Kind>, nearest: Option<(&'static str, f32)> },
+    /// A labelled proxy of this kind, sized (width, depth, height, m) like the nearest
+    /// categories of that kind when the model could say which.
+    Proxy { kind: Option<Kind>, size: Option<[f64; 3]>, nearest: Option<(&'static str, f32)> },
     /// Not a physical thing: left out.
     NotAThing { nearest: Option<(&'static str, f32)> },
 }
@@ -93,12 +120,27 @@ fn noun_words(label: &str) -> Vec<String> {
     sw_planner::vocab::words(label)
 }
 
-/// Every name of a category as singular words: its display name, registry name and synonyms.
+/// Every name of a category as singular words: its display name, registry name and
+/// synonyms. A name that loses a word to the planner's reading (the article of "a-board",
+/// the number of "2-slice toaster") is left out: "a-board" is not a "board".
 fn names_of(cat: &Category) -> Vec<Vec<String>> {
+    let raw = |s: &str| s.split(|c: char| !(c.is_alphanumeric() || c == '\'')).filter(|w| !w.is_empty()).count();
     let mut out = vec![noun_words(cat.display), noun_words(&cat.name.replace('_', " "))];
-    out.extend(cat.synonyms.iter().map(|s| noun_words(s)));
+    out.extend(cat.synonyms.iter().filter(|s| noun_words(s).len() == raw(s)).map(|s| noun_words(s)));
     out.retain(|n| !n.is_empty());
     out
+}
+
+/// Every word a category uses about itself: its names, tags, hypernyms and description.
+/// A modifier among them agrees with the category ("kitchen sink", "office chair").
+fn own_words(cat: &Category) -> Vec<String> {
+    let mut w: Vec<String> = names_of(cat).concat();
+    for t in cat.tags.iter().chain(cat.is_a).chain(std::iter::once(&cat.description)) {
+        w.extend(noun_words(t));
+    }
+    w.sort();
+    w.dedup();
+    w
 }
 
 /// How a candidate category relates to a noun's head.
@@ -113,97 +155,195 @@ enum Tie {
     Sibling,
 }
 
-/// The candidates for a noun, most specific head (last two words, then last word) first.
-fn candidates(words: &[String]) -> Vec<(&'static Category, Tie)> {
-    let heads: Vec<Vec<String>> = (1..=words.len().min(2)).rev().map(|n| words[words.len() - n..].to_vec()).collect();
-    for head in &heads {
+/// The candidates for a noun, most specific head (last two words, then last word)
+/// first, with the number of words of the head.
+fn candidates(words: &[String]) -> (Vec<(&'static Category, Tie)>, usize) {
+    for n in (1..=words.len().min(2)).rev() {
+        let head = &words[words.len() - n..];
         let mut out: Vec<(&'static Category, Tie)> = Vec::new();
         for cat in sw_catalog::categories() {
             let names = names_of(cat);
-            if names.iter().any(|n| n == head) {
+            if names.iter().any(|nm| nm == head) {
                 out.push((cat, Tie::Named));
-            } else if names.iter().any(|n| n.len() > head.len() && n.ends_with(head)) {
+            } else if names.iter().any(|nm| nm.len() > head.len() && nm.ends_with(head)) {
                 out.push((cat, Tie::HeadNamed));
-            } else if cat.is_a.iter().any(|h| &noun_words(h) == head) {
+            } else if cat.is_a.iter().any(|h| noun_words(h) == head) {
                 out.push((cat, Tie::Sibling));
             }
         }
         if !out.is_empty() {
-            return out;
+            return (out, n);
         }
     }
-    Vec::new()
+    (Vec::new(), 0)
 }
 
 /// Ranks categories by meaning.
 pub trait Meaning {
-    /// Cosine similarity of `noun` to each category in `among`, in the same order; `None`
-    /// when matching by meaning is unavailable.
+    /// Cosine similarity of `noun` to each category in `among` (the nearest of its names
+    /// and its description), in the same order; `None` when matching by meaning is
+    /// unavailable.
     fn scores(&self, noun: &str, among: &[&'static Category]) -> Option<Vec<f32>>;
+    /// Cosine similarity of `noun` to each category's one-line description (its sense);
+    /// `None` when unavailable.
+    fn senses(&self, _noun: &str, _among: &[&'static Category]) -> Option<Vec<f32>> {
+        None
+    }
+    /// Cosine similarity of two words, when the model knows the first as a whole word
+    /// (one token of its vocabulary); `None` for a word it does not know (a typo) or
+    /// when unavailable.
+    fn word_similarity(&self, _word: &str, _other: &str) -> Option<f32> {
+        None
+    }
     /// Cosine similarity of `noun` to the nearest of [`ABSTRACT`]; `None` when unavailable.
     fn abstractness(&self, noun: &str) -> Option<f32>;
+}
+
+/// Whether the modifiers of a noun (its words before the head) agree with a category:
+/// each one is a word the category uses about itself.
+fn modifiers_agree(modifiers: &[String], cat: &Category) -> bool {
+    let own = own_words(cat);
+    modifiers.iter().all(|m| own.binary_search(m).is_ok())
+}
+
+/// The category whose sense is nearest to `noun`, and its score (`None` without the model).
+fn nearest_sense(noun: &str, meaning: &dyn Meaning) -> Option<(&'static Category, f32)> {
+    let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
+    let s = meaning.senses(noun, &all)?;
+    all.into_iter().zip(s).max_by(|a, b| a.1.total_cmp(&b.1))
+}
+
+/// The largest sense score of `noun` over every category (`None` without the model).
+fn best_sense(noun: &str, meaning: &dyn Meaning) -> Option<f32> {
+    nearest_sense(noun, meaning).map(|(_, s)| s)
+}
+
+/// Whether a sense score takes a noun away from a category its head names: low, and
+/// another category is clearly nearer.
+fn sense_refuses(sense: f32, best: Option<f32>) -> bool {
+    sense < NAMED_SENSE_MIN && best.is_some_and(|b| sense < b - SENSE_MARGIN)
 }
 
 /// Resolves one noun phrase (a proxy's label).
 pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
     let words = noun_words(label);
     if words.is_empty() {
-        return Resolution::Proxy { kind: None, nearest: None };
+        return Resolution::Proxy { kind: None, size: None, nearest: None };
     }
-    let cands = candidates(&words);
+    let (cands, head_len) = candidates(&words);
     let text = words.join(" ");
+    let modifiers = &words[..words.len() - head_len];
     if !cands.is_empty() {
         let cats: Vec<&'static Category> = cands.iter().map(|(c, _)| *c).collect();
         let scores = meaning.scores(&text, &cats);
-        let best = |ids: &[usize]| -> Option<(usize, Option<f32>)> {
-            match &scores {
-                Some(s) => ids.iter().copied().max_by(|&a, &b| s[a].total_cmp(&s[b])).map(|i| (i, Some(s[i]))),
-                None => ids.first().map(|&i| (i, None)),
+        let senses = meaning.senses(&text, &cats);
+        let best = OnceCell::new();
+        let best = || *best.get_or_init(|| best_sense(&text, meaning));
+        // Whether candidate i is the thing named: its head names it and the modifiers
+        // agree (by its own words, else by its sense), or it is a kind of one thing with
+        // the noun that is close to it both by name and by sense.
+        let admitted = |i: usize| -> bool {
+            let (cat, tie) = cands[i];
+            let name = scores.as_ref().map(|s| s[i]);
+            let sense = senses.as_ref().map(|s| s[i]);
+            match tie {
+                Tie::Named => modifiers_agree(modifiers, cat) || !sense.is_some_and(|s| sense_refuses(s, best())),
+                // Kinds of one thing with different modifiers ("a medicine box" and the
+                // tissue box) are siblings, not the same thing: only a noun whose
+                // modifiers the category uses about itself is taken, and then only near.
+                Tie::HeadNamed | Tie::Sibling => {
+                    modifiers_agree(modifiers, cat)
+                        && name.is_some_and(|s| s >= SIBLING_MIN)
+                        && sense.is_some_and(|s| s >= SENSE_MIN && best().is_none_or(|b| s >= b - SENSE_MARGIN))
+                }
             }
         };
-        let tied = |t: &[Tie]| -> Vec<usize> { (0..cands.len()).filter(|&i| t.contains(&cands[i].1)).collect() };
-        // Named alike: the nearest by meaning when it is close ("a deep fryer" → air fryer).
-        if let Some((i, Some(s))) = best(&tied(&[Tie::Named, Tie::HeadNamed]))
-            && s >= SIBLING_MIN
-        {
-            return Resolution::Category { name: cands[i].0.name, score: Some(s), lexical: cands[i].1 == Tie::Named };
+        let rank = |i: usize| -> (u8, u8, f32) {
+            let (cat, tie) = cands[i];
+            let score = scores.as_ref().map_or(0.0, |s| s[i]);
+            // A generic word gets its generic category: the one whose own display name
+            // is the head, before a sub-kind that lists the word as a synonym. A modified
+            // noun goes to the nearest of the categories named like it ("a santoku knife"
+            // is nearer the chef's knife than the table knife both named "knife").
+            let generic = noun_words(cat.display) == words[words.len() - head_len..];
+            let tie_rank = match (tie, modifiers.is_empty()) {
+                (Tie::Named, true) => 2,
+                (Tie::Named | Tie::HeadNamed, _) => 1,
+                (Tie::Sibling, _) => 0,
+            };
+            (tie_rank, u8::from(generic && modifiers.is_empty()), score)
+        };
+        let best = (0..cands.len())
+            .filter(|&i| admitted(i))
+            .max_by(|&a, &b| rank(a).partial_cmp(&rank(b)).unwrap_or(std::cmp::Ordering::Equal));
+        if let Some(i) = best {
+            let (cat, tie) = cands[i];
+            return Resolution::Category {
+                name: cat.name,
+                score: scores.as_ref().map(|s| s[i]),
+                lexical: tie == Tie::Named && modifiers_agree(modifiers, cat),
+            };
         }
-        // Named by the head itself: a kind of that category.
-        if let Some((i, score)) = best(&tied(&[Tie::Named])) {
-            return Resolution::Category { name: cands[i].0.name, score, lexical: true };
-        }
-        let all: Vec<usize> = (0..cands.len()).collect();
-        if let Some((i, score)) = best(&all) {
-            if score.is_some_and(|s| s >= SIBLING_MIN) {
-                return Resolution::Category { name: cands[i].0.name, score, lexical: false };
-            }
-            // Kinds of one thing: the proxy takes their kind when they agree, or the
-            // nearest one's when the model can say which.
-            let kinds: Vec<Kind> = cands.iter().map(|(c, _)| c.kind).collect();
-            let kind =
-                if kinds.iter().all(|k| *k == kinds[0]) || score.is_some() { Some(cands[i].0.kind) } else { None };
-            return Resolution::Proxy { kind, nearest: score.map(|s| (cands[i].0.name, s)) };
-        }
+        // Refused: a labelled proxy. Its kind is the candidates' when they agree (the
+        // head names that kind of thing), else what the nearest categories say.
+        let kinds: Vec<Kind> = cands.iter().map(|(c, _)| c.kind).collect();
+        let agreed = kinds.iter().all(|k| *k == kinds[0]).then_some(kinds[0]);
+        return proxy_by_meaning(&text, meaning, agreed);
     }
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
-    match meaning.scores(&text, &all) {
-        Some(s) => {
-            let (i, score) = s.iter().copied().enumerate().max_by(|a, b| a.1.total_cmp(&b.1)).unwrap_or((0, 0.0));
-            let nearest = all.get(i).map(|c| (c.name, score));
-            if meaning.abstractness(&text).is_some_and(|a| a >= score + ABSTRACT_MARGIN) {
-                Resolution::NotAThing { nearest }
-            } else {
-                let kind = (score >= KIND_MIN).then(|| all[i].kind);
-                Resolution::Proxy { kind, nearest }
-            }
+    if let Some(s) = meaning.scores(&text, &all) {
+        let (i, score) = s.iter().copied().enumerate().max_by(|a, b| a.1.total_cmp(&b.1)).unwrap_or((0, 0.0));
+        if meaning.abstractness(&text).is_some_and(|a| a >= score + ABSTRACT_MARGIN) {
+            return Resolution::NotAThing { nearest: all.get(i).map(|c| (c.name, score)) };
         }
-        None => Resolution::Proxy { kind: None, nearest: None },
     }
+    proxy_by_meaning(&text, meaning, None)
+}
+
+/// A labelled proxy for `text`: of kind `known` when the head said it, else the kind the
+/// nearest categories by meaning vote for ([`KIND_VOTERS`]); sized by the median of the
+/// default sizes of the nearest categories of that kind, within a factor of three of the
+/// kind's prior.
+fn proxy_by_meaning(text: &str, meaning: &dyn Meaning, known: Option<Kind>) -> Resolution {
+    let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
+    let Some(s) = meaning.scores(text, &all) else {
+        return Resolution::Proxy { kind: known, size: None, nearest: None };
+    };
+    let mut order: Vec<usize> = (0..all.len()).collect();
+    order.sort_by(|&a, &b| s[b].total_cmp(&s[a]));
+    let nearest = order.first().map(|&i| (all[i].name, s[i]));
+    let kind = known.or_else(|| {
+        let mut votes: BTreeMap<Kind, f32> = BTreeMap::new();
+        for (rank, &i) in order.iter().take(KIND_VOTERS).enumerate().filter(|(_, i)| s[**i] >= KIND_MIN) {
+            *votes.entry(all[i].kind).or_default() += s[i] / (rank + 1) as f32;
+        }
+        votes.into_iter().max_by(|a, b| a.1.total_cmp(&b.1)).map(|(k, _)| k)
+    });
+    let size = kind.and_then(|k| {
+        let near: Vec<[f64; 3]> = order
+            .iter()
+            .filter(|&&i| all[i].kind == k && s[i] >= KIND_MIN)
+            .take(SIZE_VOTERS)
+            .map(|&i| all[i].default_size())
+            .collect();
+        if near.is_empty() {
+            return None;
+        }
+        let prior = k.prior().size;
+        Some(std::array::from_fn(|d| {
+            let mut v: Vec<f64> = near.iter().map(|n| n[d]).collect();
+            v.sort_by(f64::total_cmp);
+            v[v.len() / 2].clamp(prior[d] / 3.0, prior[d] * 3.0)
+        }))
+    });
+    Resolution::Proxy { kind, size, nearest }
 }
 
 /// Applies [`resolve_noun`] to every labelled proxy of `plan`: a kind of a category
 /// becomes that category (reported as approximated); a proxy takes its kind's size prior
-/// (explicit sizes kept); a noun that names no thing is left out. Returns the warnings.
+/// (explicit sizes kept); a noun that names no thing is left out. Each phrase keeps one
+/// line in `approximated`: the planner's "labelled proxy" line is replaced, never
+/// repeated beside a contradicting one. Returns the warnings.
 pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning> {
     let mut warnings = Vec::new();
     let mut dropped: Vec<String> = Vec::new();
@@ -211,18 +351,20 @@ pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning>
         let Some(proxy) = group.proxy.clone() else { continue };
         let res = resolve_noun(&proxy.label, meaning);
         let noun = proxy.label.clone();
+        let approximated = &mut plan.understanding.approximated;
+        let planners_line = |a: &Approximation| a.text == group.phrase && a.became.starts_with("labelled proxy");
         match res {
             Resolution::Category { name, score, lexical } => {
                 let Some(cat) = sw_catalog::find(name) else { continue };
                 let how = match (lexical, score) {
                     (true, _) => format!("a kind of {} (its head noun names it)", cat.display),
-                    (false, Some(s)) => format!(
-                        "the nearest {} by meaning (similarity {s:.2})",
-                        cat.is_a.first().copied().unwrap_or("thing")
-                    ),
+                    (false, Some(s)) => {
+                        format!("a kind of {} by its head, near in meaning (similarity {s:.2})", cat.display)
+                    }
                     (false, None) => format!("a kind of {}", cat.display),
                 };
-                plan.understanding.approximated.push(Approximation {
+                approximated.retain(|a| !planners_line(a));
+                approximated.push(Approximation {
                     text: group.phrase.clone(),
                     became: cat.display.to_string(),
                     reason: format!("'{noun}' is not in the catalog; made as a {}: {how}", cat.display),
@@ -235,23 +377,29 @@ pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning>
                 group.category = cat.name.to_string();
                 group.proxy = None;
             }
-            Resolution::Proxy { kind, nearest } => {
+            Resolution::Proxy { kind, size, nearest } => {
                 let near = nearest.map_or(String::new(), |(n, s)| format!("; nearest category {n} at {s:.2}"));
-                match kind {
-                    Some(k) => {
-                        group.proxy = Some(sized_by_kind(&proxy, k, &group.size.explicit));
-                        warnings.push(Warning::new(
-                            Stage::Forge,
-                            "noun_proxy",
-                            format!("'{noun}' is not in the catalog: a labelled proxy sized as a {}{near}", k.name()),
-                        ));
-                    }
-                    None => warnings.push(Warning::new(
-                        Stage::Forge,
-                        "noun_proxy",
-                        format!("'{noun}' is not in the catalog and its kind is unknown: a labelled proxy sized as a {}{near}", proxy.prior),
-                    )),
-                }
+                let sized = match kind {
+                    Some(k) => sized_by_kind(&proxy, k, size, &group.size),
+                    None => proxy.clone(),
+                };
+                let s = &sized.size;
+                let what = match kind {
+                    Some(k) => format!("sized as a {}", k.name()),
+                    None => format!("its kind unknown, sized as a {}", sized.prior),
+                };
+                let reason = format!(
+                    "no catalog asset for '{noun}'; a {:.2} × {:.2} × {:.2} m box {what}{near}",
+                    s.width, s.depth, s.height
+                );
+                approximated.retain(|a| !planners_line(a));
+                approximated.push(Approximation {
+                    text: group.phrase.clone(),
+                    became: format!("labelled proxy '{noun}'"),
+                    reason: reason.clone(),
+                });
+                warnings.push(Warning::new(Stage::Forge, "noun_proxy", reason.clone()));
+                group.proxy = Some(sized);
             }
             Resolution::NotAThing { nearest } => {
                 let near = nearest.map_or(String::new(), |(n, s)| format!(" (nearest category {n} at {s:.2})"));
@@ -260,6 +408,7 @@ pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning>
                     "not_a_thing",
                     format!("'{noun}' does not name an object the catalog or its kinds know{near}; left out"),
                 ));
+                approximated.retain(|a| !planners_line(a));
                 plan.understanding.not_understood.push(sw_plan::NotUnderstood {
                     text: group.phrase.clone(),
                     reason: format!("'{noun}' does not name a physical object"),
@@ -277,15 +426,25 @@ pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning>
     warnings
 }
 
-/// A proxy resized to the prior of `kind` (explicit dimensions kept).
-fn sized_by_kind(p: &ProxyPlan, kind: Kind, explicit: &sw_plan::ExplicitSize) -> ProxyPlan {
+/// A proxy resized to `kind`: `size` (from the nearest categories of that kind) or the
+/// kind's prior, scaled by the size words the planner applied to its own prior, with
+/// explicit dimensions kept.
+fn sized_by_kind(p: &ProxyPlan, kind: Kind, size: Option<[f64; 3]>, said: &sw_plan::SizeHint) -> ProxyPlan {
     let prior = kind.prior();
-    let mut s = prior.size;
+    let mut s = size.unwrap_or(prior.size);
+    for w in &said.words {
+        let f = w.factors();
+        for (v, f) in s.iter_mut().zip(f) {
+            *v *= f;
+        }
+    }
+    let explicit = &said.explicit;
     for (i, v) in [explicit.width, explicit.depth, explicit.height].into_iter().enumerate() {
         if let Some(v) = v.filter(|v| v.is_finite() && *v > 0.0) {
             s[i] = v;
         }
     }
+    let s = s.map(|v| v.clamp(0.01, 20.0));
     ProxyPlan {
         label: p.label.clone(),
         prior: kind.name().to_string(),
@@ -410,6 +569,29 @@ impl Meaning for MiniLmMeaning {
         )
     }
 
+    fn senses(&self, noun: &str, among: &[&'static Category]) -> Option<Vec<f32>> {
+        if self.vectors.is_empty() {
+            return None;
+        }
+        let q = self.query(noun)?;
+        // The last text of each category is "name: description" (`texts_of`).
+        Some(
+            among
+                .iter()
+                .map(|c| self.vectors.get(c.name).and_then(|vs| vs.last()).map_or(0.0, |v| dot(&q, v)))
+                .collect(),
+        )
+    }
+
+    fn word_similarity(&self, word: &str, other: &str) -> Option<f32> {
+        let model = self.model.as_ref().ok()?;
+        // [CLS], the word, [SEP]: a word of the model's vocabulary, not a misspelling.
+        if model.tokenizer().encode(word).len() != 3 {
+            return None;
+        }
+        Some(dot(&self.query(word)?, &self.query(other)?))
+    }
+
     fn abstractness(&self, noun: &str) -> Option<f32> {
         let q = self.query(noun)?;
         self.vectors.get(ABSTRACT_KEY).map(|vs| vs.iter().map(|v| dot(&q, v)).fold(f32::MIN, f32::max))
@@ -511,12 +693,33 @@ fn is_head_of(word: &str, heads: &[String]) -> bool {
     heads.iter().any(|h| h == word || edit_distance(word, h) <= limit)
 }
 
-/// Groups the planner read by a word that is not the phrase's head noun ("a bottle
-/// opener" read as a bottle, "a potato masher" as a potato): the thing named is not a kind
-/// of that category, so the group becomes an unknown noun for [`resolve_plan`], and the
+/// Why the planner's reading of `words` as `cat` is not that thing, if it is not: the
+/// phrase's head is another word ("a bottle opener" read as a bottle), or the head is a
+/// real word the planner took for a misspelling of one of its names ("trailer" for
+/// "trainer"). A modifier the planner did not model leaves its reading standing: measured
+/// on the scene corpus, weighing such modifiers by meaning turned "a hexagonal table", "a
+/// tomato plant" and "coloured blocks" into proxies far more often than it caught another
+/// thing, and the catalog now names the things it caught.
+fn misreading(words: &[String], cat: &'static Category, meaning: &dyn Meaning) -> Option<String> {
+    let last = words.last()?;
+    let heads = name_heads(cat);
+    let modifier_named = words[..words.len() - 1].iter().any(|w| heads.contains(w));
+    if modifier_named && !is_head_of(last, &heads) {
+        return Some(format!("its head noun is '{last}'"));
+    }
+    if !heads.contains(last) && is_head_of(last, &heads) {
+        let near = heads.iter().min_by_key(|h| edit_distance(last, h))?;
+        if meaning.word_similarity(last, near).is_some_and(|s| s < TYPO_SENSE_MIN) {
+            return Some(format!("'{last}' is a word of its own, not a misspelling of '{near}'"));
+        }
+    }
+    None
+}
+/// Groups the planner read as a category they are not ([`misreading`]): each becomes an
+/// unknown noun for [`resolve_plan`], the planner's line for it is withdrawn and the
 /// report says why. Also notes every group read through another name of its category
 /// ("a handsaw" made as the catalog's hand saw), so that no reading is silent.
-pub fn check_readings(plan: &mut ScenePlan) -> Vec<Warning> {
+pub fn check_readings(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning> {
     let mut warnings = Vec::new();
     let on_something: Vec<String> = plan
         .relations
@@ -527,19 +730,18 @@ pub fn check_readings(plan: &mut ScenePlan) -> Vec<Warning> {
     for group in plan.objects.iter_mut().filter(|o| o.proxy.is_none()) {
         let Some(cat) = sw_catalog::find(&group.category) else { continue };
         let words = phrase_noun(&group.phrase);
-        let Some(last) = words.last() else { continue };
-        let heads = name_heads(cat);
-        let modifier_named = words[..words.len() - 1].iter().any(|w| heads.contains(w));
-        if modifier_named && !is_head_of(last, &heads) {
+        if words.is_empty() {
+            continue;
+        }
+        if let Some(why) = misreading(&words, cat, meaning) {
             let label = words.join(" ");
             warnings.push(Warning::new(
                 Stage::Forge,
                 "noun_reread",
-                format!(
-                    "'{label}' is not a kind of {} (its head noun is '{last}'); read as a noun the catalog lacks",
-                    cat.display
-                ),
+                format!("'{label}' is not a kind of {} ({why}); read as a noun the catalog lacks", cat.display),
             ));
+            let names = [cat.display.to_string(), cat.name.to_string(), cat.name.replace('_', " ")];
+            plan.understanding.approximated.retain(|a| !(group.phrase.contains(&a.text) && names.contains(&a.became)));
             let resting = on_something.contains(&group.id);
             group.proxy = Some(sw_planner::vocab::proxy(&label, resting, &group.size.words, &group.size.explicit));
             group.category = "proxy".to_string();
@@ -547,7 +749,14 @@ pub fn check_readings(plan: &mut ScenePlan) -> Vec<Warning> {
         }
         let said = words.join(" ");
         let own = [cat.display.to_lowercase(), cat.name.replace('_', " ")];
-        if !own.contains(&said) && !plan.understanding.approximated.iter().any(|a| a.text == group.phrase) {
+        let names = [cat.display.to_string(), cat.name.to_string(), cat.name.replace('_', " ")];
+        // One line per reading: the planner may have said it already, of a word of the phrase.
+        let said_already = plan
+            .understanding
+            .approximated
+            .iter()
+            .any(|a| a.text == group.phrase || (group.phrase.contains(&a.text) && names.contains(&a.became)));
+        if !own.contains(&said) && !said_already {
             plan.understanding.approximated.push(Approximation {
                 text: group.phrase.clone(),
                 became: cat.display.to_string(),
@@ -558,11 +767,30 @@ pub fn check_readings(plan: &mut ScenePlan) -> Vec<Warning> {
     warnings
 }
 
+/// The shared matcher, loaded on its first question: a prompt whose every noun the
+/// catalog knows never loads the model.
+struct Lazy;
+
+impl Meaning for Lazy {
+    fn scores(&self, noun: &str, among: &[&'static Category]) -> Option<Vec<f32>> {
+        MiniLmMeaning::shared().scores(noun, among)
+    }
+    fn senses(&self, noun: &str, among: &[&'static Category]) -> Option<Vec<f32>> {
+        MiniLmMeaning::shared().senses(noun, among)
+    }
+    fn word_similarity(&self, word: &str, other: &str) -> Option<f32> {
+        MiniLmMeaning::shared().word_similarity(word, other)
+    }
+    fn abstractness(&self, noun: &str) -> Option<f32> {
+        MiniLmMeaning::shared().abstractness(noun)
+    }
+}
+
 /// Checks how the planner read every group ([`check_readings`]), then resolves the
 /// plan's unknown nouns with the shared matcher when there are any; says when matching
 /// by meaning is off.
 pub(crate) fn resolve_unknown_nouns(plan: &mut ScenePlan) -> Vec<Warning> {
-    let mut warnings = check_readings(plan);
+    let mut warnings = check_readings(plan, &Lazy);
     if plan.objects.iter().all(|o| o.proxy.is_none()) {
         return warnings;
     }

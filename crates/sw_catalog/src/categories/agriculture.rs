@@ -143,6 +143,8 @@ pub(crate) const PLANTER_BOX: Category = Category {
     display: "planter box",
     synonyms: &[
         "raised bed",
+        "window box",
+        "window planter",
         "raised garden bed",
         "garden bed",
         "plant bed",

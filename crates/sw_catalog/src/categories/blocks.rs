@@ -53,7 +53,7 @@ fn build_cube(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const CYLINDER: Category = Category {
     name: "cylinder",
     display: "cylinder",
-    synonyms: &["cylindrical block", "puck", "round block", "peg", "rod", "dowel"],
+    synonyms: &["cylindrical block", "puck", "round block", "rod", "dowel"],
     tags: &["tabletop", "small", "graspable", "primitive", "round"],
     description: "a small solid cylinder or peg for picking",
     is_a: &["block", "toy", "shape"],

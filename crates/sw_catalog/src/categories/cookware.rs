@@ -722,7 +722,16 @@ fn build_wine_glass(p: &Params, _rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const DRINKING_GLASS: Category = def(
     "drinking_glass",
     "drinking glass",
-    &["water glass", "highball glass", "tumbler glass", "juice glass", "pint glass", "glass of water", "whisky glass"],
+    &[
+        "water glass",
+        "highball glass",
+        "tumbler",
+        "tumbler glass",
+        "juice glass",
+        "pint glass",
+        "glass of water",
+        "whisky glass",
+    ],
     &["kitchen", "tabletop", "small", "graspable", "round", "open", "container"],
     "a clear straight-sided drinking glass",
     &["glass", "drinkware", "glassware", "vessel"],

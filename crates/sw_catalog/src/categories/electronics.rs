@@ -157,15 +157,7 @@ fn build_keyboard(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const PRINTER: Category = Category {
     name: "printer",
     display: "printer",
-    synonyms: &[
-        "office printer",
-        "laser printer",
-        "inkjet printer",
-        "copier",
-        "photocopier",
-        "multifunction printer",
-        "scanner",
-    ],
+    synonyms: &["office printer", "laser printer", "inkjet printer", "multifunction printer", "scanner"],
     tags: &["office", "electronics", "surface", "small"],
     description: "an office laser printer or copier",
     is_a: &["office machine", "electronics", "device"],

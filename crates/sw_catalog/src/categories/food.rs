@@ -204,7 +204,7 @@ fruit!(
     MANGO,
     "mango",
     "mango",
-    ["papaya", "avocado"],
+    ["ataulfo mango", "ripe mango"],
     "an oval mango",
     0.085,
     0.11,
@@ -220,7 +220,7 @@ fruit!(
     KIWI,
     "kiwi",
     "kiwi fruit",
-    ["kiwifruit", "fig", "passion fruit"],
+    ["kiwifruit", "golden kiwi"],
     "a small oval brown kiwi fruit",
     0.052,
     0.065,
@@ -252,16 +252,91 @@ fruit!(
     CAULIFLOWER,
     "cauliflower",
     "cauliflower",
-    ["broccoli", "head of broccoli", "cabbage", "lettuce", "iceberg lettuce", "head of lettuce"],
-    "a round head of cauliflower, broccoli or lettuce",
+    ["head of cauliflower", "cauliflower head"],
+    "a round white head of cauliflower in its leaves",
     0.15,
     0.13,
     build_cauliflower,
     bulb(0.4, 0.35, 0.3),
-    &[[0.95, 0.93, 0.85, 1.0], [0.25, 0.5, 0.2, 1.0], [0.55, 0.78, 0.35, 1.0]],
+    &[[0.95, 0.93, 0.85, 1.0], [0.92, 0.9, 0.8, 1.0]],
     LEAF,
     400.0,
-    "Cauliflower and broccoli heads, lettuces: 12–18 cm across, 10–15 cm tall."
+    "Cauliflower heads: 12–18 cm across, 10–15 cm tall."
+);
+fruit!(
+    BROCCOLI,
+    "broccoli",
+    "broccoli",
+    ["head of broccoli", "broccoli head", "calabrese", "broccoli floret"],
+    "a green head of broccoli on a short thick stalk",
+    0.15,
+    0.15,
+    build_broccoli,
+    bulb(0.25, 0.55, 0.5),
+    &[[0.2, 0.45, 0.18, 1.0], [0.25, 0.5, 0.2, 1.0]],
+    LEAF,
+    350.0,
+    "Broccoli heads: 12–18 cm across and as tall."
+);
+fruit!(
+    LETTUCE,
+    "lettuce",
+    "lettuce",
+    ["head of lettuce", "iceberg lettuce", "romaine lettuce", "round lettuce", "little gem"],
+    "a round head of lettuce, leaves wrapped tight",
+    0.17,
+    0.14,
+    build_lettuce,
+    bulb(0.35, 0.45, 0.35),
+    &[[0.55, 0.78, 0.35, 1.0], [0.45, 0.7, 0.3, 1.0], [0.35, 0.55, 0.25, 1.0]],
+    LEAF,
+    450.0,
+    "Iceberg lettuces: 15–20 cm across, 12–16 cm tall."
+);
+fruit!(
+    PLUM,
+    "plum",
+    "plum",
+    ["damson", "greengage", "red plum"],
+    "a small purple plum with a short stalk",
+    0.052,
+    0.055,
+    build_plum,
+    bulb(0.3, 0.45, 0.25),
+    &[[0.4, 0.12, 0.35, 1.0], [0.5, 0.15, 0.3, 1.0], [0.95, 0.6, 0.2, 1.0]],
+    STALK,
+    1000.0,
+    "Plums: 4.5–6 cm across."
+);
+fruit!(
+    LIME,
+    "lime",
+    "lime",
+    ["key lime", "persian lime"],
+    "a small round green lime",
+    0.05,
+    0.054,
+    build_lime,
+    bulb(0.3, 0.5, 0.2),
+    &[[0.45, 0.7, 0.15, 1.0], [0.35, 0.6, 0.12, 1.0]],
+    STALK,
+    1000.0,
+    "Limes: 4.5–6 cm across, 5–6 cm long."
+);
+fruit!(
+    STRAWBERRY,
+    "strawberry",
+    "strawberry",
+    ["wild strawberry", "garden strawberry"],
+    "a red strawberry with green leaves on top",
+    0.04,
+    0.05,
+    build_strawberry,
+    [[0.0, 0.0], [0.2, 0.0], [0.7, 0.4], [1.0, 0.75], [0.9, 0.95], [0.0, 0.97]],
+    &[[0.85, 0.1, 0.12, 1.0], [0.75, 0.08, 0.1, 1.0]],
+    LEAF,
+    950.0,
+    "Strawberries: 3–5 cm across, 4–6 cm long."
 );
 // Bell peppers: 7–9 cm across, 8–10 cm tall.
 fruit!(
@@ -316,7 +391,7 @@ fruit!(
     GRAPES,
     "grapes",
     "bunch of grapes",
-    ["grape", "cherries", "strawberries", "punnet of strawberries", "berries", "blueberries"],
+    ["grape", "red grapes", "green grapes"],
     "a bunch of grapes or a handful of berries",
     0.12,
     0.08,
@@ -355,9 +430,9 @@ fn long_veg(p: &Params, rng: &mut Rng, b: &mut AssetBuilder, skins: &[[f32; 4]])
 pub(crate) const CUCUMBER: Category = def(
     "cucumber",
     "cucumber",
-    &["courgette", "zucchini", "marrow", "aubergine", "eggplant", "leek"],
+    &["english cucumber", "salad cucumber"],
     PACKAGE,
-    "a long green cucumber or courgette lying down",
+    "a long green cucumber lying down",
     &["vegetable", "produce", "food"],
     Kind::Food,
     PlacementKind::OnSurface,
@@ -372,7 +447,53 @@ pub(crate) const CUCUMBER: Category = def(
 );
 
 fn build_cucumber(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
-    long_veg(p, rng, b, &[[0.2, 0.45, 0.15, 1.0], [0.3, 0.55, 0.2, 1.0], [0.3, 0.12, 0.3, 1.0]])
+    long_veg(p, rng, b, &[[0.2, 0.45, 0.15, 1.0], [0.3, 0.55, 0.2, 1.0]])
+}
+
+pub(crate) const COURGETTE: Category = def(
+    "courgette",
+    "courgette",
+    &["zucchini", "marrow", "summer squash", "baby marrow"],
+    PACKAGE,
+    "a dark green courgette lying down",
+    &["vegetable", "produce", "food"],
+    Kind::Food,
+    PlacementKind::OnSurface,
+    true,
+    // Courgettes: 18–22 cm long, 4–5 cm across.
+    &[
+        ParamDef::new("width", 0.2, 0.12, 0.4, 0.1, "length"),
+        ParamDef::new("depth", 0.045, 0.03, 0.09, 0.08, "diameter"),
+        ParamDef::new("height", 0.045, 0.03, 0.09, 0.08, "diameter, lying"),
+    ],
+    build_courgette,
+);
+
+fn build_courgette(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    long_veg(p, rng, b, &[[0.12, 0.3, 0.1, 1.0], [0.18, 0.38, 0.12, 1.0]])
+}
+
+pub(crate) const AUBERGINE: Category = def(
+    "aubergine",
+    "aubergine",
+    &["eggplant", "brinjal"],
+    PACKAGE,
+    "a glossy purple aubergine lying down",
+    &["vegetable", "produce", "food"],
+    Kind::Food,
+    PlacementKind::OnSurface,
+    true,
+    // Aubergines: 18–22 cm long, 7–9 cm across.
+    &[
+        ParamDef::new("width", 0.2, 0.12, 0.3, 0.1, "length"),
+        ParamDef::new("depth", 0.08, 0.05, 0.11, 0.08, "diameter"),
+        ParamDef::new("height", 0.08, 0.05, 0.11, 0.08, "diameter, lying"),
+    ],
+    build_aubergine,
+);
+
+fn build_aubergine(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    long_veg(p, rng, b, &[[0.3, 0.12, 0.3, 1.0], [0.25, 0.08, 0.25, 1.0]])
 }
 
 pub(crate) const CORN_COB: Category = def(
@@ -476,7 +597,7 @@ fn build_banana(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const CARROT: Category = def(
     "carrot",
     "carrot",
-    &["parsnip", "carrots"],
+    &["carrots", "baby carrot"],
     PACKAGE,
     "a long orange carrot with green tops",
     &["vegetable", "produce", "food"],
@@ -628,7 +749,7 @@ fn build_cereal_box(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const MILK_CARTON: Category = def(
     "milk_carton",
     "milk carton",
-    &["carton of milk", "juice carton", "milk", "orange juice", "tetra pak", "carton of juice", "juice box"],
+    &["carton of milk", "juice carton", "milk", "orange juice", "tetra pak", "carton of juice"],
     PACKAGE,
     "a gable-topped carton of milk or juice",
     &["carton", "package", "packaging", "container"],

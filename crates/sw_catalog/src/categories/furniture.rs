@@ -49,6 +49,8 @@ pub(crate) const WORKBENCH: Category = Category {
     display: "workbench",
     synonyms: &[
         "work bench",
+        "potting bench",
+        "potting table",
         "workshop bench",
         "workshop table",
         "assembly bench",

@@ -98,6 +98,7 @@ pub(crate) const MACHINE: Category = Category {
         "machining center",
         "machining centre",
         "milling machine",
+        "mill",
         "machine tool",
         "industrial machine",
         "production machine",

@@ -22,7 +22,7 @@ const PRINT: &[[f32; 4]] = &[
 pub(crate) const MAGAZINE: Category = def(
     "magazine",
     "magazine",
-    &["newspaper", "comic", "comic book", "brochure", "catalogue", "catalog", "leaflet", "pamphlet"],
+    &["comic", "comic book", "brochure", "catalogue", "catalog", "leaflet", "pamphlet"],
     SMALL,
     "a magazine or folded newspaper lying flat",
     &["publication", "paper"],
@@ -206,7 +206,7 @@ fn build_toothpaste(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const ERASER: Category = def(
     "eraser",
     "eraser",
-    &["rubber eraser", "pencil eraser", "whiteboard eraser", "board rubber"],
+    &["rubber eraser", "pencil eraser", "whiteboard eraser", "board rubber", "rubber"],
     SMALL,
     "a rectangular rubber eraser",
     &["stationery", "office supply"],

@@ -20,7 +20,7 @@ const COVERS: &[[f32; 4]] = &[
 pub(crate) const BOOK: Category = Category {
     name: "book",
     display: "book",
-    synonyms: &["hardcover book", "paperback", "textbook", "manual", "binder", "ring binder", "folder"],
+    synonyms: &["hardcover book", "paperback", "textbook", "manual", "novel", "bible", "hardback"],
     tags: &["office", "tabletop", "classroom", "small", "graspable", "stackable"],
     description: "a hardcover book or binder",
     is_a: &["publication"],
@@ -55,7 +55,7 @@ fn build_book(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const PEN: Category = Category {
     name: "pen",
     display: "pen",
-    synonyms: &["ballpoint pen", "ballpoint"],
+    synonyms: &["ballpoint pen", "ballpoint", "biro", "rollerball pen", "gel pen"],
     tags: &["office", "tabletop", "classroom", "small", "graspable"],
     description: "a ballpoint pen",
     is_a: &["writing implement", "stationery"],

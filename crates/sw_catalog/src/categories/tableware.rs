@@ -95,7 +95,7 @@ fn build_mug(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const CUP: Category = Category {
     name: "cup",
     display: "cup",
-    synonyms: &["paper cup", "plastic cup", "drinking cup", "tumbler", "disposable cup", "beverage cup"],
+    synonyms: &["paper cup", "plastic cup", "drinking cup", "disposable cup", "beverage cup"],
     tags: &["tabletop", "kitchen", "office", "small", "graspable", "round"],
     description: "a paper or plastic drinking cup without a handle",
     is_a: &["vessel", "drinkware", "container"],
@@ -314,9 +314,9 @@ fn build_bottle(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const DRINK_CAN: Category = Category {
     name: "drink_can",
     display: "drink can",
-    synonyms: &["soda can", "beer can", "tin can", "food can", "cola can", "beverage can", "soup can", "tin"],
+    synonyms: &["soda can", "beer can", "tin can", "cola can", "beverage can", "tin", "can of coke", "can"],
     tags: &["tabletop", "kitchen", "retail", "small", "graspable", "round"],
-    description: "a printed aluminium drink can or food tin",
+    description: "a printed aluminium drink can",
     is_a: &["can", "container"],
     kind: Kind::Tabletop,
     placement: PlacementKind::OnSurface,
