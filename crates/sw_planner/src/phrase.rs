@@ -436,8 +436,11 @@ impl Phrases<'_> {
     fn nouns_at(&self, mut k: usize, after_quantity: bool) -> Vec<Noun> {
         let mut out = Vec::new();
         while out.len() < 5 {
-            // Walls, windows and doors are places even where the catalog has a model of one.
-            if let Some((p @ (PlaceKind::Wall | PlaceKind::Door | PlaceKind::Person), len)) = place_at(self.toks, k) {
+            // Walls, windows and doors are places even where the catalog has a model of one,
+            // unless a longer name begins with them ("a wall clock", "a door mat").
+            if let Some((p @ (PlaceKind::Wall | PlaceKind::Door | PlaceKind::Person), len)) = place_at(self.toks, k)
+                && !self.lookup(k, is_head).is_some_and(|(_, n)| n > len)
+            {
                 out.push(Noun::Place(p, k, len));
                 k += len;
                 continue;
@@ -534,7 +537,15 @@ impl Phrases<'_> {
                 j += len;
                 continue;
             }
+            // A colour or material word that begins a longer name of another thing is part of
+            // it ("cream cheese" is no cream-coloured cheese); before a name of the same thing
+            // ("a steel cabinet" is a cabinet) it stays the colour.
+            let starts_name = |len: usize| match self.lookup(j, is_head) {
+                Some((whole, n)) if n > len => self.lookup(j + len, is_head).is_none_or(|(rest, _)| rest != whole),
+                _ => false,
+            };
             match self.lookup(j, |m| matches!(m, Meaning::Color(..) | Meaning::Size(_) | Meaning::Material(..))) {
+                Some((Meaning::Color(..) | Meaning::Material(..), len)) if starts_name(len) => break,
                 Some((Meaning::Color(name, rgba), len)) if !self.boundary_after_modifier(j + len) => {
                     color = Some(NamedColor { name: name.to_string(), rgba });
                     j += len;

@@ -45,6 +45,16 @@ fn group<'a>(p: &'a ScenePlan, category: &str) -> &'a ObjectPlan {
     }
 }
 
+/// The one group that is a whole compound noun: the catalog's category of that name (or
+/// synonym) when it has one, else the proxy labelled with it.
+fn whole<'a>(p: &'a ScenePlan, words: &str) -> &'a ObjectPlan {
+    let named = sw_catalog::categories().iter().find(|c| c.display == words || c.synonyms.contains(&words));
+    match named {
+        Some(c) => group(p, c.name),
+        None => proxy(p, words),
+    }
+}
+
 /// The only proxy group labelled `label`.
 fn proxy<'a>(p: &'a ScenePlan, label: &str) -> &'a ObjectPlan {
     let found: Vec<&ObjectPlan> =
@@ -1400,14 +1410,15 @@ fn has_proxy_with(p: &ScenePlan, word: &str) -> bool {
 #[test]
 fn a_known_noun_before_an_unknown_one_modifies_it() {
     // English compounds are right-headed: the unknown noun is the thing, the known one its kind.
+    // (The catalog may have a model of the whole compound; then it is that model.)
     let p = ok("a garage with a wheel balancer and a tyre changer");
-    assert_eq!(proxy(&p, "wheel balancer").count, 1);
-    assert_eq!(proxy(&p, "tyre changer").count, 1);
+    assert_eq!(whole(&p, "wheel balancer").count, 1);
+    assert_eq!(whole(&p, "tyre changer").count, 1);
     assert!(!p.objects.iter().any(|o| o.category == "tire"), "no tyre was asked for\n{}", dump(&p));
     assert!(not_understood(&p).is_empty(), "{:?}", not_understood(&p));
     // The count agrees with the head, not the modifier.
     let p = ok("two tomato sauces and a mug on a table");
-    assert_eq!(proxy(&p, "tomato sauce").count, 2);
+    assert_eq!(whole(&p, "tomato sauce").count, 2);
     assert_eq!(group(&p, "mug").count, 1);
     // A word one letter off a known noun is that noun misspelt, not a new thing.
     let p = ok("a desk chiar");
@@ -1538,4 +1549,24 @@ fn loose_small_things_are_the_work_of_the_only_arm_surface() {
     let p = ok("a table, a desk, a mug and a Panda");
     let mug = group(&p, "mug").id.clone();
     assert!(!p.relations.iter().any(|r| r.subject == mug), "{}", dump(&p));
+}
+
+#[test]
+fn a_colour_or_place_word_that_begins_a_catalog_name_is_part_of_it() {
+    // Every catalog name whose first word is a colour, a material or a wall/door place word
+    // is read whole; the same word before another noun still modifies it.
+    for cat in sw_catalog::categories() {
+        let first = cat.display.split_whitespace().next().unwrap_or_default();
+        let starts_with_modifier = matches!(first, "cream" | "wall" | "door" | "steel" | "white" | "black");
+        if !starts_with_modifier || !cat.display.contains(' ') {
+            continue;
+        }
+        let p = ok(&format!("a room with a {}", cat.display));
+        assert!(p.objects.iter().any(|g| g.category == cat.name), "{}: {}", cat.display, dump(&p));
+    }
+    let p = ok("a kitchen with a cream cheese, a wall clock and a cream mug");
+    group(&p, "cream_cheese");
+    group(&p, "wall_clock");
+    let mug = group(&p, "mug");
+    assert_eq!(mug.color.as_ref().map(|c| c.name.as_str()), Some("cream"), "{}", dump(&p));
 }
