@@ -379,13 +379,17 @@ pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning>
             }
             Resolution::Proxy { kind, size, nearest } => {
                 let near = nearest.map_or(String::new(), |(n, s)| format!("; nearest category {n} at {s:.2}"));
+                // What the prompt said of it (a head noun the planner knows, a surface it
+                // rests on: "four parts on the bench") outranks its neighbours by meaning.
+                let said = proxy.prior != sw_planner::FALLBACK_PRIOR;
                 let sized = match kind {
-                    Some(k) => sized_by_kind(&proxy, k, size, &group.size),
-                    None => proxy.clone(),
+                    Some(k) if !said => sized_by_kind(&proxy, k, size, &group.size),
+                    _ => proxy.clone(),
                 };
                 let s = &sized.size;
                 let what = match kind {
-                    Some(k) => format!("sized as a {}", k.name()),
+                    Some(k) if !said => format!("sized as a {}", k.name()),
+                    Some(_) => format!("sized as a {} (as the prompt puts it)", sized.prior),
                     None => format!("its kind unknown, sized as a {}", sized.prior),
                 };
                 let reason = format!(

@@ -230,3 +230,24 @@ fn a_real_word_is_not_read_as_a_misspelling_and_each_noun_has_one_report_line() 
         }
     }
 }
+
+#[test]
+fn a_proxy_the_prompt_sets_on_a_surface_keeps_a_surface_items_size() {
+    // "four parts on the bench": whatever a part is nearest in meaning (a bin), the prompt
+    // says it rests on a bench, so it is a tabletop item, and the arm beside the bench
+    // reaches all four.
+    if minilm().is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("g");
+    let prompt = "a workshop with a UR5e on a pedestal beside a workbench with four parts on the bench";
+    let o = generate(prompt, &out, &Options { verify: true, ..Options::default() }, &mut |_| {}).unwrap();
+    assert!(sw_pipeline::succeeded(&o.report), "{:?}", o.report.verification);
+    let parts: Vec<_> = o.layout.objects.iter().filter(|p| p.label == "part").collect();
+    assert_eq!(parts.len(), 4, "{:?}", o.layout.objects);
+    let g = o.plan.objects.iter().find(|g| g.proxy.as_ref().is_some_and(|p| p.label == "part")).unwrap();
+    let s = &g.proxy.as_ref().unwrap().size;
+    assert!(s.width.max(s.depth).max(s.height) <= 0.2, "{s:?}");
+    assert!(!o.report.warnings.iter().any(|w| w.message.contains("out of its reach")), "{:?}", o.report.warnings);
+}

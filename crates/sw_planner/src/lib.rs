@@ -14,6 +14,7 @@ pub mod llm;
 mod parse;
 mod phrase;
 mod priors;
+pub use priors::FALLBACK as FALLBACK_PRIOR;
 mod quantity;
 pub mod refine;
 mod said;

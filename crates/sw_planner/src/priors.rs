@@ -18,7 +18,11 @@ const TALL_FIXTURE: Prior = Prior { name: "tall fixture", size: [0.8, 0.6, 1.9],
 const PLANT: Prior = Prior { name: "plant", size: [0.45, 0.45, 1.0], movable: false };
 const VEHICLE: Prior = Prior { name: "vehicle", size: [2.6, 1.2, 2.0], movable: false };
 const SMALL_VEHICLE: Prior = Prior { name: "cart", size: [1.0, 0.6, 1.0], movable: false };
-const FLOOR_OBJECT: Prior = Prior { name: "floor object", size: [0.6, 0.6, 0.9], movable: false };
+const FLOOR_OBJECT: Prior = Prior { name: FALLBACK, size: [0.6, 0.6, 0.9], movable: false };
+
+/// The prior of a proxy whose words say nothing of its size: neither its head noun nor a
+/// support it rests on. Any other prior was read from the prompt.
+pub const FALLBACK: &str = "floor object";
 
 /// Head nouns (singular) that name each prior.
 const BY_NOUN: &[(&[&str], Prior)] = &[
