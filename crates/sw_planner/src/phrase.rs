@@ -439,7 +439,7 @@ impl Phrases<'_> {
             // Walls, windows and doors are places even where the catalog has a model of one,
             // unless a longer name begins with them ("a wall clock", "a door mat").
             if let Some((p @ (PlaceKind::Wall | PlaceKind::Door | PlaceKind::Person), len)) = place_at(self.toks, k)
-                && !self.lookup(k, is_head).is_some_and(|(_, n)| n > len)
+                && self.lookup(k, is_head).is_none_or(|(_, n)| n <= len)
             {
                 out.push(Noun::Place(p, k, len));
                 k += len;
