@@ -77,18 +77,32 @@ fn jobs(addr: SocketAddr, token: &str) -> Vec<Value> {
     v["jobs"].as_array().unwrap().clone()
 }
 
+/// Waits until a job runs; fails (never hangs) when every job ended first or after 5 minutes.
 fn wait_until_one_runs(addr: SocketAddr, token: &str) {
-    while !jobs(addr, token).iter().any(|j| j["state"] == "running") {
+    let t0 = Instant::now();
+    loop {
+        let js = jobs(addr, token);
+        if js.iter().any(|j| j["state"] == "running") {
+            return;
+        }
+        assert!(!js.iter().all(terminal), "every job ended before one was caught running");
+        assert!(t0.elapsed() < Duration::from_secs(300), "no job ran within 5 minutes");
         std::thread::sleep(Duration::from_millis(20));
     }
 }
 
+fn terminal(job: &Value) -> bool {
+    ["succeeded", "failed", "cancelled"].contains(&job["state"].as_str().unwrap_or(""))
+}
+
 fn wait_all_terminal(addr: SocketAddr, token: &str) -> Vec<Value> {
+    let t0 = Instant::now();
     loop {
         let js = jobs(addr, token);
-        if js.iter().all(|j| ["succeeded", "failed", "cancelled"].contains(&j["state"].as_str().unwrap())) {
+        if js.iter().all(terminal) {
             return js;
         }
+        assert!(t0.elapsed() < Duration::from_secs(600), "jobs still not ended after 10 minutes: {js:?}");
         std::thread::sleep(Duration::from_millis(100));
     }
 }
@@ -208,17 +222,26 @@ fn killing_a_worker_on_postgresql_loses_nothing() {
     let (mut server, addr) = serve_on(&data, db, 0);
     let token = login(addr);
     let ids = submit(addr, &token, 8);
-    let mut steady = worker_on(&data, db, 1);
+    // The worker to kill starts first and is killed once it holds a job; the steady one
+    // starts after the first kill, so it cannot take every job before a kill lands.
     let mut w = worker_on(&data, db, 2);
+    let mut steady = None;
     let mut rerun = Vec::new();
+    let t0 = Instant::now();
     while rerun.is_empty() {
-        wait_until_one_runs(addr, &token);
         let pid = w.id();
+        while held_by(&data, db, pid).is_empty() {
+            assert!(!jobs(addr, &token).iter().all(terminal), "every job ended before the worker held one");
+            assert!(t0.elapsed() < Duration::from_secs(300), "the worker held no job within 5 minutes");
+            std::thread::sleep(Duration::from_millis(20));
+        }
         kill9(&mut w);
         // The jobs the killed process held (runner names start with its process id).
         rerun = held_by(&data, db, pid);
         w = worker_on(&data, db, 2);
+        steady.get_or_insert_with(|| worker_on(&data, db, 1));
     }
+    let mut steady = steady.unwrap();
     let done = wait_all_terminal(addr, &token);
     assert_eq!(done.len(), ids.len());
     assert_only_scratch_of(&data, &[steady.id(), w.id()]);
