@@ -14,12 +14,14 @@
 //! and the Python replay check judges with its own code from the official bindings.
 
 pub mod bind;
+mod goal;
 pub mod judge;
 pub mod task;
 mod vocab;
 mod words;
 
 pub use bind::{SceneFacts, SceneRobot, bind};
+pub use goal::read_goals;
 pub use judge::{BodyState, Bounds, GoalVerdict, Snapshot, Surface, holds, judge};
 pub use task::{Family, GripperInterface, Predicate, TASK_VERSION, Task};
 
