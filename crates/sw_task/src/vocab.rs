@@ -223,6 +223,9 @@ pub(crate) const WRAPPERS: &[&str] = &[
     "carefully",
     "gently",
     "slowly",
+    "mind",
+    "be",
+    "able",
 ];
 
 /// Closed-class words a typo may hide ("teh", "inot", "ontop").

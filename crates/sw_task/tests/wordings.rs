@@ -10,7 +10,12 @@ const FLOOR: f64 = 0.95;
 
 #[test]
 fn task_wordings_from_public_suites() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../bench/demos/task_wordings_dev.tsv");
+    // SW_TASK_WORDINGS scores another file of the same form (a held-out set), floor aside.
+    let other = std::env::var_os("SW_TASK_WORDINGS");
+    let path = match &other {
+        Some(p) => Path::new(p).to_path_buf(),
+        None => Path::new(env!("CARGO_MANIFEST_DIR")).join("../../bench/demos/task_wordings_dev.tsv"),
+    };
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let (mut right, mut total) = (0usize, 0usize);
     let mut misses = Vec::new();
@@ -40,6 +45,9 @@ fn task_wordings_from_public_suites() {
     }
     let share = right as f64 / total as f64;
     println!("task wordings read right: {right} / {total} ({:.0} %)", 100.0 * share);
+    if other.is_some() {
+        return;
+    }
     assert!(total >= 80, "the suite holds {total} wordings");
     assert!(share >= FLOOR, "{right} / {total} read right, below the floor {FLOOR}");
 }
