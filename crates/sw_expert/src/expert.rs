@@ -499,3 +499,29 @@ pub(crate) fn carry_speed(held: &Held) -> f64 {
     let lever = (c[0] * c[0] + c[2] * c[2]).sqrt();
     (CARRY_SPEED * (CARRY_LEVER / lever.max(1e-9)).min(1.0)).max(CARRY_SPEED_MIN)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::M3;
+
+    fn held_at(rel_com: V3) -> Held {
+        let eye: M3 = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+        Held { body: 1, qpos: 0, rel_pos: rel_com, rel_rot: eye, rel_com }
+    }
+
+    #[test]
+    fn carry_slows_with_the_lever_about_the_closing_axis() {
+        // A cube pinched through its centre: full carry speed.
+        assert_eq!(carry_speed(&held_at([0.0, 0.0, 0.008])), CARRY_SPEED);
+        // A tall thing held 50 mm above its centre: slower, by the lever.
+        let v = carry_speed(&held_at([0.03, 0.0, 0.04]));
+        assert!((v - CARRY_SPEED * CARRY_LEVER / 0.05).abs() < 1e-9, "{v}");
+        // A bottle by its neck, 85 mm above its centre: at the floor.
+        assert_eq!(carry_speed(&held_at([0.0, 0.0, 0.085])), CARRY_SPEED_MIN);
+        // An offset along the closing axis (y) is no lever about it.
+        assert_eq!(carry_speed(&held_at([0.0, 0.2, 0.0])), CARRY_SPEED);
+        // Never slower than the floor.
+        assert_eq!(carry_speed(&held_at([0.5, 0.0, 0.5])), CARRY_SPEED_MIN);
+    }
+}
