@@ -350,7 +350,13 @@ fn size_for_load(plan: &mut ScenePlan, notes: &mut Vec<Approximation>) {
     for r in &plan.relations {
         let RelationKind::On { target } = &r.kind else { continue };
         let Some(item) = plan.object(&r.subject) else { continue };
-        let Some((w, d, _)) = footprint(&item.category) else { continue };
+        let Some((mut w, mut d, _)) = footprint(&item.category) else { continue };
+        // "six small boxes": the size words scale the footprint as they will the asset.
+        for word in &item.size.words {
+            let [fw, fd, _] = word.factors();
+            w *= fw;
+            d *= fd;
+        }
         load.entry(target.clone()).or_default().push((w, d, item.count));
     }
     for (host, items) in load {
