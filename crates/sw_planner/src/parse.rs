@@ -361,8 +361,11 @@ impl<'a> Parser<'a> {
                 i += 1;
                 continue;
             }
-            let after_list_word = i > 0
-                && (self.toks[i - 1].kind == TokenKind::Comma
+            // A clause's start counts too: "shoe shop: benches in the middle", "Boxes on
+            // every shelf."
+            let after_list_word = i == 0
+                || (self.toks[i - 1].kind == TokenKind::Comma
+                    || self.toks[i - 1].kind == TokenKind::Stop
                     || matches!(self.word(i - 1), "and" | "with" | "plus" | "&"));
             // "two rows of desks", "a stack of boxes": what follows a collective is an object.
             let bare = if self.collective.is_some() {
