@@ -269,3 +269,29 @@ fn one_cube_between_two_pandas_on_a_table_is_reached_by_both() {
         {"subject": "panda", "relation": "reach", "target": "cube"}]});
     check("one-cube-two-arms", &p, line, &[], &[]);
 }
+
+#[test]
+fn an_arm_on_a_long_counter_stands_where_it_reaches_the_stove_beside_it() {
+    let mut p = plan(
+        "kitchen",
+        [5.0, 4.0, 2.7],
+        &[("counter", "counter", 1), ("stove", "stove", 1), ("pan", "frying_pan", 1)],
+        json!([
+            {"subject": "counter", "relation": "against_wall", "wall": "north"},
+            {"subject": "stove", "relation": "next_to", "target": "counter"},
+            {"subject": "pan", "relation": "on", "target": "counter"},
+            {"subject": "panda", "relation": "reach", "target": "stove"},
+            {"subject": "panda", "relation": "reach", "target": "counter"}
+        ]),
+        json!([{"id": "panda", "model": "panda", "phrase": "a Panda", "count": 1,
+                "mount": {"mount": "on_surface", "target": "counter"}}]),
+    );
+    // A 3 m run: from the middle of its back edge a Panda reaches neither end.
+    p.objects[0].size.explicit.length = Some(3.0);
+    let line = json!({"counts": {"counter": 1, "stove": 1, "frying_pan": 1}, "robots": {"panda": 1}, "relations": [
+        {"subject": "panda", "relation": "on", "target": "counter"},
+        {"subject": "stove", "relation": "next_to", "target": "counter"},
+        {"subject": "panda", "relation": "reach", "target": "stove"},
+        {"subject": "panda", "relation": "reach", "target": "frying_pan"}]});
+    check("arm-reaches-stove", &p, line, &[], &[]);
+}
