@@ -30,6 +30,7 @@ LISTS = ["coco", "objects365", "ycb", "lvis_frequent", "robocasa", "shapenet"]
 
 
 def norm(s: str) -> str:
+    s = re.sub(r"\([^)]*\)", " ", s)
     s = re.sub(r"^\d+(-[a-z])?_", "", s.strip())
     s = s.replace("_", " ").replace("-", " ").lower()
     return re.sub(r"\s+", " ", re.sub(r"[^a-z0-9' ]", " ", s)).strip()
