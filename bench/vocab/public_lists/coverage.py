@@ -4,7 +4,8 @@ A noun is read as the list spells it: underscores and hyphens as spaces, a YCB i
 dropped, "a/b" as two alternatives, a plural also tried singular. It is
 
 - **named** when it (or an alternative) is one of a category's names: its display name,
-  registry name or a synonym (`scenewright assets list --json`);
+  registry name or a synonym (`scenewright assets list --json`), plurals read singular on
+  both sides;
 - **a kind** when its head (last two words, else last word) is such a name: "tomato soup
   can" is a kind of can, and the open-vocabulary route makes it as one;
 - **out of scope** when out_of_scope.txt lists it (living things, road/air/water vehicles,
@@ -83,7 +84,8 @@ def catalog_names(binary: str) -> set[str]:
     names: set[str] = set()
     for c in cats:
         for n in [c["name"], c["display"], *c.get("synonyms", [])]:
-            names.add(norm(n))
+            # A plural name ("earphones") names the singular too, as the planner reads it.
+            names.update(forms(n))
     return names
 
 

@@ -213,7 +213,7 @@ thing!(GRANOLA_BAR: "granola_bar", "granola bar", ["cereal bar", "energy bar", "
 // Bag of crisps: 150 g sharing bag, 20 × 8 × 28 cm.
 thing!(BAG_OF_CRISPS: "bag_of_crisps", "bag of crisps", ["crisps", "potato chips", "bag of chips", "crisp packet", "chips bag"],
     PACKED, "a puffed foil bag of crisps", ["snack", "food"], Food @ OnSurface, true, [0.20, 0.08, 0.28], 80.0,
-    Look::Bag { body: PACKS, strap: [0.9, 0.9, 0.88, 1.0], body_h: 0.95 });
+    Look::Pack { body: PACKS, band: [0.95, 0.85, 0.2, 1.0] });
 // A bag of food (frozen vegetables, a bag of pasta shapes): 18 × 8 × 25 cm.
 thing!(FOOD_BAG: "food_bag", "food bag", ["bagged food", "bag of food", "food pouch", "bag of frozen vegetables"], PACKED,
     "a sealed plastic bag of food", ["packaging", "food"], Food @ OnSurface, true, [0.18, 0.08, 0.25], 250.0, pack(PACKS));

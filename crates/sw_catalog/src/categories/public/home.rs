@@ -24,6 +24,9 @@ const PASTEL: &[Rgba] =
     &[[0.85, 0.9, 0.95, 1.0], [0.95, 0.88, 0.8, 1.0], [0.88, 0.95, 0.88, 1.0], [0.95, 0.95, 0.93, 1.0]];
 const GLASSY: &[Rgba] = &[[0.85, 0.9, 0.92, 1.0]];
 const BULB: &[[f64; 2]] = &[[0.0, 0.0], [0.3, 0.0], [0.3, 0.3], [0.7, 0.45], [1.0, 0.7], [0.85, 0.92], [0.0, 1.0]];
+/// Flowers: a round head of blooms above a narrow bunch of stems.
+const BOUQUET_SHAPE: &[[f64; 2]] =
+    &[[0.0, 0.0], [0.12, 0.0], [0.12, 0.4], [0.8, 0.55], [1.0, 0.75], [0.7, 0.95], [0.0, 1.0]];
 const BELL_CURVE: &[[f64; 2]] =
     &[[0.0, 0.0], [1.0, 0.0], [0.8, 0.2], [0.55, 0.6], [0.5, 0.85], [0.15, 0.9], [0.12, 1.0], [0.0, 1.0]];
 const HAT_CROWN: &[[f64; 2]] = &[[0.0, 0.0], [1.0, 0.0], [1.0, 0.08], [0.6, 0.1], [0.58, 0.9], [0.45, 1.0], [0.0, 1.0]];
@@ -123,10 +126,10 @@ thing!(LIGHT_BULB: "light_bulb", "light bulb", ["lightbulb", "bulb", "led bulb"]
 thing!(CANDLESTICK: "candlestick", "candlestick", ["candle holder", "candle stick", "candleholder"], DECOR,
     "a turned brass candlestick", ["decoration", "holder"], Tabletop @ OnSurface, true, [0.10, 0.10, 0.15], 400.0,
     Look::Turned { profile: URN, body: BRASS, top: 1.0, cap_r: 1.0, cap: GOLD });
-// Bouquet in a stand, 25 × 25 × 45 cm.
+// Bouquet of cut flowers, 25 × 25 × 45 cm.
 thing!(BOUQUET: "bouquet", "bouquet", ["bunch of flowers", "flowers", "flower arrangement", "cut flowers"], DECOR,
     "a bunch of cut flowers", ["decoration", "plant"], Plant @ OnSurface, true, [0.25, 0.25, 0.45], 100.0,
-    Look::Stand { foot: [0.3, 0.5, 0.2, 1.0], pole: [0.3, 0.5, 0.2, 1.0], head: BRIGHTS, head_h: 0.4 });
+    Look::Turned { profile: BOUQUET_SHAPE, body: BRIGHTS, top: 1.0, cap_r: 1.0, cap: WHITE_C });
 // Statue / figurine, 15 × 15 × 35 cm.
 thing!(STATUE: "statue", "statue", ["sculpture", "statuette", "bust"], DECOR, "a small stone statue on a plinth",
     ["decoration", "ornament"], Tabletop @ OnSurface, true, [0.15, 0.15, 0.35], 1500.0,
