@@ -292,7 +292,16 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
     }
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
     if let Some(s) = meaning.scores(&text, &all) {
-        let (i, score) = s.iter().copied().enumerate().max_by(|a, b| a.1.total_cmp(&b.1)).unwrap_or((0, 0.0));
+        // Only a category that could be like the noun counts as evidence that it is a
+        // thing: not one named for it or after its modifiers, nor one that shares only a
+        // modifier with it ("a birthday party" is near the birthday cake by "birthday").
+        let (i, score) = s
+            .iter()
+            .copied()
+            .enumerate()
+            .filter(|&(i, _)| !related_not_alike(&words, all[i]) && !shares_only_a_modifier(&words, all[i]))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+            .unwrap_or((0, 0.0));
         if meaning.abstractness(&text).is_some_and(|a| a >= score + ABSTRACT_MARGIN) {
             return Resolution::NotAThing { nearest: all.get(i).map(|c| (c.name, score)) };
         }
@@ -314,6 +323,16 @@ fn related_not_alike(words: &[String], cat: &Category) -> bool {
     names_of(cat).iter().any(|name| {
         let name_modifiers = &name[..name.len().saturating_sub(1)];
         name_modifiers.contains(head) || (!name.is_empty() && modifiers.windows(name.len()).any(|w| w == &name[..]))
+    })
+}
+
+/// Whether a name of `cat` shares a modifier with the noun while its head is another word
+/// ("birthday cake" and "a birthday party"): near by that word, not by what either is.
+fn shares_only_a_modifier(words: &[String], cat: &Category) -> bool {
+    let Some(head) = words.last() else { return false };
+    let modifiers = &words[..words.len() - 1];
+    names_of(cat).iter().any(|name| {
+        name.last().is_some_and(|h| h != head) && name[..name.len() - 1].iter().any(|m| modifiers.contains(m))
     })
 }
 
