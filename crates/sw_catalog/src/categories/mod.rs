@@ -554,7 +554,6 @@ pub(crate) static ALL: &[Category] = &[
     public::BELL,
     public::FLAG,
     public::FRIDGE_MAGNET,
-    public::TROPHY,
     public::MEDAL,
     public::BIRDHOUSE,
     public::MAILBOX,

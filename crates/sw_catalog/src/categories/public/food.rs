@@ -234,7 +234,7 @@ thing!(BOTTLED_WATER: "bottled_water", "bottled water", ["bottle of water", "min
     "a clear plastic bottle of water with a blue cap", ["bottle", "drink"], Tabletop @ OnSurface, true, [0.065, 0.065, 0.21], 700.0,
     bottle(CLEAR, [0.1, 0.3, 0.8, 1.0]));
 // 330 ml long-neck beer bottle: 6 cm across, 23 cm tall.
-thing!(BEER_BOTTLE: "beer_bottle", "beer bottle", ["beer", "bottle of beer", "lager"], DRINK, "a brown glass bottle of beer with a crown cap",
+thing!(BEER_BOTTLE: "beer_bottle", "beer bottle", ["beer", "bottle of beer"], DRINK, "a brown glass bottle of beer with a crown cap",
     ["bottle", "drink"], Tabletop @ OnSurface, true, [0.06, 0.06, 0.23], 750.0, bottle(AMBER, [0.8, 0.75, 0.2, 1.0]));
 // 70 cl spirits bottle: 8 cm across, 28 cm tall.
 thing!(SPIRITS_BOTTLE: "spirits_bottle", "spirits bottle", ["liquor", "liquor bottle", "bottle of spirits", "whisky bottle", "vodka bottle", "gin bottle", "rum bottle"],

@@ -145,10 +145,6 @@ thing!(FLAG: "flag", "flag", ["desk flag", "table flag", "flag on a stand"], DEC
 // Fridge magnet, 5 cm.
 thing!(FRIDGE_MAGNET: "fridge_magnet", "fridge magnet", ["refrigerator magnet"], HOME, "a small flat fridge magnet",
     ["decoration", "magnet"], Tabletop @ OnSurface, true, [0.05, 0.05, 0.01], 2000.0, flat(BRIGHTS, WHITE_C));
-// Trophy cup, 12 × 12 × 30 cm.
-thing!(TROPHY: "trophy", "trophy", ["trophy cup", "cup trophy", "award cup"], DECOR, "a gold trophy cup on a square base",
-    ["award", "decoration"], Tabletop @ OnSurface, true, [0.12, 0.12, 0.30], 500.0,
-    Look::Turned { profile: URN, body: &[[0.85, 0.68, 0.25, 1.0], [0.75, 0.75, 0.78, 1.0]], top: 1.0, cap_r: 1.0, cap: GOLD });
 // Medal, 7 cm.
 thing!(MEDAL: "medal", "medal", ["medallion", "gold medal"], DECOR, "a round metal medal on a ribbon",
     ["award"], Tabletop @ OnSurface, true, [0.07, 0.07, 0.005], 3000.0, flat(BRASS, [0.2, 0.3, 0.7, 1.0]));
