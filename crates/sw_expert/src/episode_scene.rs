@@ -56,6 +56,8 @@ impl Vary {
 
 /// `impratio` of an episode's scene (see `episode_scene`).
 const GRASP_IMPRATIO: f64 = 10.0;
+/// `noslip_iterations` of an episode's scene (see `episode_scene`).
+const GRASP_NOSLIP: u32 = 5;
 
 /// Writes the episode's `scene.xml` text from the package's, for `fps`, with the
 /// randomisation of `seed` applied to the `movable` bodies. Bodies in `named_colour` keep
@@ -79,6 +81,10 @@ pub fn episode_scene(
     // with the defaults a held ball or bottle creeps out of the pads while carried.
     root.section("option").set("cone", "elliptic");
     root.section("option").set("impratio", format!("{GRASP_IMPRATIO}"));
+    // Held things still crept down through the pads (a bottle ~0.5 mm/s by its neck, soft
+    // friction constraints yield under a steady load): MuJoCo's noslip pass removes that
+    // drift in the friction dimensions. In the scene, so a replay is the same physics.
+    root.section("option").set("noslip_iterations", format!("{GRASP_NOSLIP}"));
     let mut rng = Rng::derive(seed, "episode");
     let mut r = Randomisation { seed, light_scale: 1.0, ..Randomisation::default() };
     // Materials by name, for colours.

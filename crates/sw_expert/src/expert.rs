@@ -23,6 +23,11 @@ const RELEASE_GAP: f64 = 0.012;
 const DROP_GAP: f64 = 0.03;
 /// Fraction of the joint speed limit a carried thing is moved at.
 const CARRY_SPEED: f64 = 0.6;
+/// The lever (centre of mass from the pinch, m) up to which a thing is carried at
+/// [`CARRY_SPEED`]; past it the speed falls as 1/lever (see [`carry_speed`]).
+const CARRY_LEVER: f64 = 0.02;
+/// The slowest carry, as a fraction of the joint speed limit.
+const CARRY_SPEED_MIN: f64 = 0.15;
 /// Turns about the vertical tried for a place, rad.
 const TURNS: [f64; 4] = [0.0, std::f64::consts::FRAC_PI_2, -std::f64::consts::FRAC_PI_2, std::f64::consts::PI];
 /// IK restarts per pose.
@@ -465,7 +470,7 @@ impl<'a, 'm> Expert<'a, 'm> {
         })?;
         let path = self.plan_to(Allow { held: Some(held), touch: None }, &q_above)?;
         // The run fails the frame the thing leaves the hand (Runner::holding).
-        self.run.follow(self.rig, &path, CARRY_SPEED)?;
+        self.run.follow(self.rig, &path, carry_speed(&held))?;
         self.sync_scratch();
         let down = self.line(&q_above, above.pos, &release, 4)?;
         self.run.follow(self.rig, &down, 0.3)?;
@@ -479,5 +484,44 @@ impl<'a, 'm> Expert<'a, 'm> {
         self.run.follow(self.rig, &retreat, 0.5)?;
         let _ = local_box;
         Ok(())
+    }
+}
+
+/// The speed a held thing is carried at. Two pads pinch it along a short vertical line,
+/// and the hand's accelerations act on its centre of mass: a thing held far from its
+/// centre (a bottle by its neck, 8 – 9 cm above it) is turned about the closing axis by
+/// a torque of mass × acceleration × lever, which the pads' friction over that short line
+/// cannot hold, so it pivots and drops out while carried. The carry's accelerations
+/// scale with the square of the speed, so the speed falls as 1/lever past
+/// [`CARRY_LEVER`] (the torque then falls as 1/lever).
+pub(crate) fn carry_speed(held: &Held) -> f64 {
+    let c = held.rel_com;
+    let lever = (c[0] * c[0] + c[2] * c[2]).sqrt();
+    (CARRY_SPEED * (CARRY_LEVER / lever.max(1e-9)).min(1.0)).max(CARRY_SPEED_MIN)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::M3;
+
+    fn held_at(rel_com: V3) -> Held {
+        let eye: M3 = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+        Held { body: 1, qpos: 0, rel_pos: rel_com, rel_rot: eye, rel_com }
+    }
+
+    #[test]
+    fn carry_slows_with_the_lever_about_the_closing_axis() {
+        // A cube pinched through its centre: full carry speed.
+        assert_eq!(carry_speed(&held_at([0.0, 0.0, 0.008])), CARRY_SPEED);
+        // A tall thing held 50 mm above its centre: slower, by the lever.
+        let v = carry_speed(&held_at([0.03, 0.0, 0.04]));
+        assert!((v - CARRY_SPEED * CARRY_LEVER / 0.05).abs() < 1e-9, "{v}");
+        // A bottle by its neck, 85 mm above its centre: at the floor.
+        assert_eq!(carry_speed(&held_at([0.0, 0.0, 0.085])), CARRY_SPEED_MIN);
+        // An offset along the closing axis (y) is no lever about it.
+        assert_eq!(carry_speed(&held_at([0.0, 0.2, 0.0])), CARRY_SPEED);
+        // Never slower than the floor.
+        assert_eq!(carry_speed(&held_at([0.5, 0.0, 0.5])), CARRY_SPEED_MIN);
     }
 }
