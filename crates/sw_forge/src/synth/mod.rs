@@ -127,7 +127,13 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
         // parameters bound by role, checked against its own formulas.
         Err(r) => match family::read(&d) {
             Some(Ok((template, m))) => return Ok(finish(prompt, template, &m)),
-            Some(Err(f)) => return Err(SynthError::Unread { phrase: f.phrase, reason: f.reason }),
+            // The feature language's words stay quoted; the family says what it lacks.
+            Some(Err(f)) => {
+                return Err(SynthError::Unread {
+                    phrase: r.phrase,
+                    reason: format!("{}; read as a part family (\"{}\"): {}", r.reason, f.phrase, f.reason),
+                });
+            }
             None => return Err(SynthError::Unread { phrase: r.phrase, reason: r.reason }),
         },
     };
