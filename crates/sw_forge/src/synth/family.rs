@@ -1165,6 +1165,21 @@ mod tests {
     }
 
     #[test]
+    fn a_part_of_a_catalog_object_is_never_the_whole_object() {
+        for (prompt, words) in
+            [("a lamp shade", "lamp shade"), ("a table leg", "table leg"), ("the leg of a table", "leg of")]
+        {
+            match crate::freeform::offline(prompt) {
+                Err(super::super::SynthError::Unread { phrase, .. }) => {
+                    assert!(phrase.contains(words), "{prompt}: {phrase}")
+                }
+                Err(e) => panic!("{prompt}: {e}"),
+                Ok(_) => panic!("{prompt}: made"),
+            }
+        }
+    }
+
+    #[test]
     fn unknown_words_end_the_family_reading() {
         assert!(read(&Doc::new("Collar 40 OD x 20 ID x 15 wide with a dragon engraved")).is_none());
         assert!(read(&Doc::new("a block 20 x 10 x 5")).is_none());
