@@ -193,6 +193,11 @@ export async function versions(id: string): Promise<Version[]> {
   return decodeVersions(await json('GET', `/api/scenes/${enc(id)}/versions`));
 }
 
+/** A catalog category's picture (public: an <img> may point at it directly). */
+export function catalogPictureUrl(category: string): string {
+  return `/api/catalog/${enc(category)}/picture.png`;
+}
+
 export function fileUrl(sceneId: string, path: string): string {
   return `/api/scenes/${enc(sceneId)}/files/${path.split('/').map(enc).join('/')}`;
 }

@@ -397,6 +397,22 @@ async function main() {
     assert(assets.similar.length > 0 && assets.similar[0].id === plate.id, `search by meaning finds it: ${JSON.stringify(assets.note)}`);
     log(`made a washer (${meshSize}); searching "a big ring-shaped spacer" by meaning ranks it first`);
 
+    // --- The catalog has pictures: in the library list and, picked, in the studio ---
+    await page.fill('.part-search', 'kettle');
+    const kettleItem = page.locator('#catalog-parts li[data-part="catalog:kettle"]');
+    await kettleItem.waitFor({ timeout: 20_000 });
+    await page.waitForFunction(() => {
+      const img = document.querySelector('#catalog-parts li[data-part="catalog:kettle"] img.part-pic');
+      return !!img && img.complete && img.naturalWidth === 256;
+    }, null, { timeout: 60_000 });
+    await kettleItem.click();
+    await page.waitForFunction(() => {
+      const img = document.querySelector('#catalog-picture');
+      return !!img && img.complete && img.naturalWidth === 256;
+    }, null, { timeout: 60_000 });
+    await shot(page, '06b-catalog-picture');
+    log('the catalog list shows each category\'s picture; picking the kettle shows it at 256 px');
+
     // --- Drag the part from the library into the open scene ---
     await page.goto(`${server.url}/scenes/${v3b}?tab=parts`);
     await waitReady(page);

@@ -41,8 +41,12 @@ def read_rows(path: str) -> list[dict[str, str]]:
 
 
 def read_refs() -> dict[str, tuple[list[float], float]]:
+    """Every reference table: refs.tsv (rebuilt by refs.py) and refs_<set>.tsv beside it
+    (sets frozen with builders of their own, e.g. refs_h3.tsv by refs_h3.py)."""
     refs: dict[str, tuple[list[float], float]] = {}
-    for row in read_rows(os.path.join(HERE, "refs.tsv")):
+    tables = ["refs.tsv"] + sorted(f for f in os.listdir(HERE) if f.startswith("refs_") and f.endswith(".tsv"))
+    rows = [row for t in tables for row in read_rows(os.path.join(HERE, t))]
+    for row in rows:
         if row["bbox_mm"] != "refuse":
             refs[row["id"]] = ([float(v) for v in row["bbox_mm"].split(",")], float(row["volume_mm3"]))
     return refs

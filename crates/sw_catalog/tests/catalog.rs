@@ -608,3 +608,37 @@ fn a_category_admits_the_sizes_of_its_kind_and_not_those_of_other_things() {
     let washer = find("washing_machine").unwrap();
     assert!(!washer.admits_size([Some(0.02), Some(0.02), Some(0.002)]), "a flat washer is no washing machine");
 }
+
+/// The MJCF writer gives a free body the inertia of its collision box, each principal value
+/// written rounded (`sw_mjcf::xml::sig`: six decimals, five significant digits below 1e-3).
+/// For a thin, wide, heavy thing (a placemat) `A + B - C` is `m h² / 6`, smaller than that
+/// rounding: MuJoCo then refuses the model (A + B >= C). Every free category at every seed
+/// keeps its inertia valid as written.
+#[test]
+fn every_free_body_keeps_its_inertia_valid_as_written() {
+    let written = |v: f64| sw_mjcf::xml::sig(v).parse::<f64>().unwrap();
+    for cat in categories().iter().filter(|c| c.movable) {
+        for seed in 0..20 {
+            let a = generate(&AssetRequest::new(cat.name, seed)).unwrap();
+            let MassModel::Free { mass } = a.mass else { continue };
+            if a.links.len() != 1 {
+                continue;
+            }
+            let s = collision_bounds(&a).size();
+            let i = [
+                mass / 12.0 * (s[1] * s[1] + s[2] * s[2]),
+                mass / 12.0 * (s[0] * s[0] + s[2] * s[2]),
+                mass / 12.0 * (s[0] * s[0] + s[1] * s[1]),
+            ]
+            .map(|v| written(v.max(1e-7)));
+            for c in 0..3 {
+                let (x, y) = ((c + 1) % 3, (c + 2) % 3);
+                assert!(
+                    i[x] + i[y] >= i[c],
+                    "{} seed {seed}: inertia {i:?} as written (mass {mass}, size {s:?}) breaks A + B >= C",
+                    cat.name
+                );
+            }
+        }
+    }
+}

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use clap::Subcommand;
 use serde::Serialize;
 use sw_catalog::AssetRequest;
-use sw_geom::raster::{Camera, Image, Renderer};
+use sw_geom::raster::{Image, draw_asset};
 use sw_geom::{Asset, MassModel};
 
 use crate::Failure;
@@ -238,7 +238,7 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
             let cat = find(&name)?;
             let a = build(cat, seed)?;
             let size = size.clamp(64, 4096);
-            write_png(&render_asset(&a, size, size), &out)?;
+            write_png(&draw_asset(&a, size, size), &out)?;
             Ok(0)
         }
         AssetsCommand::Sheet { out, seed, only, columns } => {
@@ -253,7 +253,7 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
             let mut sheet = Image::new(cols * tile, rows * (tile + 22), [255, 255, 255]);
             for (i, c) in cats.iter().enumerate() {
                 let a = build(c, seed)?;
-                let img = render_asset(&a, tile, tile);
+                let img = draw_asset(&a, tile, tile);
                 let (x, y) = ((i as u32 % cols) * tile, (i as u32 / cols) * (tile + 22));
                 sheet.blit(&img, x, y);
                 // 12 px per character at scale 2; long names drop to scale 1 to fit the tile.
@@ -264,21 +264,6 @@ pub(crate) fn run(c: AssetsCommand) -> Result<u8, Failure> {
             Ok(0)
         }
     }
-}
-
-/// Draws an asset's visual meshes in their materials from a three-quarter view of its
-/// front (assets face +Y).
-pub(crate) fn render_asset(a: &Asset, width: u32, height: u32) -> Image {
-    let poses = a.link_poses();
-    let cam = Camera::framing(&a.bounds(), 1.15, 0.45);
-    let mut r = Renderer::new(width, height, &cam, [238, 241, 246]);
-    for (link, pose) in a.links.iter().zip(&poses) {
-        for v in &link.visuals {
-            let rgba = a.materials.get(v.material).map_or([0.6, 0.6, 0.6, 1.0], |m| m.rgba);
-            r.draw_mesh(&v.mesh, pose, rgba);
-        }
-    }
-    r.finish()
 }
 
 fn write_png(img: &Image, out: &Path) -> Result<(), Failure> {

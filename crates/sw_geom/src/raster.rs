@@ -5,7 +5,7 @@
 
 use std::io::Write;
 
-use crate::{Aabb, Mesh, Pose};
+use crate::{Aabb, Asset, Mesh, Pose};
 
 /// An RGB image, row-major from the top-left.
 #[derive(Debug, Clone)]
@@ -97,6 +97,22 @@ impl Camera {
         let dir = [elevation.cos() * azimuth.cos(), elevation.cos() * azimuth.sin(), elevation.sin()];
         Self { eye: [c[0] + dir[0] * dist, c[1] + dir[1] * dist, c[2] + dir[2] * dist], target: c, fov_y }
     }
+}
+
+/// A picture of an asset: its visual meshes in their materials, seen from a three-quarter
+/// view of its front (assets face +Y), on a light background. The catalog's contact sheet,
+/// `assets render` and the web app's catalog pictures are drawn with it.
+pub fn draw_asset(a: &Asset, width: u32, height: u32) -> Image {
+    let poses = a.link_poses();
+    let cam = Camera::framing(&a.bounds(), 1.15, 0.45);
+    let mut r = Renderer::new(width, height, &cam, [238, 241, 246]);
+    for (link, pose) in a.links.iter().zip(&poses) {
+        for v in &link.visuals {
+            let rgba = a.materials.get(v.material).map_or([0.6, 0.6, 0.6, 1.0], |m| m.rgba);
+            r.draw_mesh(&v.mesh, pose, rgba);
+        }
+    }
+    r.finish()
 }
 
 /// Draws triangles into an image with a depth buffer.

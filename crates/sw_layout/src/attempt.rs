@@ -167,9 +167,72 @@ pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
             RelationKind::Between { first, second } if is_small(ctx, idx) => shared_work(ctx, first, second),
             _ => None,
         })
+        .or_else(|| beside_work(ctx, idx))
         .or_else(|| {
             companion_rests_on_host(ctx, idx).then(|| floor::hosts_of(ctx, &o.group).into_iter().next()).flatten()
         })
+}
+
+/// A tabletop thing said to stand by an arm or by the work furniture an arm works at
+/// ("four cups in front of the Panda", "the bowls next to the table the UR5e is on"):
+/// it rests on that work surface, where the arm reaches it — a cup is not set on the
+/// floor beside a robot's table. Things with a place of their own on the floor said
+/// (under, against a wall, in a corner …) keep it.
+fn beside_work(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
+    let o = &ctx.input.objects[idx];
+    // Bins, crates and boxes stand on the floor by a table ("an empty tote next to the
+    // table").
+    if !is_small(ctx, idx) || !o.has_tag("tabletop") || o.has_tag("stackable") {
+        return None;
+    }
+    let rels = ctx.relations(&o.group);
+    let floor_said = rels.iter().any(|r| {
+        matches!(
+            r,
+            RelationKind::Under { .. }
+                | RelationKind::AgainstWall { .. }
+                | RelationKind::InCorner { .. }
+                | RelationKind::InCorners
+                | RelationKind::Leaning { .. }
+                | RelationKind::NearDoor
+        )
+    });
+    if floor_said {
+        return None;
+    }
+    // A top with room for it: a quarter of it at most.
+    let size = ctx.bounds[idx].size();
+    let has_top = |g: &str| {
+        ctx.instances(g).first().is_some_and(|&i| {
+            ctx.input.objects[i]
+                .asset
+                .surfaces
+                .iter()
+                .any(|s| s.clearance.is_none() && 4.0 * size[0] * size[1] <= s.area())
+        })
+    };
+    // The surfaces arms work at.
+    let worked: Vec<String> = ctx.input.robots.iter().filter_map(|r| crate::reach::work_group(ctx, r)).collect();
+    rels.iter().find_map(|r| {
+        let beside = matches!(
+            r,
+            RelationKind::NextTo { .. }
+                | RelationKind::Near { .. }
+                | RelationKind::InFrontOf { .. }
+                | RelationKind::Behind { .. }
+                | RelationKind::Facing { .. }
+        );
+        let t = r.targets().first().map(|t| t.to_string())?;
+        if !beside {
+            return None;
+        }
+        // By an arm: on the surface it works at.
+        if let Some(robot) = ctx.input.robots.iter().find(|x| x.group == t && x.is_arm) {
+            return crate::reach::work_group(ctx, robot).filter(|g| has_top(g));
+        }
+        // By the work surface an arm works at: on it.
+        (worked.contains(&t) && has_top(&t)).then_some(t)
+    })
 }
 
 /// The object group two robot groups (or one, twice) both work at, when it has a surface

@@ -128,6 +128,27 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     for r in &rels {
         specific.extend(candidates::for_relation(ctx, &b, &group, k, r));
     }
+    // Under something with too little clear height below it (a stool under a bench with
+    // a bottom shelf): said once, then beside it rather than anywhere.
+    for r in &rels {
+        let RelationKind::Under { target } = r else { continue };
+        let Some(clear) = clear_below(ctx, target) else { continue };
+        let tall = b.max[2] - b.min[2];
+        if tall + FLOOR_GAP <= clear {
+            continue;
+        }
+        if k == 0 {
+            let plan = ctx.input.plan;
+            let (subject, under) = (plan.phrase_of(&group), plan.phrase_of(target));
+            ctx.warn(
+                "does_not_fit_under",
+                format!(
+                    "\"{subject}\" is {tall:.2} m tall; \"{under}\" has {clear:.2} m clear below it (its lowest shelf or rail): placed beside it"
+                ),
+            );
+        }
+        specific.extend(candidates::beside(ctx, &b, target, k));
+    }
     if rels.is_empty() && host.is_none() && ctx.input.objects[idx].has_tag("seating") {
         specific.extend(seats_at_tables(ctx, idx, k));
     }
@@ -242,6 +263,29 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     }
     ctx.commit(idx, spot, Support::Floor);
     true
+}
+
+/// The clear height below `target`'s top over the middle of its footprint: the lowest
+/// underside of its collision boxes that stand off the floor and cover its centre (a
+/// bottom shelf, a rail, the top itself). None when it has no placed instance or stands
+/// solid on the floor there (a base cabinet: nothing goes under it).
+pub(crate) fn clear_below(ctx: &Ctx<'_>, target: &str) -> Option<f64> {
+    let &ti = ctx.instances(target).first()?;
+    let b = ctx.bounds[ti];
+    let c = [0.5 * (b.min[0] + b.max[0]), 0.5 * (b.min[1] + b.max[1])];
+    // Inner part of the footprint (inside the legs).
+    let inner = [0.25 * (b.max[0] - b.min[0]), 0.25 * (b.max[1] - b.min[1])];
+    let over = |a: &Aabb| {
+        a.min[0] < c[0] + inner[0]
+            && a.max[0] > c[0] - inner[0]
+            && a.min[1] < c[1] + inner[1]
+            && a.max[1] > c[1] - inner[1]
+    };
+    let boxes: Vec<&Aabb> = ctx.local[ti].iter().filter(|a| over(a)).collect();
+    if boxes.iter().any(|a| a.min[2] <= b.min[2] + 0.01) {
+        return Some(0.0);
+    }
+    boxes.iter().map(|a| a.min[2] - b.min[2]).reduce(f64::min)
 }
 
 /// Whether the strips kept in front of and behind an object at `spot` (`reserve`, m) are
@@ -400,10 +444,22 @@ pub(crate) fn fits_floor_by(ctx: &Ctx<'_>, idx: usize, spot: &Spot, ignore_zones
     if !abut.is_empty() && !ctx.space.fits(&boxes, 0.004, &[], false, &[]) {
         return false;
     }
-    // Its own keep-clear zones must be inside the room and free of floor objects.
+    // Its own keep-clear zones must be inside the room and free of floor objects — but
+    // for what it stands under (a cabinet under a table is reached past the table's
+    // legs; the table stands over that space, not in it).
+    let over: Vec<String> = ctx
+        .relations(&ctx.input.objects[idx].group)
+        .iter()
+        .filter_map(|r| match r {
+            RelationKind::Under { target } => Some(target.as_str()),
+            _ => None,
+        })
+        .flat_map(|t| ctx.instances(t).into_iter().map(|i| ctx.input.objects[i].name.clone()))
+        .collect();
+    let except: Vec<&str> = abut.iter().copied().chain(over.iter().map(String::as_str)).collect();
     zones(ctx, idx, spot).iter().all(|(z, _)| {
         ctx.space.inside(&Aabb { min: [z.min[0], z.min[1], 0.0], max: [z.max[0], z.max[1], 0.0] })
-            && ctx.space.zone_is_clear(z, abut)
+            && ctx.space.zone_is_clear(z, &except)
     })
 }
 

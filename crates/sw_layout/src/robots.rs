@@ -121,12 +121,23 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
             matches!(&r.kind, sw_plan::RelationKind::Between { first, second } if *first == robot.group || *second == robot.group)
                 || (r.subject == robot.group && matches!(&r.kind, sw_plan::RelationKind::OnEachSideOf { target } if target == group))
         });
+        // What else it is said to reach that already stands (a stove beside its counter, a
+        // belt by its table): spots from which it reaches all of that first.
+        let work = reach_targets(ctx, robot, group);
+        let misses = |ctx: &Ctx<'_>, spot: &Spot| {
+            work.iter().filter(|&&i| !reach::can_work_at(ctx, [spot.x, spot.y, spot.z], robot.reach, i)).count()
+        };
         let mut chosen: Option<(usize, Spot, Spot, SupportSurface, Vec<Aabb>)> = None;
         'hosts: for (hi, hspot) in &hosts {
             let surfaces: Vec<SupportSurface> =
                 ctx.input.objects[*hi].asset.surfaces.iter().filter(|s| s.clearance.is_none()).cloned().collect();
             for surf in surfaces {
-                for (spot, boxes) in surface_spots(ctx, robot, hspot, &surf, ends) {
+                let mut spots = surface_spots(ctx, robot, hspot, &surf, ends);
+                if !work.is_empty() {
+                    // Stable: the preferred order stands among spots that reach as much.
+                    spots.sort_by_key(|(spot, _)| misses(ctx, spot));
+                }
+                for (spot, boxes) in spots {
                     if edge && !near_edge(&spot, hspot, &surf) {
                         continue;
                     }
@@ -152,6 +163,22 @@ fn on_surface(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, group: &str) -> b
         }
     }
     false
+}
+
+/// The placed objects an arm on a surface of `host` is said to reach besides its host
+/// ("a Panda on the counter reaching the stove"): instances of every group its `reach`
+/// relations name. What stands on surfaces is placed after the arms (and kept in reach
+/// by them), so only what already stands counts here.
+fn reach_targets(ctx: &Ctx<'_>, robot: &RobotItem, host: &str) -> Vec<usize> {
+    let mut out = Vec::new();
+    for r in ctx.relations(&robot.group) {
+        let sw_plan::RelationKind::Reach { target } = r else { continue };
+        if target == host {
+            continue;
+        }
+        out.extend(ctx.placed_instances(target).into_iter().map(|(i, _)| i));
+    }
+    out
 }
 
 /// Whether a base at `spot` stands within 0.15 m of an edge of a host's surface.

@@ -17,8 +17,9 @@ const STEP: f64 = 0.02;
 /// "on the edge of": the footprint centre at most this far from an edge, m (the report
 /// allows 0.2).
 const EDGE: f64 = 0.15;
-/// A support this far or more below its host's top is inside it, m (the report: 0.02).
-const INTERIOR: f64 = 0.03;
+/// A support this far or more below its host's top is inside it, m (the report and the
+/// judge: 0.02; a shallow tray's floor is 2–3 cm down).
+const INTERIOR: f64 = 0.021;
 
 /// Which of a host's surfaces an item may use, and where on them.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -102,9 +103,14 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
             continue;
         }
         let name = ctx.input.objects[idx].name.clone();
+        let want = want(ctx, idx, &target);
+        // On a thing no wider than itself ("a red cube on the green cube"): centred on
+        // its top, the one with nothing on it yet first.
+        if want == Want::Any && on_small_thing(ctx, idx, &target) {
+            continue;
+        }
         // Said to be between two arms with no room left on the line between them: within
         // the reach of one of them still (the report names the relation not kept).
-        let want = want(ctx, idx, &target);
         if !robot_pairs(ctx, &ctx.input.objects[idx].group).is_empty()
             && place_on_group_as(ctx, idx, &target, k, true, want, false)
         {
@@ -119,6 +125,19 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
             continue;
         }
         if stack_on_own(ctx, idx, &group) {
+            continue;
+        }
+        // A container or small thing that cannot hold it ("six eggs in a bowl" with room
+        // for one): beside it on what it stands on, within the same arm's reach, rather
+        // than on the floor.
+        if let Some(host) = beside_on_host(ctx, idx, &target, k) {
+            let subject = ctx.input.plan.phrase_of(&group);
+            let phrase = ctx.input.plan.phrase_of(&target);
+            let how = if want == Want::Interior { "inside" } else { "on" };
+            ctx.warn(
+                "relation_unmet",
+                format!("{name}: \"{phrase}\" has no room for \"{subject}\" {how} it; placed on {host} instead"),
+            );
             continue;
         }
         let had_target = !ctx.placed_instances(&target).is_empty();
@@ -166,6 +185,67 @@ fn in_stack_order(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
         }
     }
     out
+}
+
+/// Item `idx` on the top of an instance of `target` that is itself a small thing whose
+/// support surface is smaller than the item's footprint (a cube on a cube): centred on
+/// it, the judge's `on` (centre over the surface). Instances with something on them
+/// already are skipped.
+fn on_small_thing(ctx: &mut Ctx<'_>, idx: usize, target: &str) -> bool {
+    let free: Vec<usize> = ctx
+        .placed_instances(target)
+        .into_iter()
+        .map(|(i, _)| i)
+        .filter(|&i| crate::attempt::is_small(ctx, i) && i != idx)
+        .filter(|&i| {
+            let name = &ctx.input.objects[i].name;
+            !ctx.placed.iter().flatten().any(|q| matches!(&q.support, Support::Object { object, .. } if object == name))
+        })
+        .collect();
+    free.into_iter().any(|b| on_top_of(ctx, idx, b))
+}
+
+/// Item `idx` whose target (`target`, instance `k` first) has no room for it: on the
+/// object an instance of the target rests on, as near the target as there is room and
+/// within the reach of the arm that works there. Returns that object's name.
+/// (Its place on that surface is where the reach and the free room allow.)
+fn beside_on_host(ctx: &mut Ctx<'_>, idx: usize, target: &str, k: usize) -> Option<String> {
+    let mut hosts: Vec<(String, String, [f64; 2])> = Vec::new();
+    for (i, s) in ctx.placed_instances(target) {
+        let Some(Support::Object { object, .. }) = ctx.placed[i].as_ref().map(|p| &p.support) else { continue };
+        let Some(hi) = ctx.input.objects.iter().position(|o| &o.name == object) else { continue };
+        let g = ctx.input.objects[hi].group.clone();
+        if g != ctx.input.objects[idx].group {
+            hosts.push((g, object.clone(), [s.x, s.y]));
+        }
+    }
+    if hosts.is_empty() {
+        return None;
+    }
+    let n = hosts.len();
+    hosts.rotate_left(k % n);
+    hosts.into_iter().find_map(|(group, name, at)| near_on_group(ctx, idx, &group, at).then_some(name))
+}
+
+/// Item `idx` on a surface of one of `group`'s instances in reach of its arms: the
+/// instance nearest `at` first, its open (top) surfaces before those under a shelf.
+fn near_on_group(ctx: &mut Ctx<'_>, idx: usize, group: &str, at: [f64; 2]) -> bool {
+    let mut hosts = ctx.placed_instances(group);
+    hosts.sort_by(|a, b| (a.1.x - at[0]).hypot(a.1.y - at[1]).total_cmp(&(b.1.x - at[0]).hypot(b.1.y - at[1])));
+    for (hi, _) in hosts {
+        let item_group = ctx.input.objects[idx].group.clone();
+        let (arms, all) = reach::arms_for(ctx, hi, &item_group);
+        let nsurf = ctx.input.objects[hi].asset.surfaces.len();
+        ctx.surface_use.entry(hi).or_insert_with(|| vec![Vec::new(); nsurf]);
+        let mut order: Vec<usize> = (0..nsurf).collect();
+        order.sort_by_key(|&i| ctx.input.objects[hi].asset.surfaces[i].clearance.is_some());
+        for si in order {
+            if try_surface(ctx, idx, hi, si, &arms, all, (false, None), &[]) {
+                return true;
+            }
+        }
+    }
+    false
 }
 
 /// Member `k` of a stacked group (in its stack order) on top of member `k - 1`, centred
@@ -331,6 +411,16 @@ fn place_on_group_as(
             })
             .collect();
         let pairs = if between { robot_pairs(ctx, &item_group) } else { Vec::new() };
+        // Arms sharing the surface: where all of them reach first (each arm then has some
+        // of every kind of thing to work on), then where one does.
+        if !all && arms.len() > 1 {
+            for &si in usable.iter().filter(|&&i| surfaces[i].clearance.is_none()) {
+                let side = (want == Want::Side).then_some(k.is_multiple_of(2));
+                if try_surface(ctx, idx, hi, si, &arms, true, (want == Want::Edge, side), &pairs) {
+                    return true;
+                }
+            }
+        }
         for si in usable {
             let side = (want == Want::Side).then_some(k.is_multiple_of(2));
             if try_surface(ctx, idx, hi, si, &arms, all, (want == Want::Edge, side), &pairs) {

@@ -292,7 +292,16 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
     }
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
     if let Some(s) = meaning.scores(&text, &all) {
-        let (i, score) = s.iter().copied().enumerate().max_by(|a, b| a.1.total_cmp(&b.1)).unwrap_or((0, 0.0));
+        // Only a category that could be like the noun counts as evidence that it is a
+        // thing: not one named for it or after its modifiers, nor one that shares only a
+        // modifier with it ("a birthday party" is near the birthday cake by "birthday").
+        let (i, score) = s
+            .iter()
+            .copied()
+            .enumerate()
+            .filter(|&(i, _)| !related_not_alike(&words, all[i]) && !shares_only_a_modifier(&words, all[i]))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+            .unwrap_or((0, 0.0));
         if meaning.abstractness(&text).is_some_and(|a| a >= score + ABSTRACT_MARGIN) {
             return Resolution::NotAThing { nearest: all.get(i).map(|c| (c.name, score)) };
         }
@@ -300,18 +309,49 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
     proxy_by_meaning(&text, meaning, None)
 }
 
+/// Whether `cat` is named as a thing *for* or *of* the noun rather than a thing like it
+/// (English compounds are right-headed): one of its names uses the noun's head as a
+/// modifier ("rice cooker" for "rice", "fish tank" for "fish", "bean bag" for "green
+/// beans"), or the noun uses one of its names as a modifier ("egg tart" and the egg,
+/// "pizza cutter" and the pizza). Near in meaning as such a category is, it says nothing
+/// about the noun's kind of thing or its size: measured on the public-list dev slice, such
+/// neighbours made rice a small appliance, ice cream's and fish's proxies a fridge and a
+/// tank, and a hat furniture.
+fn related_not_alike(words: &[String], cat: &Category) -> bool {
+    let Some(head) = words.last() else { return false };
+    let modifiers = &words[..words.len() - 1];
+    names_of(cat).iter().any(|name| {
+        let name_modifiers = &name[..name.len().saturating_sub(1)];
+        name_modifiers.contains(head) || (!name.is_empty() && modifiers.windows(name.len()).any(|w| w == &name[..]))
+    })
+}
+
+/// Whether a name of `cat` shares a modifier with the noun while its head is another word
+/// ("birthday cake" and "a birthday party"): near by that word, not by what either is.
+fn shares_only_a_modifier(words: &[String], cat: &Category) -> bool {
+    let Some(head) = words.last() else { return false };
+    let modifiers = &words[..words.len() - 1];
+    names_of(cat).iter().any(|name| {
+        name.last().is_some_and(|h| h != head) && name[..name.len() - 1].iter().any(|m| modifiers.contains(m))
+    })
+}
+
 /// A labelled proxy for `text`: of kind `known` when the head said it, else the kind the
-/// nearest categories by meaning vote for ([`KIND_VOTERS`]); sized by the median of the
-/// default sizes of the nearest categories of that kind, within a factor of three of the
-/// kind's prior.
+/// nearest categories by meaning vote for ([`KIND_VOTERS`]); sized like the nearest
+/// categories of that kind (the whole default size of the one whose volume is the median
+/// of up to [`SIZE_VOTERS`], so that a long thing and a flat thing never average into a
+/// shape neither has), within a factor of three of the kind's prior. Categories named
+/// for or after the noun rather than like it ([`related_not_alike`]) neither vote nor size.
 fn proxy_by_meaning(text: &str, meaning: &dyn Meaning, known: Option<Kind>) -> Resolution {
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
     let Some(s) = meaning.scores(text, &all) else {
         return Resolution::Proxy { kind: known, size: None, nearest: None };
     };
+    let words = noun_words(text);
     let mut order: Vec<usize> = (0..all.len()).collect();
     order.sort_by(|&a, &b| s[b].total_cmp(&s[a]));
     let nearest = order.first().map(|&i| (all[i].name, s[i]));
+    order.retain(|&i| !related_not_alike(&words, all[i]));
     let kind = known.or_else(|| {
         let mut votes: BTreeMap<Kind, f32> = BTreeMap::new();
         for (rank, &i) in order.iter().take(KIND_VOTERS).enumerate().filter(|(_, i)| s[**i] >= KIND_MIN) {
@@ -330,11 +370,10 @@ fn proxy_by_meaning(text: &str, meaning: &dyn Meaning, known: Option<Kind>) -> R
             return None;
         }
         let prior = k.prior().size;
-        Some(std::array::from_fn(|d| {
-            let mut v: Vec<f64> = near.iter().map(|n| n[d]).collect();
-            v.sort_by(f64::total_cmp);
-            v[v.len() / 2].clamp(prior[d] / 3.0, prior[d] * 3.0)
-        }))
+        let mut by_volume = near;
+        by_volume.sort_by(|a, b| (a[0] * a[1] * a[2]).total_cmp(&(b[0] * b[1] * b[2])));
+        let middle = by_volume[by_volume.len() / 2];
+        Some(std::array::from_fn(|d| middle[d].clamp(prior[d] / 3.0, prior[d] * 3.0)))
     });
     Resolution::Proxy { kind, size, nearest }
 }

@@ -166,15 +166,21 @@ fn a_proxy_takes_the_kind_and_size_of_its_nearest_categories() {
     };
     assert_eq!(kind, Some(Kind::SmallAppliance));
     assert_eq!(nearest.map(|n| n.0), Some("toaster"));
-    // The median of the three nearest appliances' default sizes, side by side.
-    let sizes: Vec<[f64; 3]> =
+    // The whole default size of the one of the three nearest appliances whose volume is
+    // the median (a shape one of them has, never sides mixed from several).
+    let mut sizes: Vec<[f64; 3]> =
         ["toaster", "kettle", "blender"].iter().map(|n| sw_catalog::find(n).unwrap().default_size()).collect();
+    sizes.sort_by(|a, b| (a[0] * a[1] * a[2]).total_cmp(&(b[0] * b[1] * b[2])));
     let size = size.expect("sized by its neighbours");
-    for d in 0..3 {
-        let mut v: Vec<f64> = sizes.iter().map(|s| s[d]).collect();
-        v.sort_by(f64::total_cmp);
-        assert!((size[d] - v[1]).abs() < 1e-9, "side {d}: {size:?} vs {sizes:?}");
-    }
+    assert_eq!(size, sizes[1], "{sizes:?}");
+    // A category named for the noun (the aquarium, a "fish tank", for a fish) or after one of
+    // its modifiers (the toaster for a toaster cosy) neither votes on its kind nor sizes it.
+    let for_it = Fixed { near: &[("aquarium", 0.8, 0.6), ("salami", 0.6, 0.5), ("sausage", 0.55, 0.5)] };
+    let Resolution::Proxy { kind, nearest, .. } = resolve_noun("fish", &for_it) else { panic!() };
+    assert_eq!((kind, nearest.map(|n| n.0)), (Some(Kind::Food), Some("aquarium")));
+    let after = Fixed { near: &[("toaster", 0.8, 0.6), ("napkin", 0.5, 0.4)] };
+    let Resolution::Proxy { kind, .. } = resolve_noun("toaster cosy", &after) else { panic!() };
+    assert_eq!(kind, Some(Kind::Textile));
     // Nothing near: no kind, and the planner's own prior stays.
     let Resolution::Proxy { kind, size, .. } = resolve_noun("zorbulator", &Fixed { near: &[] }) else { panic!() };
     assert_eq!((kind, size), (None, None));

@@ -312,6 +312,7 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
     }
     plan.relations = resolved;
     shared_support(&mut plan, &d.on_floor);
+    size_for_load(&mut plan, &mut approximated);
 
     plan.understanding.approximated = approximated;
     plan.understanding.not_understood = leftovers
@@ -324,6 +325,87 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
     drop_invalid_relations(&mut plan);
     plan.validate().map_err(|e| PlannerError::InvalidSize(e.to_string()))?;
     Ok(plan)
+}
+
+/// A category's footprint on the floor (its `width` × `depth` defaults, m), if it has one.
+fn footprint(cat: &str) -> Option<(f64, f64, f64)> {
+    let c = sw_catalog::find(cat)?;
+    let w = c.param("width")?;
+    let d = c.param("depth").or_else(|| c.param("width"))?;
+    Some((w.default, d.default, w.max))
+}
+
+/// A surface said to carry many things is made long enough to carry them, within its
+/// category's range ("a table with four seedling trays" is no 1.2 m table): on each host,
+/// every kind of item stands in rows across the top's depth (turned whichever way takes
+/// less length), with a gap between items and a margin at the edges; the kinds side by
+/// side. That length sets the host's when none was stated. The report says the size used
+/// and why.
+fn size_for_load(plan: &mut ScenePlan, notes: &mut Vec<Approximation>) {
+    /// Clear gap between items, and margin at each edge of the top (m).
+    const GAP: f64 = 0.05;
+    const MARGIN: f64 = 0.05;
+    // (item width, item depth, count) per host.
+    let mut load: BTreeMap<String, Vec<(f64, f64, u32)>> = BTreeMap::new();
+    for r in &plan.relations {
+        let RelationKind::On { target } = &r.kind else { continue };
+        let Some(item) = plan.object(&r.subject) else { continue };
+        let Some((mut w, mut d, _)) = footprint(&item.category) else { continue };
+        // "six small boxes": the size words scale the footprint as they will the asset.
+        for word in &item.size.words {
+            let [fw, fd, _] = word.factors();
+            w *= fw;
+            d *= fd;
+        }
+        load.entry(target.clone()).or_default().push((w, d, item.count));
+    }
+    for (host, items) in load {
+        let Some(h) = plan.objects.iter_mut().find(|o| o.id == host) else { continue };
+        let e = &h.size.explicit;
+        if e.length.is_some() || e.width.is_some() || e.diameter.is_some() || !h.size.words.is_empty() {
+            continue;
+        }
+        let Some((w, d, w_max)) = footprint(&h.category) else { continue };
+        let hosts = f64::from(h.count.max(1));
+        let usable = d - 2.0 * MARGIN;
+        let mut needed = 2.0 * MARGIN - GAP;
+        let mut count = 0.0;
+        for (iw, id, n) in &items {
+            let each = (f64::from(*n) / hosts).ceil();
+            count += each;
+            let run = |along: f64, across: f64| {
+                let rows = ((usable + GAP) / (across + GAP)).floor().max(1.0);
+                (each / rows).ceil() * (along + GAP)
+            };
+            needed += run(*iw, *id).min(run(*id, *iw));
+        }
+        if needed <= w || w_max <= w {
+            continue;
+        }
+        let length = ((needed.min(w_max)) * 20.0).ceil() / 20.0;
+        h.size.explicit.length = Some(length.min(w_max));
+        let what = h.category.replace('_', " ");
+        let reason = if needed > w_max {
+            format!(
+                "{} things on it need about {needed:.2} m of top; made {w_max:.2} m long, the longest {what} (the items may crowd)",
+                trim_count(count)
+            )
+        } else {
+            format!(
+                "{} things on it need about {needed:.2} m of top; made {length:.2} m long (a {what} is {w:.2} m, up to {w_max:.2} m)",
+                trim_count(count)
+            )
+        };
+        notes.push(Approximation {
+            text: h.phrase.clone(),
+            became: format!("{:.2} m long", length.min(w_max)),
+            reason,
+        });
+    }
+}
+
+fn trim_count(v: f64) -> String {
+    if (v - v.round()).abs() < 1e-9 { format!("{}", v.round() as i64) } else { format!("{v:.1}") }
 }
 
 /// Small things placed by something that rests on a surface rest on it too ("a toaster

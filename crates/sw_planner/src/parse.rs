@@ -124,6 +124,11 @@ pub(crate) struct Parser<'a> {
     with_subject: Option<String>,
     /// Where the phrase being taken starts.
     phrase_start: usize,
+    /// The thing before the last "with", until a relation follows: "a hob with a kettle and
+    /// two mugs next to it" — it is the hob, and the relation is every listed thing's.
+    with_it: Option<String>,
+    /// The last pronoun target read was `with_it`.
+    it_is_with_host: bool,
     /// Groups loaded since "full of" / "loaded with".
     support_taken: usize,
     /// The phrase being taken as a target is the subject of a turned-round relation
@@ -185,6 +190,8 @@ impl<'a> Parser<'a> {
             each_taken: 0,
             with_subject: None,
             phrase_start: 0,
+            with_it: None,
+            it_is_with_host: false,
             support_taken: 0,
             taking_pieces: false,
             in_place_clause: false,
@@ -283,6 +290,14 @@ impl<'a> Parser<'a> {
                 i = next;
                 continue;
             }
+            if let Some(next) = self.try_bracket_count(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_measure_of(i)? {
+                i = next;
+                continue;
+            }
             if let Some(next) = self.try_count_of_them(i) {
                 i = next;
                 continue;
@@ -331,6 +346,7 @@ impl<'a> Parser<'a> {
                     Some(Subject::Group(g)) => Some(g.clone()),
                     _ => None,
                 };
+                self.with_it = self.with_subject.clone();
                 match &self.subject {
                     Some(Subject::Group(g)) if self.group_has_surface(g) => self.with_host = Some(g.clone()),
                     // "a UR5e on a table with three mugs": the mugs go on the table.
@@ -345,8 +361,11 @@ impl<'a> Parser<'a> {
                 i += 1;
                 continue;
             }
-            let after_list_word = i > 0
-                && (self.toks[i - 1].kind == TokenKind::Comma
+            // A clause's start counts too: "shoe shop: benches in the middle", "Boxes on
+            // every shelf."
+            let after_list_word = i == 0
+                || (self.toks[i - 1].kind == TokenKind::Comma
+                    || self.toks[i - 1].kind == TokenKind::Stop
                     || matches!(self.word(i - 1), "and" | "with" | "plus" | "&"));
             // "two rows of desks", "a stack of boxes": what follows a collective is an object.
             let bare = if self.collective.is_some() {
@@ -356,9 +375,12 @@ impl<'a> Parser<'a> {
             } else {
                 Bare::No
             };
-            if let Some(p) = self.phrase_at(i, true, bare)? {
+            if let Some(mut p) = self.phrase_at(i, true, bare)? {
                 let end = p.end;
                 self.mark(i, end);
+                if self.part_after_with(i, &p) {
+                    p.head = Head::Place(PlaceKind::Part);
+                }
                 self.take_phrase(p, i);
                 i = end;
                 continue;
@@ -414,6 +436,7 @@ impl<'a> Parser<'a> {
         self.each_host = None;
         self.collective = None;
         self.with_subject = None;
+        self.with_it = None;
         self.pending.clear();
         if let Some((dims, text, _)) = self.pending_dims.take() {
             self.set_room_dims(dims, text);
@@ -855,7 +878,96 @@ impl<'a> Parser<'a> {
     /// A place where an object phrase was expected ("a clear path to the door", "the
     /// corridor"): no object; what is said of it is not said of the subject before it.
     /// "An aisle with two racks" at the start of a prompt is a warehouse aisle.
+    /// "a box with a lid", "a cabinet with two shelves": a noun that names a part of a
+    /// thing (tables/parts.tsv), right after "with" on that thing, is its part.
+    fn part_after_with(&self, start: usize, p: &Phrase) -> bool {
+        let Some(Subject::Group(host)) = &self.subject else {
+            return false;
+        };
+        let mut k = start;
+        while k > 0 && (self.toks[k - 1].kind == TokenKind::Word && matches!(self.word(k - 1), "a" | "an" | "one")) {
+            k -= 1;
+        }
+        let after_with = k > 0 && self.word(k - 1) == "with";
+        let head = p.text.split_whitespace().last().map(str::to_lowercase).unwrap_or_default();
+        // "with a shelf above", "with a tray beside it": a thing placed by the host, not a part.
+        let placed =
+            crate::cues::cue_at(&self.toks, p.end).is_some() || crate::phrase::is_adverb_particle(self.word(p.end));
+        after_with
+            && !placed
+            && self.group(host).is_some_and(|g| g.category.is_some())
+            && matches!(p.head, Head::Known(Meaning::Category(_)) | Head::Unknown(_))
+            && crate::tables::rows(crate::tables::PARTS).any(|r| r[0] == head)
+    }
+
+    /// "a bunch of grapes", "two slices of bread", "a pint of milk": a measure noun
+    /// (tables/measures.tsv), "of" and a phrase with no determiner are one object — the
+    /// thing measured, counted by the measure. A name the vocabulary knows whole ("a roll of
+    /// tape") is left to it.
+    fn try_measure_of(&mut self, i: usize) -> Result<Option<usize>, PlannerError> {
+        let (n, q) = match self.toks.get(i) {
+            Some(t) if t.number().is_some() => (t.number().unwrap_or(1.0), 1),
+            Some(t) if matches!(t.norm.as_str(), "a" | "an" | "one") => (1.0, 1),
+            Some(t) if number_word(&t.norm).is_some() => (number_word(&t.norm).unwrap_or(1.0), 1),
+            _ => return Ok(None),
+        };
+        let m = i + q;
+        let measure = self.word(m).to_string();
+        if self.word(m + 1) != "of" || !crate::tables::rows(crate::tables::MEASURES).any(|r| r[0] == measure) {
+            return Ok(None);
+        }
+        // A name the vocabulary knows whole ("a bunch of grapes"): that thing, counted by
+        // the measure.
+        if self.lookup(m, crate::lexicon::is_head).is_some_and(|(_, len)| len > 2) {
+            let Some(mut p) = self.phrase_at(i, true, Bare::No)? else {
+                return Ok(None);
+            };
+            p.count = Some(n);
+            p.quantity = None;
+            p.plural = n > 1.0;
+            let end = p.end;
+            self.mark(i, end);
+            self.take_phrase(p, i);
+            return Ok(Some(end));
+        }
+        let k = m + 2;
+        let determiner = matches!(
+            self.word(k),
+            "the" | "a" | "an" | "its" | "their" | "this" | "that" | "these" | "those" | "each" | "every"
+        );
+        if determiner || !self.toks.get(k).is_some_and(|t| t.kind == TokenKind::Word) {
+            return Ok(None);
+        }
+        let Some(mut p) = self.phrase_at(k, true, Bare::Target)? else {
+            return Ok(None);
+        };
+        if p.quantity.is_some() || !matches!(p.head, Head::Known(Meaning::Category(_)) | Head::Unknown(_)) {
+            return Ok(None);
+        }
+        p.count = Some(n);
+        p.plural = n > 1.0;
+        p.text = self.span(i, p.end);
+        let end = p.end;
+        self.mark(i, end);
+        self.draft.approximated.push(Approximation {
+            text: p.text.clone(),
+            became: format!("{} × {}", n, self.span(k, end)),
+            reason: format!("'{measure} of' measures what follows: one object each"),
+        });
+        self.take_phrase(p, i);
+        Ok(Some(end))
+    }
+
     fn take_place(&mut self, p: &Phrase, kind: PlaceKind, start: usize) {
+        // A part of a thing ("three drawers", "its lid"): the sentence stays about the thing.
+        if kind == PlaceKind::Part {
+            self.draft.approximated.push(Approximation {
+                text: p.text.clone(),
+                became: "a part, not an object".into(),
+                reason: "a part of a thing named with it (a drawer, a lid, a shelf level) is where things go, not a thing of its own".into(),
+            });
+            return;
+        }
         if let Some(n) = p.count.filter(|n| *n > 1.0)
             && let Some(head) = p.text.split_whitespace().last()
         {

@@ -44,6 +44,9 @@ pub(crate) enum PlaceKind {
     Shape,
     /// A person: people are not modelled.
     Person,
+    /// A part of a thing named with it ("a cabinet with three drawers", "its door", "every
+    /// level of the rack"): where things go on or in that thing, never an object.
+    Part,
 }
 
 impl PlaceKind {
@@ -67,6 +70,7 @@ impl PlaceKind {
             "ceiling" => PlaceKind::Ceiling,
             "shape" => PlaceKind::Shape,
             "person" => PlaceKind::Person,
+            "part" => PlaceKind::Part,
             _ => return None,
         })
     }
@@ -85,6 +89,41 @@ fn places() -> &'static HashMap<&'static str, PlaceKind> {
 fn function_nouns() -> &'static [&'static str] {
     static F: OnceLock<Vec<&'static str>> = OnceLock::new();
     F.get_or_init(|| rows(FUNCTION_NOUNS).map(|r| r[0]).collect())
+}
+
+/// Nouns that name a part of a thing where the words around them say so (see
+/// [`Phrases::part_in_context`]); elsewhere they may be things of their own ("a lid on the
+/// counter", "a shelf against the wall").
+fn context_parts() -> &'static [&'static str] {
+    static C: OnceLock<Vec<&'static str>> = OnceLock::new();
+    C.get_or_init(|| rows(crate::tables::PARTS).map(|r| r[0]).collect())
+}
+
+/// Adverbs and particles that end a phrase and are never its noun: "4 m apart", "a mirror
+/// above", "the lid off".
+pub(crate) fn is_adverb_particle(w: &str) -> bool {
+    matches!(
+        w,
+        "apart"
+            | "away"
+            | "above"
+            | "below"
+            | "beneath"
+            | "underneath"
+            | "overhead"
+            | "nearby"
+            | "upstairs"
+            | "downstairs"
+            | "aside"
+            | "together"
+            | "upright"
+            | "open"
+            | "ajar"
+            | "shut"
+            | "closed"
+            | "out"
+            | "off"
+    )
 }
 
 fn compound_modifiers() -> &'static [&'static str] {
@@ -323,6 +362,9 @@ impl Phrases<'_> {
     /// a participle ("leaving") or a past form ("placed").
     fn can_be_noun(&self, i: usize) -> bool {
         let w = self.word(i);
+        if is_adverb_particle(w) {
+            return false;
+        }
         // "-ly" is an adverb ("neatly") unless a noun follows it ("an assembly cell", "a
         // supply cart").
         let adverb = w.ends_with("ly") && self.lookup(i + 1, is_head).is_none();
@@ -333,6 +375,9 @@ impl Phrases<'_> {
     /// vocabulary does not model ("standing", "folding", "rolling").
     fn is_modifier_word(&self, i: usize) -> bool {
         let w = self.word(i);
+        if is_adverb_particle(w) {
+            return false;
+        }
         let participle = (w.ends_with("ing") && w.len() > 5) || (w.ends_with("ed") && w.len() > 4);
         (participle && cue_at(self.toks, i).is_none()) || compound_modifiers().contains(&w)
     }
@@ -436,9 +481,18 @@ impl Phrases<'_> {
     fn nouns_at(&self, mut k: usize, after_quantity: bool) -> Vec<Noun> {
         let mut out = Vec::new();
         while out.len() < 5 {
+            // "every level of the rack", "its lid", "the shelf of the cabinet": a noun that
+            // names a part of a thing, of a thing named or referred to, is that thing's part.
+            if out.is_empty()
+                && let Some(len) = self.part_in_context(k)
+            {
+                out.push(Noun::Place(PlaceKind::Part, k, len));
+                break;
+            }
             // Walls, windows and doors are places even where the catalog has a model of one,
             // unless a longer name begins with them ("a wall clock", "a door mat").
-            if let Some((p @ (PlaceKind::Wall | PlaceKind::Door | PlaceKind::Person), len)) = place_at(self.toks, k)
+            if let Some((p @ (PlaceKind::Wall | PlaceKind::Door | PlaceKind::Person | PlaceKind::Part), len)) =
+                place_at(self.toks, k)
                 && self.lookup(k, is_head).is_none_or(|(_, n)| n <= len)
             {
                 out.push(Noun::Place(p, k, len));
@@ -731,7 +785,9 @@ impl Phrases<'_> {
                 };
                 // A word after the noun followed by a determiner or a count is a verb ("a
                 // mobile robot brings a shelf"), not the head of a compound.
+                let particle_tail = unknown_tail.iter().any(|s| is_adverb_particle(self.word(*s)));
                 (modifier_noun || open_compound)
+                    && !particle_tail
                     && allow_unknown
                     && self.boundary(tail_end)
                     && !self.starts_object(tail_end)
@@ -815,6 +871,36 @@ impl Phrases<'_> {
                 self.word(i),
                 "the" | "its" | "their" | "these" | "those" | "his" | "her" | "my" | "our" | "your"
             )
+    }
+
+    /// A noun at `k` that can name a part of a thing (tables/parts.tsv: a lid, a shelf, a
+    /// level) read as that part: after a possessive ("its lid", "their doors"), or before
+    /// "of" and a definite phrase ("every level of the rack", "the shelf of the cabinet").
+    /// Returns its length in tokens.
+    pub(crate) fn part_in_context(&self, k: usize) -> Option<usize> {
+        let w = self.word(k);
+        if !context_parts().contains(&w) {
+            return None;
+        }
+        // Skip back over modifiers ("its open door", "its top shelf") to the determiner.
+        let mut b = k;
+        while b > 0 && self.toks[b - 1].kind == TokenKind::Word && b + 3 > k {
+            let prev = self.word(b - 1);
+            if matches!(prev, "its" | "their" | "his" | "her") {
+                return Some(1);
+            }
+            if matches!(prev, "a" | "an" | "the" | "every" | "each" | "both" | "all" | "one")
+                || number_word(prev).is_some()
+            {
+                break;
+            }
+            b -= 1;
+        }
+        let definite_after = matches!(
+            self.word(k + 2),
+            "the" | "its" | "their" | "this" | "that" | "each" | "every" | "both" | "his" | "her"
+        );
+        (self.word(k + 1) == "of" && definite_after).then_some(1)
     }
 
     /// Words `from..to` lowercase, the last singular: a proxy's label.

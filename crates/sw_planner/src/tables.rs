@@ -21,6 +21,8 @@ pub(crate) const KIND_SIZES: &str = include_str!("../tables/kind_sizes.tsv");
 pub(crate) const SET_INTO: &str = include_str!("../tables/set_into.tsv");
 pub(crate) const ROOM_SENSES: &str = include_str!("../tables/room_senses.tsv");
 pub(crate) const COMPOUND_MODIFIERS: &str = include_str!("../tables/compound_modifiers.tsv");
+pub(crate) const PARTS: &str = include_str!("../tables/parts.tsv");
+pub(crate) const MEASURES: &str = include_str!("../tables/measures.tsv");
 
 #[cfg(test)]
 mod tests {
@@ -40,6 +42,8 @@ mod tests {
             ("set_into", SET_INTO, 2),
             ("room_senses", ROOM_SENSES, 3),
             ("compound_modifiers", COMPOUND_MODIFIERS, 1),
+            ("parts", PARTS, 1),
+            ("measures", MEASURES, 1),
         ] {
             let mut n = 0;
             for r in rows(text) {

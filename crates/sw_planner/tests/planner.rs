@@ -1570,3 +1570,52 @@ fn a_colour_or_place_word_that_begins_a_catalog_name_is_part_of_it() {
     let mug = group(&p, "mug");
     assert_eq!(mug.color.as_ref().map(|c| c.name.as_str()), Some("cream"), "{}", dump(&p));
 }
+
+#[test]
+fn a_surface_is_sized_for_the_things_said_to_be_on_it() {
+    // Four seedling trays (0.54 m × 0.28 m) do not fit a 1.2 m table side by side with room
+    // between them: the table is made longer, within a table's range, and the report says why.
+    let p = ok("a table with four seedling trays on it");
+    let t = group(&p, "table");
+    let len = t.size.explicit.length.expect("a length for the load");
+    assert!((1.2..=3.0).contains(&len), "{len}\n{}", dump(&p));
+    let note = p.understanding.approximated.iter().find(|a| a.text == t.phrase).expect("a note");
+    assert!(note.reason.contains("4 things on it") && note.reason.contains("m long"), "{note:?}");
+    // One mug, or a stated length, leaves the table alone.
+    assert!(group(&ok("a table with a mug on it"), "table").size.explicit.is_empty());
+    let stated = ok("a 1 m long table with four seedling trays on it");
+    assert_eq!(group(&stated, "table").size.explicit.length, Some(1.0));
+    // More than the longest table can carry: the longest, and the report says they may crowd.
+    let p = ok("a table with forty seedling trays on it");
+    assert_eq!(group(&p, "table").size.explicit.length, Some(3.0));
+    assert!(p.understanding.approximated.iter().any(|a| a.reason.contains("may crowd")), "{}", dump(&p));
+}
+
+#[test]
+fn parts_measures_brackets_and_coordinated_targets_are_read_by_structure() {
+    // Parts of a thing are no objects.
+    let p = ok("a cabinet with three drawers on a table, a bowl in the bottom drawer");
+    assert_eq!(p.objects.iter().map(|o| o.category.as_str()).collect::<Vec<_>>(), ["cabinet", "table", "bowl"]);
+    let p = ok("a fridge with its door open and a box with a lid");
+    assert!(p.objects.iter().all(|o| o.category != "proxy"), "{}", dump(&p));
+    // A thing placed by the host after "with" is a thing, not a part.
+    let p = ok("a washing machine with a shelf above");
+    assert_eq!(group(&p, "shelf").count, 1);
+    // A measure of something is that thing, counted by the measure.
+    let p = ok("two slices of bread and a bunch of grapes on a plate");
+    assert_eq!(group(&p, "bread_loaf").count, 2);
+    assert_eq!(group(&p, "grapes").count, 1);
+    // A numeral in brackets counts the plural before it.
+    assert_eq!(group(&ok("3D printers (3) on a bench"), "fdm_printer").count, 3);
+    // "4 metres apart" and "above" are no objects.
+    let p = ok("two machines 4 metres apart, a mirror above");
+    assert!(p.objects.iter().all(|o| o.category != "proxy"), "{}", dump(&p));
+    // Coordinated definite targets are each a target.
+    let p = ok("a lathe, a mill and a bench next to the lathe and the mill");
+    let targets: Vec<&str> =
+        p.relations.iter().filter(|r| r.subject == group(&p, "workbench").id).flat_map(|r| r.kind.targets()).collect();
+    assert_eq!(targets.len(), 2, "{}", dump(&p));
+    // One at each: "a locker at the foot of each bunk".
+    assert_eq!(group(&ok("3 bunk beds along one wall, a locker at the foot of each bunk"), "locker").count, 3);
+    assert_eq!(group(&ok("4 benches in 2 rows of 2, a sink at the end of each row"), "sink").count, 2);
+}

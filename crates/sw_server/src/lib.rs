@@ -8,6 +8,7 @@
 
 mod auth;
 mod body;
+mod catalog_pictures;
 mod compress;
 mod dataset_jobs;
 mod edit_jobs;
@@ -254,6 +255,7 @@ pub fn router(state: AppState) -> Router {
         .route("/api/assets", get(routes_misc::assets).post(routes_misc::create_asset))
         .route("/api/assets/{id}", get(routes_misc::asset))
         .route("/api/assets/{id}/mesh.stl", get(routes_misc::asset_mesh))
+        .route("/api/catalog/{name}/picture.png", get(catalog_pictures::picture))
         .route("/api/robots", get(routes_misc::robots))
         .route("/api/admin/jobs", get(routes_jobs::admin_overview))
         .fallback(routes_misc::not_found)

@@ -136,6 +136,8 @@ fn app_paths(doc: &mut Value) {
         "get": op("Every version of the scene's lineage, oldest first, with the edit that made each", true, None, ("200", "{scene_id, versions}"), &auth) });
     paths["/api/scenes/{id}/thumbnail.png"] = json!({ "parameters": [id_param("id")],
         "get": op("A 480 × 300 picture of the scene (drawn once, then kept)", true, None, ("200", "image/png"), &auth) });
+    paths["/api/catalog/{name}/picture.png"] = json!({ "parameters": [{ "name": "name", "in": "path", "required": true, "schema": { "type": "string" } }],
+        "get": op("A 256 × 256 picture of a catalog category, built at seed 0 (public; drawn once per process)", false, None, ("200", "image/png"), &["404"]) });
     paths["/api/assets"]["get"] = op(
         "Catalog categories and the caller's assets matching ?q= by words, and (similar) the caller's generated parts nearest in meaning, with scores",
         true,

@@ -461,3 +461,46 @@ async fn the_refinement_chat_asks_the_models_questions_when_one_is_configured() 
     assert!(v["question"].as_str().unwrap().to_lowercase().contains("room"), "{v}");
     assert!(v["warnings"][0].as_str().unwrap().contains("offline planner's questions"), "{v}");
 }
+
+/// Decodes an RGB PNG: (width, height, pixels).
+fn decode_rgb(png: &[u8]) -> (u32, u32, Vec<[u8; 3]>) {
+    let mut reader = png::Decoder::new(std::io::Cursor::new(png)).read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    assert_eq!(info.color_type, png::ColorType::Rgb);
+    let px = buf[..info.buffer_size()].chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
+    (info.width, info.height, px)
+}
+
+#[tokio::test]
+async fn catalog_categories_have_pictures() {
+    let a = app(QueueLimits::default()).await;
+    // No token: a picture of the catalog says nothing about a user, and an <img> sends none.
+    let (s, h, mug) = fetch(&a, "/api/catalog/mug/picture.png", None, &[]).await;
+    assert_eq!(s, StatusCode::OK);
+    assert_eq!(h[header::CONTENT_TYPE], "image/png");
+    let (w, hgt, px) = decode_rgb(&mug);
+    assert_eq!((w, hgt), (256, 256));
+    // The thing fills a good part of the frame and is not one flat colour: the background is
+    // the light grey the rasterizer clears to.
+    let background = px.iter().filter(|p| **p == [238, 241, 246]).count() as f64 / px.len() as f64;
+    assert!((0.05..0.95).contains(&background), "background covers {:.0} % of the mug's picture", background * 100.0);
+    let colours: std::collections::BTreeSet<[u8; 3]> = px.iter().copied().collect();
+    assert!(colours.len() >= 4, "a picture of {} colours", colours.len());
+    // Asked again: the same bytes (kept, not drawn again differently).
+    assert_eq!(fetch(&a, "/api/catalog/mug/picture.png", None, &[]).await.2, mug);
+    // Another category is another picture; an unknown one is a 404.
+    let (s, _, shelf) = fetch(&a, "/api/catalog/shelf/picture.png", None, &[]).await;
+    assert_eq!(s, StatusCode::OK);
+    assert_ne!(shelf, mug);
+    let (s, _, body) = fetch(&a, "/api/catalog/no_such_thing/picture.png", None, &[]).await;
+    assert_eq!(s, StatusCode::NOT_FOUND, "{}", String::from_utf8_lossy(&body));
+    // A sample across the whole catalog draws (every category is built at seed 0).
+    let all = sw_catalog::categories();
+    for c in all.iter().step_by(37) {
+        let (s, _, png) = fetch(&a, &format!("/api/catalog/{}/picture.png", c.name), None, &[]).await;
+        assert_eq!(s, StatusCode::OK, "{}", c.name);
+        let (_, _, px) = decode_rgb(&png);
+        assert!(px.iter().any(|p| *p != [238, 241, 246]), "{} drew nothing", c.name);
+    }
+}

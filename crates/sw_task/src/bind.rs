@@ -28,6 +28,28 @@ const REACH_MARGIN: f64 = 0.05;
 const CONTAINERS: &[&str] =
     &["bowl", "bin", "cardboard_box", "crate", "trash_can", "drum", "mug", "cup", "sink", "tray", "basket"];
 
+/// Words that pick one of several things by where it stands.
+const POSITION_WORDS: &[&str] =
+    &["left", "leftmost", "right", "rightmost", "far", "farthest", "furthest", "near", "nearest", "closest"];
+
+/// Ordinal and position words for parts, as a fraction along their order (drawers count
+/// from the bottom; doors from the left).
+const ORDINALS: &[(&str, f64)] = &[
+    ("bottom", 0.0),
+    ("lower", 0.0),
+    ("lowest", 0.0),
+    ("first", 0.0),
+    ("left", 0.0),
+    ("middle", 0.5),
+    ("centre", 0.5),
+    ("center", 0.5),
+    ("top", 1.0),
+    ("upper", 1.0),
+    ("highest", 1.0),
+    ("right", 1.0),
+    ("last", 1.0),
+];
+
 /// A robot of the scene, with what the task needs to know of it.
 #[derive(Debug, Clone)]
 pub struct SceneRobot {
@@ -92,14 +114,33 @@ impl<'a> SceneFacts<'a> {
                 words.last().is_some_and(|w| label.contains(w))
             }
         };
-        let of_kind: Vec<&sw_plan::PlacedObject> = self.layout.objects.iter().filter(|o| kind_fits(o)).collect();
+        let mut of_kind: Vec<&sw_plan::PlacedObject> = self.layout.objects.iter().filter(|o| kind_fits(o)).collect();
+        if of_kind.is_empty() {
+            // A kind the catalog says these things are ("the fruit", "the container"): a
+            // category whose `is_a` names the phrase's head, or the phrase without colour.
+            let head = words.last().cloned().unwrap_or_default();
+            let plain: Vec<&str> = words
+                .iter()
+                .map(String::as_str)
+                .filter(|w| sw_planner::vocab::color(w).is_none() && !POSITION_WORDS.contains(w))
+                .collect();
+            let plain = plain.join(" ");
+            of_kind = self
+                .layout
+                .objects
+                .iter()
+                .filter(|o| {
+                    sw_catalog::find(&o.category).is_some_and(|c| c.is_a.iter().any(|k| *k == head || *k == plain))
+                })
+                .collect();
+        }
         let fits: Vec<String> = of_kind
             .iter()
             .filter(|o| colour.as_deref().is_none_or(|c| self.colour_of(&o.group) == Some(c)))
             .map(|o| o.name.clone())
             .collect();
         if !fits.is_empty() {
-            return Ok(fits);
+            return Ok(self.by_position(&words, fits));
         }
         let there: Vec<String> = if of_kind.is_empty() {
             self.layout.objects.iter().filter(|o| o.movable).map(|o| o.name.clone()).take(8).collect()
@@ -114,6 +155,130 @@ impl<'a> SceneFacts<'a> {
             np.text,
             if there.is_empty() { "no movable things".to_string() } else { there.join(", ") }
         )))
+    }
+
+    /// Of several things that fit, the one a position word picks ("the cube on the left",
+    /// "the nearest mug"), in the frame of the arm that works (it faces +x; left is +y).
+    fn by_position(&self, words: &[String], fits: Vec<String>) -> Vec<String> {
+        let Some(word) = words.iter().find(|w| POSITION_WORDS.contains(&w.as_str())) else { return fits };
+        if fits.len() < 2 {
+            return fits;
+        }
+        let Some(r) = self.robots.iter().find(|r| r.has_gripper).or(self.robots.first()) else { return fits };
+        let (c, s) = (r.yaw.cos(), r.yaw.sin());
+        let score = |n: &String| -> f64 {
+            let Some(o) = self.object(n) else { return 0.0 };
+            let (dx, dy) = (o.pos[0] - r.pos[0], o.pos[1] - r.pos[1]);
+            let (fwd, left) = (c * dx + s * dy, -s * dx + c * dy);
+            match word.as_str() {
+                "left" | "leftmost" => left,
+                "right" | "rightmost" => -left,
+                "far" | "farthest" | "furthest" | "back" => fwd,
+                _ => -dx.hypot(dy),
+            }
+        };
+        let best = fits.iter().max_by(|a, b| score(a).total_cmp(&score(b))).cloned();
+        best.into_iter().collect()
+    }
+
+    /// The joint an open/close phrase names, and its object: "the top drawer of the
+    /// cabinet", "the microwave door", "the drawer", "the fridge". Joints are named
+    /// `<object>_<part>_<n>_joint`; drawers count up from the bottom.
+    fn articulated(
+        &self,
+        np: &NounPhrase,
+        used: &mut Vec<String>,
+        notes: &mut Vec<String>,
+    ) -> Result<(String, String), TaskError> {
+        let ws: Vec<String> = sw_planner::vocab::words(&np.text);
+        let parts_of = |j: &str, obj: &str| -> Vec<String> {
+            j.strip_prefix(&format!("{obj}_"))
+                .and_then(|r| r.strip_suffix("_joint"))
+                .map(|r| r.split('_').map(str::to_string).collect())
+                .unwrap_or_default()
+        };
+        let names_part = |w: &str| {
+            self.layout.objects.iter().any(|o| self.joints.iter().any(|j| parts_of(j, &o.name).iter().any(|p| p == w)))
+        };
+        // "X of Y": the part X of the thing Y; "Y X" with X a part ("microwave door").
+        let (part, owner): (Option<String>, Vec<String>) = match np.text.split(' ').position(|w| w == "of") {
+            Some(k) => {
+                let all: Vec<&str> = np.text.split(' ').collect();
+                (
+                    sw_planner::vocab::words(all[..k].last().unwrap_or(&"")).first().cloned(),
+                    sw_planner::vocab::words(&all[k + 1..].join(" ")),
+                )
+            }
+            None => match ws.last() {
+                Some(last)
+                    if names_part(last) || matches!(last.as_str(), "drawer" | "door" | "lid" | "flap" | "hatch") =>
+                {
+                    (Some(last.clone()), ws[..ws.len() - 1].to_vec())
+                }
+                _ => (None, ws.clone()),
+            },
+        };
+        let owner: Vec<String> = owner.into_iter().filter(|w| !ORDINALS.iter().any(|(o, _)| o == w)).collect();
+        let candidates: Vec<String> = if owner.is_empty() {
+            let p = part.clone().unwrap_or_default();
+            self.layout
+                .objects
+                .iter()
+                .filter(|o| self.joints.iter().any(|j| parts_of(j, &o.name).contains(&p)))
+                .map(|o| o.name.clone())
+                .collect()
+        } else {
+            let owner_np = NounPhrase { text: owner.join(" "), every: false, other: false };
+            self.objects(&owner_np)?
+        };
+        let what = part.clone().unwrap_or_else(|| "door or drawer".into());
+        let mut with_joints: Vec<(String, Vec<String>)> = Vec::new();
+        for o in &candidates {
+            let mut js: Vec<String> = self
+                .joints
+                .iter()
+                .filter(|j| {
+                    let ps = parts_of(j, o);
+                    !ps.is_empty() && part.as_ref().is_none_or(|p| ps.contains(p))
+                })
+                .cloned()
+                .collect();
+            js.sort_by_key(|j| (j.len(), j.clone()));
+            if !js.is_empty() {
+                with_joints.push((o.clone(), js));
+            }
+        }
+        if with_joints.is_empty() {
+            let named = if candidates.is_empty() { format!("\"{}\"", np.text) } else { candidates.join(", ") };
+            let movable: Vec<String> = self
+                .layout
+                .objects
+                .iter()
+                .filter(|o| self.joints.iter().any(|j| !parts_of(j, &o.name).is_empty()))
+                .map(|o| o.name.clone())
+                .take(6)
+                .collect();
+            return Err(TaskError::Missing(format!(
+                "the task opens or closes {named}, and the scene has no {what} of it that moves ({})",
+                if movable.is_empty() {
+                    "nothing in it opens".to_string()
+                } else {
+                    format!("things that open: {}", movable.join(", "))
+                }
+            )));
+        }
+        let names: Vec<String> = with_joints.iter().map(|(o, _)| o.clone()).collect();
+        let obj = pick_one(&names, &NounPhrase { text: np.text.clone(), every: false, other: false }, used, notes);
+        let js = &with_joints.iter().find(|(o, _)| *o == obj).map(|(_, j)| j.clone()).unwrap_or_default();
+        let ordinal = ws.iter().find_map(|w| ORDINALS.iter().find(|(o, _)| o == w).map(|x| x.1));
+        let k = match ordinal {
+            Some(f) => ((f * (js.len() as f64 - 1.0)).round() as usize).min(js.len() - 1),
+            None => 0,
+        };
+        if js.len() > 1 {
+            notes.push(format!("\"{}\" fits {}; the task uses {}", np.text, js.join(", "), js[k]));
+        }
+        Ok((obj, js[k].clone()))
     }
 
     fn object(&self, name: &str) -> Option<&sw_plan::PlacedObject> {
@@ -198,6 +363,18 @@ fn clause_goals(
     if c.subjects.is_empty() {
         return Err(TaskError::Words("the task says where to put something but not what".into()));
     }
+    if matches!(c.action, Action::Open | Action::Close) {
+        let mut goals = Vec::new();
+        for np in &c.subjects {
+            let (object, joint) = facts.articulated(np, used, notes)?;
+            goals.push(if c.action == Action::Open {
+                Predicate::Open { object, joint }
+            } else {
+                Predicate::Closed { object, joint }
+            });
+        }
+        return Ok((Family::Articulated, goals));
+    }
     let mut subjects: Vec<String> = Vec::new();
     for np in &c.subjects {
         let found = facts.objects(np)?;
@@ -243,21 +420,6 @@ fn clause_goals(
     let mut goals = Vec::new();
     let family;
     match (c.action, c.rel, region) {
-        (Action::Open | Action::Close, _, _) => {
-            family = Family::Articulated;
-            for s in &subjects {
-                let prefix = format!("{s}_");
-                let joint =
-                    facts.joints.iter().find(|j| j.starts_with(&prefix)).ok_or_else(|| {
-                        TaskError::Missing(format!("{s} has no drawer or door that moves in this scene"))
-                    })?;
-                goals.push(if c.action == Action::Open {
-                    Predicate::Open { object: s.clone(), joint: joint.clone() }
-                } else {
-                    Predicate::Closed { object: s.clone(), joint: joint.clone() }
-                });
-            }
-        }
         (_, _, Some(region)) => {
             family = if c.action == Action::Push { Family::Push } else { Family::PickPlace };
             for s in &subjects {

@@ -51,6 +51,7 @@ pub(crate) const VERBS: &[(&str, Action)] = &[
     ("hold", Action::Lift),
     ("take", Action::Lift),
     ("open", Action::Open),
+    ("pull", Action::Open),
     ("close", Action::Close),
     ("shut", Action::Close),
     ("go", Action::Navigate),
@@ -148,8 +149,123 @@ pub(crate) const REGIONS: &[(&str, Region)] = &[
 /// Words that make a noun phrase mean every instance of its kind.
 pub(crate) const EVERY: &[&str] = &["all", "every", "each", "both", "the rest of"];
 
-/// Words that end a noun phrase or a clause.
-pub(crate) const CLAUSE_BREAKS: &[&str] = &["and", "then", "afterwards", "after", "before", "so", "while"];
+/// Verbs that say on or off ("turn on the stove", "switch the lamp off"): open and close.
+pub(crate) const SWITCH_VERBS: &[&str] = &["turn", "switch", "power"];
+
+/// Verbs for things the expert cannot do or be judged on: a clause led by one is refused,
+/// naming it.
+pub(crate) const UNSUPPORTED: &[&str] = &[
+    "pour", "wipe", "fold", "unfold", "sweep", "water", "rotate", "flip", "press", "unplug", "plug", "reach", "knock",
+    "unstack", "twist", "cut", "slice", "chop", "hang", "wash", "stir", "scoop", "screw", "unscrew", "spin", "tilt",
+    "shake", "squeeze", "clean", "scrub", "peel", "lock", "unlock", "touch", "tap", "hit", "kick", "fill", "empty",
+    "hand", "give", "point", "wave", "write", "draw", "erase", "cook", "boil", "heat", "fry",
+];
+
+/// Parts of things that open and close (joints are named `<object>_<part>_<n>_joint`).
+pub(crate) const PARTS: &[&str] = &["drawer", "drawers", "door", "doors", "lid", "flap", "hatch"];
+
+/// Relation words for a goal under another thing, which no predicate judges.
+pub(crate) const UNDER: &[&str] = &["under", "underneath", "beneath", "below"];
+
+/// Words after a thing that say how it must be left, which no predicate judges.
+pub(crate) const RESULTS: &[&str] =
+    &["upright", "sideways", "over", "flat", "vertical", "vertically", "horizontal", "horizontally", "upside", "down"];
+
+/// Words around a command that ask politely or say who does it ("please", "can you", "the
+/// robot should", "I want you to", "go ahead and").
+pub(crate) const WRAPPERS: &[&str] = &[
+    "please",
+    "pls",
+    "kindly",
+    "can",
+    "could",
+    "would",
+    "will",
+    "you",
+    "robot",
+    "the",
+    "should",
+    "must",
+    "shall",
+    "i",
+    "i'd",
+    "want",
+    "need",
+    "needs",
+    "like",
+    "to",
+    "now",
+    "try",
+    "ahead",
+    "first",
+    "your",
+    "task",
+    "is",
+    "lets",
+    "let's",
+    "let",
+    "us",
+    "we",
+    "just",
+    "also",
+    "go",
+    "goal",
+    "instruction",
+    "arm",
+    "gripper",
+    "and",
+    "then",
+    "finally",
+    "ok",
+    "okay",
+    "hey",
+    "quickly",
+    "carefully",
+    "gently",
+    "slowly",
+    "mind",
+    "be",
+    "able",
+];
+
+/// Closed-class words a typo may hide ("teh", "inot", "ontop").
+pub(crate) const FUNCTION_WORDS: &[&str] = &[
+    "the", "into", "onto", "inside", "behind", "beside", "between", "next", "front", "left", "right", "top", "from",
+    "and", "then", "please", "near", "towards", "toward", "upon", "within",
+];
+
+/// `w` is `to` with one letter changed, added or dropped, or two neighbours swapped.
+pub(crate) fn near_miss(w: &str, to: &str) -> bool {
+    let (a, b): (Vec<char>, Vec<char>) = (w.chars().collect(), to.chars().collect());
+    if a == b || a.len().abs_diff(b.len()) > 1 {
+        return false;
+    }
+    if a.len() == b.len() {
+        let diff: Vec<usize> = (0..a.len()).filter(|&i| a[i] != b[i]).collect();
+        return match diff.as_slice() {
+            [_] => a.len() >= 4,
+            [i, j] => *j == i + 1 && a[*i] == b[*j] && a[*j] == b[*i],
+            _ => false,
+        };
+    }
+    if a.len().min(b.len()) < 4 {
+        return false;
+    }
+    let (long, short) = if a.len() > b.len() { (&a, &b) } else { (&b, &a) };
+    let k = (0..short.len()).find(|&i| long[i] != short[i]).unwrap_or(short.len());
+    long[k + 1..] == short[k..]
+}
+
+/// `w` is an inflection of the verb `base` ("pours", "wiped", "rotating").
+pub(crate) fn base_form_of(w: &str, base: &str) -> bool {
+    ["s", "es", "ed", "d", "ing"].iter().any(|s| {
+        w.strip_suffix(s).is_some_and(|stem| {
+            stem == base
+                || format!("{stem}e") == base
+                || stem.strip_suffix(base.chars().last().unwrap_or(' ')) == Some(base)
+        })
+    })
+}
 
 /// Words that refer back to the last thing named.
 pub(crate) const PRONOUNS: &[&str] = &["it", "them", "this", "that", "these", "those", "one"];

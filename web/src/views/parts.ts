@@ -13,8 +13,21 @@ export interface PartChoice {
   label: string;
 }
 
+/** A catalog category's small picture; it goes quietly if it cannot be drawn. */
+function picture(category: string): HTMLElement {
+  const img = h('img', { class: 'part-pic', attrs: { alt: '', loading: 'lazy', width: '48', height: '48', draggable: 'false', src: api.catalogPictureUrl(category) } });
+  img.addEventListener('error', () => img.remove());
+  return img;
+}
+
 function item(ref: string, label: string, meta: string, onPick?: (p: PartChoice) => void): HTMLElement {
-  const li = h('li', { class: 'part', data: { part: ref }, attrs: { draggable: 'true' }, title: 'drag into the scene' }, h('b', { text: label }), h('span', { class: 'meta', text: meta }));
+  const category = ref.startsWith('catalog:') ? ref.slice('catalog:'.length) : null;
+  const li = h(
+    'li',
+    { class: 'part', data: { part: ref }, attrs: { draggable: 'true' }, title: 'drag into the scene' },
+    category ? picture(category) : null,
+    h('div', { class: 'part-text' }, h('b', { text: label }), h('span', { class: 'meta', text: meta })),
+  );
   li.addEventListener('dragstart', (e) => {
     e.dataTransfer?.setData(PART_MIME, ref);
     e.dataTransfer?.setData('text/plain', label);

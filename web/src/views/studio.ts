@@ -40,7 +40,10 @@ export const studioView: View = (root) => {
     if (p.ref.startsWith('catalog:')) {
       preview.clear();
       previewHost.dataset.part = '';
-      fill(info, h('h3', { text: p.label }), h('p', { class: 'muted', text: 'A catalog category: made procedurally in each scene (no stored mesh to preview).' }));
+      const name = p.ref.slice('catalog:'.length);
+      const img = h('img', { id: 'catalog-picture', class: 'catalog-picture', attrs: { alt: `${p.label}, as the catalog makes it`, width: '256', height: '256', src: api.catalogPictureUrl(name) } });
+      img.addEventListener('error', () => img.replaceWith(h('p', { class: 'muted', text: 'The picture could not be drawn.' })));
+      fill(info, h('h3', { text: p.label }), img, h('p', { class: 'muted', text: 'A catalog category: made procedurally in each scene, in a size and variant of its own (the picture is one of them).' }));
       return;
     }
     api

@@ -724,7 +724,6 @@ pub(crate) const DETERGENT_BOTTLE: Category = def(
     &[
         "laundry detergent",
         "detergent",
-        "bleach bottle",
         "fabric softener",
         "washing liquid",
         "cleaning product",

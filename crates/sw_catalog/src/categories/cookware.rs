@@ -616,7 +616,7 @@ fn jug(b: &mut AssetBuilder, w: f64, d: f64, h: f64, profile: &[[f64; 2]], [body
 pub(crate) const TEAPOT: Category = def(
     "teapot",
     "teapot",
-    &["tea pot", "coffee pot", "tea kettle pot", "stovetop kettle"],
+    &["tea pot", "coffee pot", "tea kettle pot"],
     &["kitchen", "tabletop", "small", "graspable", "handled"],
     "a round ceramic teapot with a lid, a spout and a handle",
     &["pot", "jug", "kitchenware", "crockery"],
@@ -646,7 +646,7 @@ fn build_teapot(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const PITCHER: Category = def(
     "pitcher",
     "pitcher",
-    &["jug", "water jug", "milk jug", "carafe", "water pitcher", "juice jug", "creamer"],
+    &["jug", "water jug", "milk jug", "carafe", "water pitcher", "juice jug", "creamer", "pitcher base"],
     &["kitchen", "tabletop", "small", "graspable", "handled"],
     "a tall water jug with a spout and a handle",
     &["jug", "container", "vessel", "kitchenware"],
@@ -677,7 +677,7 @@ fn build_pitcher(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const WINE_GLASS: Category = def(
     "wine_glass",
     "wine glass",
-    &["stemmed glass", "goblet", "champagne glass", "red wine glass", "white wine glass"],
+    &["stemmed glass", "goblet", "champagne glass", "red wine glass", "white wine glass", "wineglass"],
     &["kitchen", "tabletop", "small", "graspable", "round"],
     "a stemmed wine glass on a round foot",
     &["glass", "drinkware", "glassware"],

@@ -93,7 +93,16 @@ const BRIGHT: &[[f32; 4]] = &[
 pub(crate) const SALT_SHAKER: Category = def(
     "salt_shaker",
     "salt shaker",
-    &["pepper shaker", "salt cellar", "salt and pepper shaker", "pepper pot", "salt pot", "cruet", "salt"],
+    &[
+        "pepper shaker",
+        "salt cellar",
+        "salt and pepper shaker",
+        "pepper pot",
+        "salt pot",
+        "cruet",
+        "salt",
+        "saltshaker",
+    ],
     ROUND_CONDIMENT,
     "a small glass salt or pepper shaker with a perforated metal cap",
     &["condiment", "shaker", "tableware"],

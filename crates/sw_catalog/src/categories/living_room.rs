@@ -768,7 +768,7 @@ fn build_robot_vacuum(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const CANDLE: Category = def(
     "candle",
     "candle",
-    &["pillar candle", "candle jar", "scented candle", "tea light", "candlestick"],
+    &["pillar candle", "candle jar", "scented candle", "tea light"],
     &["home", "tabletop", "small", "graspable", "round"],
     "a round wax pillar candle with a wick",
     &["decoration", "light"],

@@ -206,7 +206,7 @@ fn build_toothpaste(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const ERASER: Category = def(
     "eraser",
     "eraser",
-    &["rubber eraser", "pencil eraser", "whiteboard eraser", "board rubber", "rubber"],
+    &["rubber eraser", "pencil eraser", "rubber"],
     SMALL,
     "a rectangular rubber eraser",
     &["stationery", "office supply"],
@@ -231,7 +231,7 @@ fn build_eraser(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const HAIRBRUSH: Category = def(
     "hairbrush",
     "hairbrush",
-    &["hair brush", "comb", "paddle brush", "round brush"],
+    &["hair brush", "paddle brush", "round brush"],
     &["bathroom", "bedroom", "home", "tabletop", "small", "graspable"],
     "a paddle hairbrush lying on its back",
     &["brush", "toiletry"],

@@ -31,6 +31,29 @@ impl Parser<'_> {
         Some(i + 1 + len)
     }
 
+    /// "3D printers (3)", "laundry baskets (4)": a numeral in brackets right after a plural
+    /// named without a count is its count.
+    pub(super) fn try_bracket_count(&mut self, i: usize) -> Option<usize> {
+        if self.toks.get(i)?.norm != "(" {
+            return None;
+        }
+        let Some(Subject::Group(g)) = self.subject.clone() else {
+            return None;
+        };
+        let (n, len) = numeral_at(&self.toks, i + 1)?;
+        if self.toks.get(i + 1 + len)?.norm != ")" || !self.just_after_group(i, &g) || !(1.0..=10_000.0).contains(&n) {
+            return None;
+        }
+        let group = self.draft.groups.iter_mut().find(|x| x.id == g)?;
+        if group.count.is_some() || !group.plural {
+            return None;
+        }
+        group.count = Some(n);
+        group.count_rule = None;
+        self.mark(i, i + 2 + len);
+        Some(i + 2 + len)
+    }
+
     /// "pallets along the wall, 8 of them": the count of the plural group named before.
     pub(super) fn try_count_of_them(&mut self, i: usize) -> Option<usize> {
         let (n, len) = numeral_at(&self.toks, i)?;

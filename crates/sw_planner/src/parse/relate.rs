@@ -4,12 +4,12 @@
 
 use sw_plan::{EndOf, Mount, RelationKind};
 
-use super::{Bare, Head, Parser, Subject};
+use super::{Bare, CountRule, Head, Parser, Subject};
 use crate::cues::{Cue, cue_at, target_start};
 use crate::lexicon::Meaning;
 use crate::phrase::PlaceKind;
 use crate::said::{Said, is_set_into};
-use crate::text::{number_word, singular};
+use crate::text::{TokenKind, number_word, singular};
 
 impl Parser<'_> {
     pub(super) fn try_cue(&mut self, i: usize) -> Option<usize> {
@@ -38,6 +38,7 @@ impl Parser<'_> {
             return Some(end);
         }
         let mut targets = Vec::new();
+        let mut coordinated: Vec<String> = Vec::new();
         if cue.takes_target() {
             let wanted = if cue == Cue::Between { 2 } else { 1 };
             let mut j = target_start(&self.toks, end);
@@ -94,6 +95,20 @@ impl Parser<'_> {
                 let row =
                     row.filter(|r| Some(r) != current.as_ref()).or_else(|| self.last_plural_group(current.as_deref()));
                 if let Some(row) = row {
+                    // "a sink at the end of each row": one for every row of the group.
+                    let rows = self.draft.relations.iter().rev().find_map(|(s, k)| match k {
+                        RelationKind::InRows { n: Some(n), .. } if *s == row => Some(f64::from(*n)),
+                        _ => None,
+                    });
+                    if j > 0
+                        && matches!(self.word(j - 1), "each" | "every")
+                        && let (Some(n), Some(Subject::Group(g))) = (rows, self.subject.clone())
+                        && let Some(x) = self.draft.groups.iter_mut().find(|x| x.id == g)
+                        && x.count.is_none_or(|c| c <= 1.0)
+                    {
+                        x.count = Some(n);
+                        x.plural = true;
+                    }
                     self.mark(i, j + 1);
                     let targets = if cue == Cue::Between { vec![row.clone(), row] } else { vec![row] };
                     match self.subject.clone() {
@@ -160,15 +175,33 @@ impl Parser<'_> {
                     j = target_start(&self.toks, j + 1);
                 }
             }
+            // "next to the lathe and the mill", "between the sink and the hob, facing the
+            // door and the window": a definite phrase coordinated with the target, where the
+            // clause ends after it, is another target of the same relation.
+            if wanted == 1 && !twin {
+                while let Some((t, next)) = {
+                    let taken: Vec<String> = targets.iter().chain(&coordinated).cloned().collect();
+                    self.coordinated_target(j, &cue, &taken)
+                } {
+                    coordinated.push(t);
+                    j = next;
+                }
+            }
             end = j;
         }
         self.mark(i, end);
         match self.subject.clone() {
             Some(s) => {
                 self.apply(&s, cue.clone(), targets.clone());
+                for t in &coordinated {
+                    self.apply(&s, cue.clone(), vec![t.clone()]);
+                }
                 // "three mugs and a bowl on the table": small things listed together rest
                 // on the same thing; "a table and four chairs in a row" both stand so.
-                if cue == Cue::On && targets.iter().all(|t| !t.starts_with('@')) {
+                // "a hob with a kettle and two mugs next to it": whatever the "with" lists
+                // stands so to its host.
+                let to_with_host = std::mem::take(&mut self.it_is_with_host);
+                if (cue == Cue::On || to_with_host) && targets.iter().all(|t| !t.starts_with('@')) {
                     let others: Vec<String> = self
                         .list
                         .iter()
@@ -181,7 +214,8 @@ impl Parser<'_> {
                     for g in others {
                         let has_on =
                             self.draft.relations.iter().any(|(x, k)| x == &g && matches!(k, RelationKind::On { .. }));
-                        if self.group_is_small(&g) && !has_on && !targets.contains(&g) {
+                        let small = self.group_is_small(&g) && !has_on;
+                        if (small || (to_with_host && cue != Cue::On)) && !targets.contains(&g) {
                             self.apply(&Subject::Group(g), cue.clone(), targets.clone());
                         }
                     }
@@ -189,9 +223,57 @@ impl Parser<'_> {
                 self.list.clear();
                 self.pending.clear();
             }
-            None => self.pending.push((cue, targets)),
+            None => {
+                for t in coordinated {
+                    self.pending.push((cue.clone(), vec![t]));
+                }
+                self.pending.push((cue, targets));
+            }
         }
         Some(end)
+    }
+
+    /// The target after "and" at `j` when it is coordinated with the one before: a definite
+    /// phrase ("the mill", "its base") naming a thing, after which the clause ends (a comma,
+    /// a full stop, the end, or another "and"). An indefinite one ("and a chair") starts a
+    /// new thing.
+    fn coordinated_target(&mut self, j: usize, cue: &Cue, taken: &[String]) -> Option<(String, usize)> {
+        if !matches!(self.word(j), "and" | "&") {
+            return None;
+        }
+        let k = target_start(&self.toks, j + 1);
+        if k == j + 1 || !self.is_definite(k) {
+            return None;
+        }
+        let p = self.phrase_at(k, true, Bare::Target).ok().flatten()?;
+        if !matches!(p.head, Head::Known(Meaning::Category(_)) | Head::Unknown(_)) {
+            return None;
+        }
+        let ends = self.toks.get(p.end).is_none_or(|t| matches!(t.kind, TokenKind::Comma | TokenKind::Stop))
+            || matches!(self.word(p.end), "and" | "&");
+        if !ends {
+            return None;
+        }
+        let subject = match &self.subject {
+            Some(Subject::Group(g)) => Some(g.clone()),
+            _ => None,
+        };
+        let (mut t, next) = self.target_at(k, cue)?;
+        // Coordinated phrases name different things: "the locker and the cabinet" is not
+        // the locker twice, though a locker is a kind of cabinet.
+        if taken.contains(&t)
+            && let Head::Known(Meaning::Category(cat)) = &p.head
+        {
+            t = self.new_group(Some(cat), cat.replace('_', " "), &p, p.explicit);
+            if let Some(g) = self.draft.groups.last_mut() {
+                g.accommodated = true;
+            }
+        }
+        if t.starts_with('@') || Some(&t) == subject.as_ref() || taken.contains(&t) {
+            return None;
+        }
+        self.mark(j, next);
+        Some((t, next))
     }
 
     /// "a robot surrounded by safety screens", "a press enclosed by fences": what follows
@@ -277,11 +359,14 @@ impl Parser<'_> {
             // "each with a stool and a vice on it": it is each host.
             // "them" is the host only when there are several of it ("two Pandas on a table
             // with a cube between them": the Pandas).
-            if let Some(host) = self.each_host.clone().or_else(|| self.with_host.clone())
+            // "a hob with a kettle and two mugs next to it": it is the thing the "with" is on.
+            let with_it = self.with_it.clone().filter(|_| w == "it");
+            if let Some(host) = self.each_host.clone().or_else(|| self.with_host.clone()).or(with_it.clone())
                 && self.subject != Some(Subject::Group(host.clone()))
                 && matches!(w, "it" | "them" | "one" | "each")
                 && (w != "them" || self.group_is_plural(&host) || self.each_host.is_some())
             {
+                self.it_is_with_host = with_it.as_ref() == Some(&host);
                 return Some((host, j + 1));
             }
             let previous = self.resolve_pronoun(w)?;
@@ -329,6 +414,20 @@ impl Parser<'_> {
                     return Some((String::from("@room"), q.end));
                 }
                 let (inner, end) = self.target_at(k, cue)?;
+                // "a locker at the foot of each bunk", "a bin at the end of every bench": one
+                // at each of them.
+                let each = (j + 1..k).any(|x| matches!(self.word(x), "each" | "every"))
+                    || (k > 0 && matches!(self.word(k - 1), "each" | "every"));
+                if each
+                    && !inner.starts_with('@')
+                    && let Some(Subject::Group(g)) = self.subject.clone()
+                    && g != inner
+                    && let Some(x) = self.draft.groups.iter_mut().find(|x| x.id == g)
+                    && x.count_rule.is_none()
+                {
+                    let per = x.count.unwrap_or(1.0).max(1.0);
+                    x.count_rule = Some(CountRule::EachOf { host: inner.clone(), per });
+                }
                 self.mark(j, end);
                 self.place_of = Some((kind, Some(inner.clone())));
                 return Some((inner, end));
@@ -486,6 +585,8 @@ impl Parser<'_> {
     }
 
     pub(super) fn apply(&mut self, subject: &Subject, cue: Cue, targets: Vec<String>) {
+        // A relation closes the "with" list: a later "it" is no longer its host.
+        self.with_it = None;
         // A cue whose target was a place ("on the edge of the table", "at the end of the
         // conveyor", "in the corners of the room") says something else.
         if let Some((place, of)) = self.place_of.take()
