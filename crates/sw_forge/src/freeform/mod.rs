@@ -269,6 +269,14 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
             "the synthesizer knows no object by these words (a catalog object, a shape, or a dimensioned part)",
         ));
     };
+    // "a lamp shade", "the leg of a table": the head of the noun phrase is a part of the
+    // object, not the object; the whole object is never made for it.
+    if let Some(part) = part_of_object(&words, at, n) {
+        return Err(unread(
+            &part,
+            "this names a part of an object, not the whole object: give the part's sizes to make it as a part",
+        ));
+    }
     tied.sort_by_key(Candidate::rank);
     // The first object of the name that honours every word; else the refusal of the first
     // one that knows the refused words (a part of it, a count of its feature), else the
@@ -285,6 +293,75 @@ pub fn read(prompt: &str) -> Result<Freeform, SynthError> {
         Some(r) => Err(r.error),
         None => Err(unread(prompt.trim(), "the synthesizer knows no object by these words")),
     }
+}
+
+/// Nouns that name a part of an object rather than an object ("shade", "leg", "lid").
+const PART_NOUNS: &[&str] = &[
+    "shade",
+    "leg",
+    "top",
+    "tabletop",
+    "shelf",
+    "lid",
+    "door",
+    "drawer",
+    "handle",
+    "knob",
+    "seat",
+    "backrest",
+    "armrest",
+    "arm",
+    "base",
+    "foot",
+    "wheel",
+    "blade",
+    "cap",
+    "cover",
+    "panel",
+    "frame",
+    "rail",
+    "spout",
+    "stem",
+    "bulb",
+    "cushion",
+    "hinge",
+    "tray",
+    "rung",
+    "slat",
+    "caster",
+    "castor",
+    "pedal",
+    "post",
+    "stretcher",
+    "apron",
+    "plinth",
+    "hood",
+    "strap",
+    "spoke",
+];
+
+/// The part a prompt names of the object found at `at` (`n` words): the noun right after
+/// the object's name ("lamp shade": the head of the compound) or before "of" the object
+/// ("the leg of a table").
+fn part_of_object(words: &[(String, usize, usize)], at: usize, n: usize) -> Option<String> {
+    let is_part = |w: &str| PART_NOUNS.contains(&crate::synth::text::fold(w).as_str());
+    if let Some((w, _, _)) = words.get(at + n)
+        && is_part(w)
+    {
+        return Some(format!("{} {w}", words[at..at + n].iter().map(|x| x.0.as_str()).collect::<Vec<_>>().join(" ")));
+    }
+    let mut k = at;
+    while k > 0 && matches!(words[k - 1].0.as_str(), "a" | "an" | "the" | "this" | "that") {
+        k -= 1;
+    }
+    if k >= 2 && words[k - 1].0 == "of" && is_part(&words[k - 2].0) {
+        return Some(format!(
+            "{} of {}",
+            words[k - 2].0,
+            words[at..at + n].iter().map(|x| x.0.as_str()).collect::<Vec<_>>().join(" ")
+        ));
+    }
+    None
 }
 
 /// Why an object of the prompt's name cannot be made as the prompt says.

@@ -14,6 +14,7 @@
 
 pub mod contradict;
 pub mod doc;
+pub mod family;
 pub mod lexicon;
 pub mod mention;
 pub mod model;
@@ -120,9 +121,43 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
     // would make of them.
     let takeoff = takeoff::Takeoff::read(&d);
     takeoff.contradictions().map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
-    let model = read::read(&d).map_err(|r| SynthError::Unread { phrase: r.phrase, reason: r.reason })?;
+    let model = match read::read(&d) {
+        Ok(m) => m,
+        // A named part family reads what the feature language could not: its template's
+        // parameters bound by role, checked against its own formulas.
+        Err(r) => match family::read(&d) {
+            Some(Ok((template, m))) => return Ok(finish(prompt, template, &m)),
+            // The feature language's words stay quoted; the family says what it lacks.
+            Some(Err(f)) => {
+                return Err(SynthError::Unread {
+                    phrase: r.phrase,
+                    reason: format!("{}; read as a part family (\"{}\"): {}", r.reason, f.phrase, f.reason),
+                });
+            }
+            None => return Err(SynthError::Unread { phrase: r.phrase, reason: r.reason }),
+        },
+    };
     // The second reading: what the words alone say the part measures.
     takeoff.check(&model).map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
+    // A named part family that reads every word the same sizes bound by their roles must
+    // agree with the feature language; where they differ, one of them misread the words.
+    if let Some(Ok((_, fm))) = family::read(&d) {
+        let (a, b) = (family::sorted(model.size()), family::sorted(fm.size()));
+        let agree = (0..3).all(|k| (a[k] - b[k]).abs() <= 0.005 * b[k].max(1.0))
+            && match (model.volume(), fm.volume()) {
+                (Some(x), Some(y)) => (x - y).abs() <= 0.005 * y.max(1.0),
+                _ => true,
+            };
+        if !agree {
+            return Err(SynthError::Unread {
+                phrase: prompt.chars().take(120).collect(),
+                reason: format!(
+                    "the part's family reads these sizes as {:.3?} mm, the feature language as {:.3?} mm: they disagree",
+                    b, a
+                ),
+            });
+        }
+    }
     Ok(finish(prompt, "features", &model))
 }
 

@@ -331,6 +331,16 @@ pub fn tokenize(text: &str) -> Vec<Token> {
                 {
                     // Put the fraction back as one number and read its unit again.
                     let value = v / d;
+                    // "3/8\"": the inch mark right after the fraction.
+                    if at(k) == Some('"') {
+                        toks.push(Token {
+                            kind: Tk::Num { v: value, unit: Some(25.4), pm, signed },
+                            start,
+                            end: pos(k + 1),
+                        });
+                        i = k + 1;
+                        continue;
+                    }
                     let mut e = k;
                     while at(e) == Some(' ') {
                         e += 1;
