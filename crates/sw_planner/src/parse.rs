@@ -148,6 +148,14 @@ pub(crate) struct Parser<'a> {
     /// The clause is about a place ("a clear path to the door"): its relations are the
     /// place's, not the subject's.
     in_place_clause: bool,
+    /// The robot whose verb of handling is being read ("a Panda sorts blocks from a bin
+    /// into trays"): every thing named up to the clause's end is its work, which it reaches.
+    working: Option<usize>,
+    /// The robot the sentence's last verb of handling was said of: a verb after a comma or
+    /// "and" ("…, placing them in a crate") goes on with its work.
+    last_worker: Option<usize>,
+    /// What robots handle, by robot: (robot, group), in the order named.
+    work: Vec<(usize, String)>,
 }
 
 /// A collective noun before a phrase: "a row of", "two rows of", "a stack of", "an aisle of".
@@ -195,6 +203,9 @@ impl<'a> Parser<'a> {
             support_taken: 0,
             taking_pieces: false,
             in_place_clause: false,
+            working: None,
+            last_worker: None,
+            work: Vec::new(),
             place_of: None,
             implicit_on: Vec::new(),
             place_counts: std::collections::HashMap::new(),
@@ -272,12 +283,16 @@ impl<'a> Parser<'a> {
                     continue;
                 }
                 TokenKind::Comma => {
+                    self.working = None;
                     self.used[i] = true;
                     i += 1;
                     continue;
                 }
                 _ => {}
             }
+            // Read on as before: the verb only opens the robot's work (a word that is also a
+            // noun, "a Panda, screws and a bin", stays a noun).
+            self.note_handling_verb(i);
             if let Some(next) = self.try_dims(i)? {
                 i = next;
                 continue;
@@ -410,6 +425,20 @@ impl<'a> Parser<'a> {
             i += 1;
         }
         self.end_sentence();
+        // A thing placed by the robot ("three fences around the robot") is where it stands,
+        // not what it works on, though its clause began with a verb of handling.
+        let placed_by = |g: &str, r: usize| {
+            let robot = format!("@robot:{r}");
+            self.draft.relations.iter().any(|(s, k)| s == g && k.targets().contains(&robot.as_str()))
+        };
+        let work: Vec<(usize, RelationKind)> = self
+            .work
+            .iter()
+            .filter(|(r, g)| !placed_by(g, *r))
+            .map(|(r, g)| (*r, RelationKind::Reach { target: g.clone() }))
+            .filter(|w| !self.draft.robot_relations.contains(w))
+            .collect();
+        self.draft.robot_relations.extend(work);
         if self.draft.robots.is_empty() {
             let robots = std::mem::take(&mut self.title_robots);
             self.draft.robots.extend(robots);
@@ -428,6 +457,8 @@ impl<'a> Parser<'a> {
     }
 
     fn end_sentence(&mut self) {
+        self.working = None;
+        self.last_worker = None;
         self.subject = None;
         self.in_place_clause = false;
         self.list.clear();
@@ -1054,11 +1085,58 @@ impl<'a> Parser<'a> {
             layers: None,
             accommodated: false,
         });
+        self.worked_on(&id);
         id
+    }
+
+    /// A verb of handling said of a robot ("a Panda sorts …", "a UR5e picking …", "…, and
+    /// places them …"): what the clause names from here on is the robot's work.
+    fn note_handling_verb(&mut self, i: usize) {
+        if !crate::phrase::is_handling_verb(self.word(i)) {
+            return;
+        }
+        // "the sorting", "two stacks": after an article, a possessive or a count the word is a
+        // noun ("a Panda that sorts": "that" is a relative pronoun here).
+        let prev = if i >= 1 { self.word(i - 1) } else { "" };
+        if i >= 1
+            && self.toks[i - 1].kind == TokenKind::Word
+            && (matches!(prev, "a" | "an" | "the" | "its" | "their" | "each" | "every" | "per")
+                || number_word(prev).is_some()
+                || prev.chars().all(|c| c.is_ascii_digit()))
+        {
+            return;
+        }
+        // A verb that is the first word of a known noun ("sorting table", "loading dock",
+        // "pick station") is that noun.
+        if self.lookup(i, crate::lexicon::is_head).is_some() {
+            return;
+        }
+        let robot = match &self.subject {
+            Some(Subject::Robot(r)) => Some(*r),
+            _ => None,
+        };
+        let continues =
+            i >= 1 && (self.toks[i - 1].kind == TokenKind::Comma || matches!(self.word(i - 1), "and" | "then" | "to"));
+        let Some(r) = robot.or(self.last_worker.filter(|_| continues)) else {
+            return;
+        };
+        self.working = Some(r);
+        self.last_worker = Some(r);
+    }
+
+    /// A thing named in a robot's clause of handling is its work: the robot reaches it.
+    fn worked_on(&mut self, id: &str) {
+        let Some(r) = self.working else { return };
+        if !self.work.iter().any(|(x, g)| *x == r && g == id) {
+            self.work.push((r, id.to_string()));
+        }
     }
 
     /// Makes an already introduced group or robot the subject again ("The racks …").
     fn bind(&mut self, s: Subject) {
+        if let Subject::Group(g) = &s {
+            self.worked_on(&g.clone());
+        }
         self.subject = Some(s.clone());
         self.mentions.push(s.clone());
         self.list.push(s);

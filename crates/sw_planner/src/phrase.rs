@@ -99,6 +99,79 @@ fn context_parts() -> &'static [&'static str] {
     C.get_or_init(|| rows(crate::tables::PARTS).map(|r| r[0]).collect())
 }
 
+/// Verbs of handling things, by their base form: what a robot does to its work ("sorts",
+/// "picking", "loads", "tends"). Never a word that is as often a noun or adjective before
+/// a noun ("hand", "empty", "clean").
+const HANDLING_VERBS: &[&str] = &[
+    "pick",
+    "place",
+    "put",
+    "sort",
+    "load",
+    "unload",
+    "pack",
+    "unpack",
+    "stack",
+    "unstack",
+    "palletise",
+    "palletize",
+    "depalletise",
+    "depalletize",
+    "feed",
+    "tend",
+    "transfer",
+    "insert",
+    "grasp",
+    "grab",
+    "fetch",
+    "retrieve",
+    "collect",
+    "gather",
+    "restock",
+    "handle",
+    "inspect",
+    "weld",
+    "assemble",
+    "move",
+    "serve",
+    "deliver",
+    "tidy",
+    "arrange",
+    "lift",
+    "push",
+    "pour",
+    "wipe",
+    "polish",
+    "deburr",
+    "screw",
+    "take",
+    "bring",
+    "carry",
+    "stir",
+    "chop",
+    "fold",
+    "shelve",
+    "drop",
+    "deposit",
+];
+
+/// Whether `w` is a verb of handling in any of its forms but the past participle ("placed
+/// on a table" says where a robot stands, not what it does): base, -s / -es / -ies, -ing.
+pub(crate) fn is_handling_verb(w: &str) -> bool {
+    let known = |stem: &str| HANDLING_VERBS.contains(&stem);
+    if known(w) {
+        return true;
+    }
+    if let Some(stem) = w.strip_suffix("ing").filter(|s| s.len() >= 2) {
+        let doubled = stem.len() >= 3 && stem.as_bytes()[stem.len() - 1] == stem.as_bytes()[stem.len() - 2];
+        return known(stem) || known(&format!("{stem}e")) || (doubled && known(&stem[..stem.len() - 1]));
+    }
+    if let Some(stem) = w.strip_suffix("ies") {
+        return known(&format!("{stem}y"));
+    }
+    w.strip_suffix("es").is_some_and(known) || w.strip_suffix('s').is_some_and(known)
+}
+
 /// Adverbs and particles that end a phrase and are never its noun: "4 m apart", "a mirror
 /// above", "the lid off".
 pub(crate) fn is_adverb_particle(w: &str) -> bool {

@@ -1619,3 +1619,57 @@ fn parts_measures_brackets_and_coordinated_targets_are_read_by_structure() {
     assert_eq!(group(&ok("3 bunk beds along one wall, a locker at the foot of each bunk"), "locker").count, 3);
     assert_eq!(group(&ok("4 benches in 2 rows of 2, a sink at the end of each row"), "sink").count, 2);
 }
+
+#[test]
+fn what_a_robot_handles_is_its_work() {
+    // A verb of handling said of a robot, in any form, makes everything its clause names
+    // the robot's work: it reaches each of them.
+    for prompt in [
+        "a Panda sorts coloured blocks from a bin into three trays",
+        "a panda that sorts blocks from a bin into 3 trays",
+        "a Panda picking blocks out of a bin and placing them in three trays",
+        "A PANDA WHICH IS LOADING BLOCKS FROM A BIN INTO THREE TRAYS",
+    ] {
+        let p = ok(prompt);
+        let panda = robot(&p, "panda").id.clone();
+        for cat in ["cube", "bin", "tray"] {
+            assert_rel(&p, &panda, RelationKind::Reach { target: group(&p, cat).id.clone() });
+        }
+    }
+    // The clause ends at a comma or a full stop: what comes after is not its work, unless
+    // another verb of handling goes on with it.
+    let p = ok("a UR10e stacks boxes on a pallet, a conveyor by the wall");
+    let arm = robot(&p, "ur10e").id.clone();
+    assert_rel(&p, &arm, RelationKind::Reach { target: group(&p, "pallet").id.clone() });
+    let conveyor = group(&p, "conveyor").id.clone();
+    assert!(
+        !p.relations.iter().any(|r| r.subject == arm && r.kind == RelationKind::Reach { target: conveyor.clone() }),
+        "{}",
+        dump(&p)
+    );
+    let p = ok("a UR10e picks boxes off a conveyor, then stacks them on a pallet. A chair by the door.");
+    let arm = robot(&p, "ur10e").id.clone();
+    for cat in ["conveyor", "pallet"] {
+        assert_rel(&p, &arm, RelationKind::Reach { target: group(&p, cat).id.clone() });
+    }
+    let chair = group(&p, "chair").id.clone();
+    assert!(
+        !p.relations.iter().any(|r| r.subject == arm && r.kind == RelationKind::Reach { target: chair.clone() }),
+        "{}",
+        dump(&p)
+    );
+    // What is placed by the robot is not its work, though its clause began with a verb.
+    let p = ok("a UR10 on a pedestal tending a CNC machine and three safety fences around the robot");
+    let arm = robot(&p, "ur10e").id.clone();
+    assert_rel(&p, &arm, RelationKind::Reach { target: group(&p, "machine").id.clone() });
+    let fence = group(&p, "safety_fence").id.clone();
+    assert!(
+        !p.relations.iter().any(|r| r.subject == arm && r.kind == RelationKind::Reach { target: fence.clone() }),
+        "{}",
+        dump(&p)
+    );
+    // "placed" says where the robot is, not what it does: the plan is the one without it.
+    let placed = ok("a Panda placed on a table next to a sorting table");
+    let plain = ok("a Panda on a table next to a sorting table");
+    assert_eq!(placed.relations, plain.relations, "{}", dump(&placed));
+}

@@ -354,6 +354,16 @@ impl Parser<'_> {
     /// robot the phrase refers to, "it"/"them", "the cell", or — when nothing was
     /// introduced — a new group (noted when the phrase was definite).
     fn target_at(&mut self, j: usize, cue: &Cue) -> Option<(String, usize)> {
+        let found = self.target_at_inner(j, cue);
+        if let Some((t, _)) = &found
+            && !t.starts_with('@')
+        {
+            self.worked_on(&t.clone());
+        }
+        found
+    }
+
+    fn target_at_inner(&mut self, j: usize, cue: &Cue) -> Option<(String, usize)> {
         let w = self.word(j);
         if matches!(w, "it" | "them" | "this" | "that" | "these" | "those" | "one" | "each" | "both" | "all") {
             // "each with a stool and a vice on it": it is each host.
@@ -413,7 +423,7 @@ impl Parser<'_> {
                     self.place_of = Some((kind, None));
                     return Some((String::from("@room"), q.end));
                 }
-                let (inner, end) = self.target_at(k, cue)?;
+                let (inner, end) = self.target_at_inner(k, cue)?;
                 // "a locker at the foot of each bunk", "a bin at the end of every bench": one
                 // at each of them.
                 let each = (j + 1..k).any(|x| matches!(self.word(x), "each" | "every"))
