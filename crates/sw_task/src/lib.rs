@@ -93,6 +93,10 @@ pub fn split_prompt(prompt: &str) -> Option<SplitPrompt> {
     let instruction = instruction.to_string();
     let head = prompt[..cut].trim_start_matches(|c: char| c.is_whitespace() || words::breaks_clause(c));
     let mut scene = trim_scene_tail(head);
+    // A robot the instruction names as its instrument ("… with the Franka", "using a
+    // Kinova Gen3") is the scene's too.
+    let mut robots = robots;
+    robots.extend(robots_named(&instruction));
     for r in robots {
         let named = words::tokens(&scene).iter().any(|w| words::tokens(&r).contains(w));
         if !named {
@@ -131,6 +135,28 @@ fn trim_scene_tail(scene: &str) -> String {
 
 /// Bracketed groups that name a robot, taken out of the prompt: the prompt without them
 /// and the robots' words ("UR5e" from "[robot: UR5e]").
+/// The robot models a text names by model ("Franka", "Kinova Gen3", "UR5e"), each with a
+/// model number that follows its name; a bare "robot" or "arm" names none.
+fn robots_named(text: &str) -> Vec<String> {
+    let t = words::tokens(text);
+    let mut out = Vec::new();
+    for (i, w) in t.iter().enumerate() {
+        if matches!(w.as_str(), "robot" | "robots" | "arm" | "arms")
+            || !matches!(sw_planner::vocab::noun(w), sw_planner::vocab::Noun::Robot { .. })
+        {
+            continue;
+        }
+        let mut name = w.clone();
+        if let Some(next) = t.get(i + 1).filter(|n| n.chars().any(|c| c.is_ascii_digit())) {
+            name = format!("{name} {next}");
+        }
+        if !out.contains(&name) {
+            out.push(name);
+        }
+    }
+    out
+}
+
 fn lift_bracketed_robots(prompt: &str) -> (String, Vec<String>) {
     let mut out = String::with_capacity(prompt.len());
     let mut robots = Vec::new();
@@ -283,6 +309,16 @@ mod tests {
             assert!(s.scene.to_lowercase().contains("kinova gen3"), "{prompt}: {}", s.scene);
             assert!(!s.scene.contains(['(', '[']), "{prompt}: {}", s.scene);
         }
+        // A robot the instruction does the task with is the scene's too.
+        for (prompt, robot) in [
+            ("Lift the cube 10 cm off the table with the Franka", "franka"),
+            ("pick the yellow block up off the table and put it on the tray, using a kinova gen3", "kinova gen3"),
+        ] {
+            let s = split_prompt(prompt).unwrap_or_else(|| panic!("{prompt}"));
+            assert!(s.scene.to_lowercase().contains(robot), "{prompt}: {}", s.scene);
+        }
+        let s = split_prompt("a Panda on a table with a mug. Lift the mug with the robot").unwrap_or_else(|| panic!());
+        assert_eq!(s.scene, "a Panda on a table with a mug");
         // Brackets that name no robot stay in the scene's words.
         let s = split_prompt("a bench with a tin (empty) and a crate. Drop the tin into the crate")
             .unwrap_or_else(|| panic!());
