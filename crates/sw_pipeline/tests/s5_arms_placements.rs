@@ -10,110 +10,20 @@
 //! verified (compiled and settled) in MuJoCo, and judged by the independent judge
 //! (`bench/relations/judge.py`, reading the written `scene.xml` only) over three seeds.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+mod common;
 
+use common::{Expect, judge, plan};
 use serde_json::{Value, json};
 use sw_pipeline::{Options, generate_from_plan};
-use sw_plan::{ScenePlan, Status};
+use sw_plan::ScenePlan;
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// A plan: room kind and size (fixed), groups (id, category, count), relations, robots.
-fn plan(room: &str, size: [f64; 3], groups: &[(&str, &str, u32)], relations: Value, robots: Value) -> ScenePlan {
-    let objects: Vec<Value> = groups
-        .iter()
-        .map(|(id, cat, n)| json!({"id": id, "category": cat, "phrase": id.replace('_', " "), "count": n}))
-        .collect();
-    let v = json!({
-        "schema_version": sw_plan::SCHEMA_VERSION,
-        "prompt": "a hand-built plan",
-        "room": {"kind": room, "size": {"width": size[0], "depth": size[1], "height": size[2]}, "size_fixed": true, "door": "south"},
-        "objects": objects,
-        "relations": relations,
-        "robots": robots,
-        "rules_profile": "general",
-        "understanding": {"not_understood": [], "approximated": []}
-    });
-    serde_json::from_value(v).unwrap()
-}
-
-/// The judge's verdicts on (package, line) pairs.
-fn judge(cases: &[(PathBuf, Value)]) -> Vec<Value> {
-    let dir = tempfile::tempdir().unwrap();
-    let batch = dir.path().join("batch.jsonl");
-    let text: Vec<String> =
-        cases.iter().map(|(p, l)| json!({"package": p.to_string_lossy(), "line": l}).to_string()).collect();
-    std::fs::write(&batch, text.join("\n")).unwrap();
-    let py = root().join(".cache/venv/bin/python");
-    assert!(py.is_file(), "the judge's venv is missing at {}: run scripts/setup.sh --tests", py.display());
-    let out = Command::new(py)
-        .arg(root().join("bench/relations/judge.py"))
-        .arg("--batch")
-        .arg(&batch)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "judge failed: {}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8(out.stdout).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect()
-}
-
-/// Generates `plan` on three seeds (each verified in MuJoCo) and judges each package
-/// against `line`. The report's own relation checks must hold but for those whose phrase
-/// names one of `unmet` (what the scene cannot hold, said in a warning); each warning
-/// code in `warns` must be in every report. Panics with every failure.
+/// Generates `plan` on three seeds and judges each package against `line`. The report's
+/// own relation checks must hold but for those whose phrase names one of `unmet` (what the
+/// scene cannot hold, said in a warning); each warning code in `warns` must be in every
+/// report. Panics with every failure.
 fn check(name: &str, plan: &ScenePlan, line: Value, unmet: &[&str], warns: &[&str]) {
-    let dir = tempfile::tempdir().unwrap();
-    // S5_ARMS_KEEP=DIR keeps the packages there (to render and look at them).
-    let keep = std::env::var_os("S5_ARMS_KEEP").map(PathBuf::from);
-    let base = keep.as_deref().unwrap_or(dir.path());
-    let mut cases = Vec::new();
-    let mut failures = Vec::new();
-    for seed in [1u64, 2, 3] {
-        let pkg = base.join(format!("{name}-{seed}"));
-        let _ = std::fs::remove_dir_all(&pkg);
-        let o = generate_from_plan(plan.clone(), &pkg, &Options { seed, ..Options::default() }, &mut |_| {}).unwrap();
-        let v = o.report.verification.as_ref().unwrap();
-        if o.report.status != Status::Verified {
-            failures.push(format!("{name} seed {seed}: not verified: {:?}", v.failures));
-        }
-        for c in o.report.relations.iter().filter(|c| !c.held) {
-            if !unmet.iter().any(|u| c.phrase.contains(u)) {
-                failures.push(format!("{name} seed {seed}: the report: {} not held: {:?}", c.phrase, c.reason));
-            }
-        }
-        for w in warns {
-            if !o.report.warnings.iter().any(|x| x.code == *w) {
-                failures.push(format!("{name} seed {seed}: no {w} warning in {:?}", o.report.warnings));
-            }
-        }
-        if !o.report.left_out.is_empty() {
-            failures.push(format!("{name} seed {seed}: left out {:?}", o.report.left_out));
-        }
-        cases.push((pkg, line.clone()));
-    }
-    for ((pkg, _), v) in cases.iter().zip(judge(&cases)) {
-        let id = pkg.file_name().unwrap().to_string_lossy().to_string();
-        if let Some(e) = v.get("error") {
-            failures.push(format!("{id}: judge error {e}"));
-            continue;
-        }
-        if v["counts"]["held"] != true {
-            failures.push(format!("{id}: counts {}", v["counts"]));
-        }
-        for r in v["relations"].as_array().unwrap() {
-            if r["held"] != true {
-                failures.push(format!(
-                    "{id}: judge: {} {} {}: {} {}",
-                    r["subject"], r["relation"], r["target"], r["why"], r["measured"]
-                ));
-            }
-        }
-    }
-    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+    let f = common::run(name, plan, &line, &[1, 2, 3], "S5_ARMS_KEEP", Expect { unmet, warns, sizes_and_room: false });
+    assert!(f.is_empty(), "{} failures:\n{}", f.len(), f.join("\n"));
 }
 
 fn panda_on_table() -> Value {
