@@ -250,7 +250,9 @@ fn screw_sizes_read_as_clearance_holes_or_tap_drills() {
 
 #[test]
 fn a_part_of_a_catalog_object_is_never_the_whole_object() {
-    for p in ["a lamp shade", "a table leg", "a chair back", "a mug handle"] {
+    // ("a lamp shade" is a catalog category of its own since the catalog grew: a shade is
+    // the part asked for, and the catalog makes it.)
+    for p in ["a sofa leg", "a table leg", "a chair back", "a mug handle"] {
         match sw_forge::freeform::offline(p) {
             Err(SynthError::Unread { reason, .. }) => assert!(reason.contains("part of"), "{p}: {reason}"),
             Err(e) => panic!("{p}: {e}"),
