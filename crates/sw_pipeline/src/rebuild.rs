@@ -169,7 +169,7 @@ mod tests {
         let prompts = [
             "an office with a desk and a filing cabinet under the desk",
             "a lab with a table and a fridge under the table",
-            "a warehouse with a shelving rack full of boxes",
+            "a warehouse with a bookshelf full of crates",
             "a warehouse with a stack of six bins",
         ];
         for (i, p) in prompts.iter().enumerate() {
