@@ -495,6 +495,17 @@ async fn catalog_categories_have_pictures() {
     assert_ne!(shelf, mug);
     let (s, _, body) = fetch(&a, "/api/catalog/no_such_thing/picture.png", None, &[]).await;
     assert_eq!(s, StatusCode::NOT_FOUND, "{}", String::from_utf8_lossy(&body));
+    // Hostile or malformed names are a plain 404, never a file or a crash.
+    let long = format!("/api/catalog/{}/picture.png", "x".repeat(5000));
+    for uri in [
+        "/api/catalog/..%2F..%2Fetc%2Fpasswd/picture.png",
+        "/api/catalog/%00/picture.png",
+        "/api/catalog/mug%20/picture.png",
+        long.as_str(),
+    ] {
+        let (s, _, _) = fetch(&a, uri, None, &[]).await;
+        assert_eq!(s, StatusCode::NOT_FOUND, "{}", &uri[..uri.len().min(60)]);
+    }
     // A sample across the whole catalog draws (every category is built at seed 0).
     let all = sw_catalog::categories();
     for c in all.iter().step_by(37) {
