@@ -34,6 +34,9 @@ pub(crate) enum Cue {
     /// "on opposite walls", "along both long walls".
     OppositeWalls {
         long: bool,
+        /// "each long wall", "both side walls", "either wall": one of the thing per wall
+        /// when the thing is said once ("one bench along each long wall" is two benches).
+        per_wall: bool,
     },
     /// "in the corners", "in each corner", "in two corners": no two in one corner; the
     /// number of corners when said ("each" is four).
@@ -514,8 +517,10 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
         // "two walls", "both long walls", "two of the walls", "opposite walls".
         let mut two = false;
         let mut k = i + n;
-        while toks.get(k).is_some_and(|w| matches!(w.norm.as_str(), "the" | "two" | "both" | "of" | "opposite")) {
-            two |= matches!(toks[k].norm.as_str(), "two" | "both" | "opposite");
+        while toks.get(k).is_some_and(|w| {
+            matches!(w.norm.as_str(), "the" | "two" | "both" | "of" | "opposite" | "each" | "every" | "either")
+        }) {
+            two |= matches!(toks[k].norm.as_str(), "two" | "both" | "opposite" | "each" | "every" | "either");
             k += 1;
         }
         while let Some(d) = toks.get(j).and_then(|w| wall_word(&w.norm)) {
@@ -531,10 +536,14 @@ pub(crate) fn cue_at(toks: &[Token], i: usize) -> Option<(Cue, usize)> {
             while toks.get(e).is_some_and(|w| matches!(w.norm.as_str(), "long" | "short" | "side" | "outer")) {
                 e += 1;
             }
-            if toks.get(e).is_some_and(|w| w.norm == "walls") {
-                let said = |w: &str| toks[i + n..e].iter().any(|t| t.norm == w);
-                if said("opposite") || said("both") {
-                    return Some((Cue::OppositeWalls { long: said("long") }, e + 1 - i));
+            let said = |w: &str| toks[i + n..e].iter().any(|t| t.norm == w);
+            // "each long wall", "either side wall": the singular after a distributive.
+            let each = said("each") || said("every") || said("either");
+            let long = said("long") || said("short") || said("side");
+            if toks.get(e).is_some_and(|w| w.norm == "walls" || (each && long && w.norm == "wall")) {
+                if said("opposite") || said("both") || each {
+                    let per_wall = each || said("both");
+                    return Some((Cue::OppositeWalls { long: said("long"), per_wall }, e + 1 - i));
                 }
                 return Some((Cue::TwoWalls, e + 1 - i));
             }

@@ -854,6 +854,11 @@ impl<'a> Parser<'a> {
                     self.bind(Subject::Group(g));
                     return;
                 }
+                // "4 tables and 7 chairs, tables by the window": the same noun again, bare.
+                if !possessed && let Some(g) = self.bare_repeat(start, &p, |g| g.category == Some(cat)) {
+                    self.bind(Subject::Group(g));
+                    return;
+                }
                 let mut explicit = p.explicit;
                 if let Some((d, t, end)) = dims_here {
                     if end == start || end + 1 == start {
@@ -890,6 +895,10 @@ impl<'a> Parser<'a> {
                     self.bind(Subject::Group(g));
                     return;
                 }
+                if let Some(g) = self.bare_repeat(start, &p, |g| g.category.is_none() && g.label == label) {
+                    self.bind(Subject::Group(g));
+                    return;
+                }
                 let mut explicit = p.explicit;
                 if let Some((d, t, end)) = dims_here {
                     if end == start || end + 1 == start {
@@ -904,6 +913,59 @@ impl<'a> Parser<'a> {
             Head::Known(_) => {}
             Head::Place(kind) => self.take_place(&p, kind, start),
         }
+    }
+
+    /// A bare noun (no determiner, count or modifier of its own) naming a group already
+    /// introduced refers to it, as "the" would: "a tray, tray on a low table", "4 tables
+    /// and 7 chairs, tables by the window". Terse lists drop articles, not nouns: a second
+    /// group of the same thing is said with a count, "another", a colour or a modifier
+    /// ("red and blue blocks", "an empty tote"), and the number must agree ("a box …,
+    /// boxes on the shelf" are more boxes). Another noun for the same category is another
+    /// thing ("milk, orange juice" are two cartons).
+    fn bare_repeat(&self, start: usize, p: &Phrase, same: impl Fn(&GroupDraft) -> bool) -> Option<String> {
+        let plain = p.count.is_none()
+            && p.quantity.is_none()
+            && p.color.is_none()
+            && p.sizes.is_empty()
+            && p.explicit.is_empty()
+            && p.descriptors.is_empty()
+            && p.room_modifier.is_none();
+        let determiner = |w: &str| {
+            matches!(
+                w,
+                "a" | "an"
+                    | "another"
+                    | "one"
+                    | "other"
+                    | "some"
+                    | "any"
+                    | "more"
+                    | "extra"
+                    | "new"
+                    | "second"
+                    | "third"
+                    | "spare"
+                    | "different"
+                    | "separate"
+                    | "no"
+                    | "of"
+            ) || number_word(w).is_some()
+        };
+        // The words just before the phrase that it did not take ("an empty crate").
+        let before = (start.saturating_sub(2)..start)
+            .rev()
+            .map_while(|k| (self.toks[k].kind == TokenKind::Word).then(|| self.word(k)))
+            .take_while(|w| !matches!(*w, "and" | "or" | "with" | "by" | "on" | "in" | "at" | "to"))
+            .any(determiner);
+        if !plain || determiner(self.word(start)) || before {
+            return None;
+        }
+        // The same noun, not another noun for the same category ("tomato sauce, ketchup" are
+        // two bottles).
+        let head = |t: &str| t.split_whitespace().last().map(|w| singular(&w.to_lowercase())).unwrap_or_default();
+        let g = self.draft.groups.iter().rev().find(|g| same(g) && head(&g.phrase) == head(&p.text))?;
+        let group_plural = g.plural || g.count.is_some_and(|c| c > 1.0);
+        (group_plural == p.plural).then(|| g.id.clone())
     }
 
     /// A place where an object phrase was expected ("a clear path to the door", "the

@@ -1673,3 +1673,51 @@ fn what_a_robot_handles_is_its_work() {
     let plain = ok("a Panda on a table next to a sorting table");
     assert_eq!(placed.relations, plain.relations, "{}", dump(&placed));
 }
+
+/// A bare noun repeated (no article, count or modifier of its own) refers to the group the
+/// prompt already introduced, as "the" would; a count, "another", an article with a
+/// modifier, a colour or a change of number still makes a group of its own.
+#[test]
+fn a_bare_repeated_noun_refers_to_the_group_already_named() {
+    // Terse lists drop the article, not the thing.
+    let p = ok("a lamp beside a crate, crate against the wall");
+    assert_eq!(group(&p, "crate").count, 1, "{}", dump(&p));
+    assert_rel(&p, "crate", RelationKind::AgainstWall { wall: None });
+    let p = ok("3 desks and 5 stools in the office, stools by the window");
+    assert_eq!(group(&p, "stool").count, 5, "{}", dump(&p));
+    assert_eq!(group(&p, "desk").count, 3, "{}", dump(&p));
+    // An imperative names the thing, the scene after the dash sets it out: one mug.
+    let p = ok("put the spoon in the mug - mug on a table, spoon beside it");
+    assert_eq!(group(&p, "mug").count, 1, "{}", dump(&p));
+    assert_rel(&p, "mug", on("table"));
+    // Second groups said as such stay two.
+    let p = ok("a crate by the door and another crate by the shelf");
+    let crates: u32 = p.objects.iter().filter(|o| o.category == "crate").map(|o| o.count).sum();
+    assert_eq!(crates, 2, "{}", dump(&p));
+    let p = ok("a crate on a pallet, an empty crate on the floor");
+    let crates: u32 = p.objects.iter().filter(|o| o.category == "crate").map(|o| o.count).sum();
+    assert_eq!(crates, 2, "{}", dump(&p));
+    let p = ok("red blocks on a tray, blue blocks beside the tray");
+    assert_eq!(p.objects.iter().filter(|o| o.category == "cube").count(), 2, "{}", dump(&p));
+    // Two nouns for one category are two things.
+    let p = ok("a tray with mustard, ketchup and butter on it");
+    let bottles: u32 = p.objects.iter().filter(|o| o.category == "condiment_bottle").map(|o| o.count).sum();
+    assert_eq!(bottles, 2, "{}", dump(&p));
+    // A singular, then a bare plural: more of them, not the same one.
+    let p = ok("a crate on the table, crates on the shelf");
+    assert_eq!(p.objects.iter().filter(|o| o.category == "crate").count(), 2, "{}", dump(&p));
+}
+
+/// A thing said once along each of two walls ("each long wall", "both side walls") is one
+/// per wall, on opposite walls; a plural keeps its count.
+#[test]
+fn one_thing_along_each_of_two_walls_is_one_per_wall() {
+    let p = ok("a workshop with one cabinet along each long wall");
+    assert_eq!(group(&p, "cabinet").count, 2, "{}", dump(&p));
+    assert_rel(&p, "cabinet", RelationKind::OnOppositeWalls { long: true });
+    let p = ok("a shed with a shelf against both side walls");
+    assert_eq!(group(&p, "shelf").count, 2, "{}", dump(&p));
+    let p = ok("a store room with 6 crates along both long walls");
+    assert_eq!(group(&p, "crate").count, 6, "{}", dump(&p));
+    assert_rel(&p, "crate", RelationKind::OnOppositeWalls { long: true });
+}

@@ -727,7 +727,19 @@ impl Parser<'_> {
                     (Cue::Door, _) => RelationKind::NearDoor,
                     (Cue::Wall(w), _) => RelationKind::AgainstWall { wall: w },
                     (Cue::TwoWalls, _) => RelationKind::OnTwoWalls,
-                    (Cue::OppositeWalls { long }, _) => RelationKind::OnOppositeWalls { long },
+                    (Cue::OppositeWalls { long, per_wall }, _) => {
+                        // "one bench along each long wall": one on each of the two.
+                        if per_wall
+                            && let Some(g) = self.draft.groups.iter_mut().find(|x| x.id == subject)
+                            && g.count_rule.is_none()
+                            && !g.plural
+                            && g.count.is_some_and(|c| c <= 1.0)
+                        {
+                            g.count = Some(2.0);
+                            g.plural = true;
+                        }
+                        RelationKind::OnOppositeWalls { long }
+                    }
                     (Cue::Corners(n), _) => {
                         // "a fan in each corner": one in every corner.
                         if let Some(n) = n
