@@ -659,7 +659,7 @@ fn build_egg(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const BREAD_LOAF: Category = def(
     "bread_loaf",
     "loaf of bread",
-    &["bread", "loaf", "baguette", "sourdough loaf", "sandwich loaf"],
+    &["bread", "loaf", "baguette", "baguet", "sourdough loaf", "sandwich loaf"],
     PACKAGE,
     "a baked loaf of bread with a domed golden crust",
     &["bread", "food", "baked good"],

@@ -371,6 +371,7 @@ pub(crate) const SPORTS_BALL: Category = def(
         "basketball",
         "volleyball",
         "beach ball",
+        "beachball",
         "rugby ball",
         "netball",
         "handball",

@@ -193,7 +193,7 @@ thing!(PALETTE: "palette", "palette", ["paint palette", "artist's palette", "pai
 thing!(VIDEOTAPE: "videotape", "videotape", ["vhs tape", "vhs", "video cassette", "video tape", "vhs cassette"], AUDIO,
     "a black video cassette with a label", ["media"], HandHeld @ OnSurface, true, [0.187, 0.103, 0.025], 500.0, pack(BLACKS, WHITE_C));
 // A 12-inch vinyl record in its sleeve, 31.5 cm square.
-thing!(VINYL_RECORD: "vinyl_record", "vinyl record", ["record", "phonograph record", "lp", "vinyl", "gramophone record", "record sleeve"], AUDIO,
+thing!(VINYL_RECORD: "vinyl_record", "vinyl record", ["phonograph record", "lp", "vinyl", "gramophone record", "record sleeve"], AUDIO,
     "a 12-inch vinyl record in a printed sleeve", ["media"], HandHeld @ OnSurface, true, [0.315, 0.315, 0.006], 700.0,
     flat(BRIGHTS, BLACK_C));
 // A razor blade, 4.3 × 2.2 cm.

@@ -51,10 +51,10 @@ const fn fruit(body: &'static [Rgba]) -> Look {
 thing!(QUICHE: "quiche", "quiche", ["quiche lorraine", "savoury tart", "savory tart", "flan"], FOOD, "a round golden quiche",
     ["pie", "food"], Food @ OnSurface, true, [0.22, 0.22, 0.04], 600.0, turned(DISC, GOLDEN));
 // A smoothie or milkshake in a 450 ml cup, 8 cm across, 15 cm tall.
-thing!(SMOOTHIE: "smoothie", "smoothie", ["milkshake", "milk shake", "shake", "frappe", "frappuccino", "smoothie cup"], FOOD,
+thing!(SMOOTHIE: "smoothie", "smoothie", ["milkshake", "milk shake", "frappe", "frappuccino", "smoothie cup"], FOOD,
     "a tall cup of smoothie", ["drink"], Food @ OnSurface, true, [0.08, 0.08, 0.15], 800.0, capped(TUMBLER, PINKS, 0.92, 0.98, WHITE_C));
 // A 200 g tub of hummus, 10 cm across, 6 cm tall.
-thing!(HUMMUS: "hummus", "hummus", ["houmous", "tub of hummus", "dip", "guacamole", "tzatziki", "salsa dip"], PACKED,
+thing!(HUMMUS: "hummus", "hummus", ["houmous", "tub of hummus", "guacamole", "tzatziki", "salsa dip"], PACKED,
     "a round tub of hummus with a lid", ["dip", "food"], Food @ OnSurface, true, [0.10, 0.10, 0.06], 700.0, capped(CAN, CREAM, 0.88, 0.98, [0.3, 0.55, 0.3, 1.0]));
 // A turnip, 8 cm.
 thing!(TURNIP: "turnip", "turnip", ["turnips", "swede", "rutabaga"], FOOD, "a round white and purple turnip with leaves",
@@ -130,7 +130,7 @@ thing!(HOOKAH: "hookah", "hookah", ["shisha", "shisha pipe", "water pipe", "hook
 
 // --- home, office and care ---------------------------------------------------------------
 // A matchbox, 5 × 3.5 × 1.5 cm.
-thing!(MATCHBOX: "matchbox", "matchbox", ["box of matches", "matches", "match box", "safety matches"], HOME, "a small box of safety matches",
+thing!(MATCHBOX: "matchbox", "matchbox", ["box of matches", "match box", "safety matches"], HOME, "a small box of safety matches",
     ["box"], HandHeld @ OnSurface, true, [0.05, 0.035, 0.015], 500.0, pack(&[[0.85, 0.2, 0.15, 1.0], [0.2, 0.35, 0.7, 1.0]], [0.35, 0.2, 0.12, 1.0]));
 // A bookmark, 5 × 16 cm.
 thing!(BOOKMARK: "bookmark", "bookmark", ["book mark", "page marker"], OFFICE, "a printed card bookmark", ["stationery"],
@@ -151,7 +151,7 @@ thing!(NAIL_FILE: "nail_file", "nail file", ["nailfile", "emery board", "nail bu
 thing!(SAFETY_PIN: "safety_pin", "safety pin", ["safety pins", "nappy pin", "diaper pin"], HOME, "a steel safety pin", ["fastener"],
     HandHeld @ OnSurface, true, [0.05, 0.01, 0.004], 2000.0, long(0.2, METAL, STEEL_C));
 // An asthma inhaler, 10 × 4 × 6 cm.
-thing!(INHALER: "inhaler", "inhaler", ["asthma inhaler", "puffer", "metered dose inhaler", "nebuliser inhaler"], &["clinic", "medical", "tabletop", "small", "graspable"],
+thing!(INHALER: "inhaler", "inhaler", ["asthma inhaler", "metered dose inhaler", "nebuliser inhaler"], &["clinic", "medical", "tabletop", "small", "graspable"],
     "an L-shaped asthma inhaler", ["medical device"], HandHeld @ OnSurface, true, [0.10, 0.04, 0.06], 400.0,
     pack(&[[0.3, 0.5, 0.8, 1.0], [0.8, 0.45, 0.2, 1.0]], [0.9, 0.9, 0.9, 1.0]));
 // A pager, 6 × 2 × 4.5 cm.
