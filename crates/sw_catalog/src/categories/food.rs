@@ -812,7 +812,6 @@ pub(crate) const JAR: Category = def(
         "spice jar",
         "cookie jar",
         "honey",
-        "jam",
         "jar of honey",
         "jar of jam",
         "pot of honey",

@@ -706,7 +706,6 @@ pub(crate) static ALL: &[Category] = &[
     public::PERSIMMON,
     public::LASAGNE,
     public::PATTY,
-    public::DATE_FRUIT,
     public::ECLAIR,
     public::FIG,
     public::JELLY_BEAN,

@@ -52,7 +52,7 @@ const CAGE: &[[f64; 2]] =
 
 // --- food and drink ------------------------------------------------------------------
 // Aerosol of whipped cream, 250 g: 6.5 cm across, 22 cm tall.
-thing!(WHIPPED_CREAM: "whipped_cream_can", "can of whipped cream", ["whipped cream", "squirty cream", "aerosol cream", "spray cream"], PACKED,
+thing!(WHIPPED_CREAM: "whipped_cream_can", "whipped cream", ["squirty cream", "aerosol cream", "spray cream", "can of whipped cream"], PACKED,
     "an aerosol can of whipped cream with a nozzle cap", ["can", "dairy", "food"], Food @ OnSurface, true, [0.065, 0.065, 0.22], 400.0,
     capped(CAN, WHITE, 0.85, 0.4, [0.85, 0.2, 0.25, 1.0]));
 // A pea pod, 8 cm long.
@@ -186,7 +186,7 @@ thing!(PASSPORT: "passport", "passport", ["passport book", "travel document"], O
 thing!(RECEIPT: "receipt", "receipt", ["till receipt", "sales receipt", "invoice"], OFFICE, "a strip of printed paper receipt",
     ["paper", "document"], HandHeld @ OnSurface, true, [0.08, 0.15, 0.005], 300.0, flat(WHITE, [0.8, 0.8, 0.8, 1.0]));
 // A painter's palette, 30 × 22 cm.
-thing!(PALETTE: "palette", "palette", ["paint palette", "artist's palette", "painter's palette", "mixing palette"], OFFICE,
+thing!(PALETTE: "paint_palette", "paint palette", ["artist's palette", "painter's palette", "mixing palette"], OFFICE,
     "a wooden painter's palette with dabs of paint", ["art supplies"], HandHeld @ OnSurface, true, [0.30, 0.22, 0.006], 600.0,
     flat(WOODS, [0.85, 0.25, 0.2, 1.0]));
 // A VHS cassette, 18.7 × 10.3 × 2.5 cm.
@@ -321,8 +321,8 @@ thing!(GIFT_WRAP: "gift_wrap", "gift wrap", ["wrapping paper", "roll of wrapping
 // A child's high chair: IKEA ANTILOP 58 × 62 × 90 cm, seat at about 58 cm.
 pub(crate) const HIGH_CHAIR: crate::Category = crate::Category {
     name: "high_chair",
-    display: "high chair",
-    synonyms: &["highchair", "baby high chair", "baby chair", "feeding chair", "child's high chair", "toddler chair"],
+    display: "highchair",
+    synonyms: &["baby high chair", "baby chair", "feeding chair", "child's high chair", "toddler chair"],
     tags: &["furniture", "seating", "home", "kitchen"],
     description: "a child's high chair: a seat with a backrest raised on long legs",
     is_a: &["chair", "seat", "furniture"],

@@ -3,7 +3,7 @@
 //! (`bench/vocab/public_lists/lvis_rare.txt`, `coverage.py`). Same parametric looks as the
 //! other public families; sizes from published product ranges, noted per line.
 
-use super::common::{BROWN, CREAM, FOOD, GLASS, GOLDEN, HOME, OFFICE, PACKED, TABLEWARE};
+use super::common::{CREAM, FOOD, GLASS, GOLDEN, HOME, OFFICE, PACKED, TABLEWARE};
 use super::{
     BLACK_C, BLACKS, BRIGHTS, CAN, DISC, DOME, JAR, Look, METAL, STEEL_C, TUMBLER, URN, WHITE, WHITE_C, WOOD_C, WOODS,
     like, thing,
@@ -68,9 +68,6 @@ thing!(LASAGNE: "lasagne", "lasagne", ["lasagna", "lasagne dish", "dish of lasag
 // A burger patty, 11 cm across, 1.5 cm thick.
 thing!(PATTY: "burger_patty", "burger patty", ["patty", "patties", "beef patty", "hamburger patty", "veggie patty"], FOOD,
     "a round flat burger patty", ["meat", "food"], Food @ OnSurface, true, [0.11, 0.11, 0.015], 1000.0, turned(DISC, DARK));
-// A date, 4 × 2 × 2 cm.
-thing!(DATE_FRUIT: "date_fruit", "date fruit", ["dates", "medjool date", "dried date"], FOOD, "a wrinkled brown date",
-    ["fruit", "dried fruit", "food"], Food @ OnSurface, true, [0.04, 0.02, 0.02], 1000.0, blob(BROWN));
 // An eclair, 13 × 4 × 3.5 cm.
 thing!(ECLAIR: "eclair", "eclair", ["éclair", "chocolate eclair", "cream eclair"], FOOD, "a long choux eclair with chocolate icing",
     ["pastry", "dessert", "food"], Food @ OnSurface, true, [0.13, 0.04, 0.035], 500.0, blob(GOLDEN));
