@@ -592,10 +592,13 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<Tried, Stop> {
         Err(e) => return fail(e.kind(), e.to_string(), family),
     };
     if !ep.success {
-        let why: Vec<String> = ep.verdicts.iter().filter_map(|v| v.why.clone()).collect();
         if sh.keep_failed {
             keep_failed(sh.dir.root(), p, seed, &pkg, &ep, spec);
         }
+        if let Some(e) = &ep.failure {
+            return fail(e.kind(), e.to_string(), family);
+        }
+        let why: Vec<String> = ep.verdicts.iter().filter_map(|v| v.why.clone()).collect();
         return fail("not_solved", why.join("; "), family);
     }
     if sh.stop.load(Ordering::SeqCst) {
@@ -624,8 +627,9 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<Tried, Stop> {
     commit(sh, p, seed, &work, &pkg, &task, &robot_model, ep, cams, image_stats, randomisation, started)
 }
 
-/// Moves an unsolved attempt's scene to DIR/failed/pPPPP-seedS/ with front and wrist videos
-/// (best effort: this is for looking at, never for the dataset).
+/// Moves an unsolved attempt's scene to DIR/failed/pPPPP-seedS/ with front and wrist videos,
+/// its controls (`actions.json`) and why it failed (`failure.txt` for a run stopped part
+/// way, `verdicts.json`) — best effort: this is for looking at, never for the dataset.
 fn keep_failed(root: &Path, p: usize, seed: u64, pkg: &Path, ep: &sw_expert::Episode, spec: &DemosSpec) {
     let dest = root.join(format!("failed/p{p:04}-seed{seed}"));
     let _ = std::fs::create_dir_all(root.join("failed"));
@@ -634,6 +638,12 @@ fn keep_failed(root: &Path, p: usize, seed: u64, pkg: &Path, ep: &sw_expert::Epi
         return;
     }
     let _ = sw_lerobot::write_atomically(&dest.join("verdicts.json"), &pretty(&ep.verdicts));
+    // The controls it ran, one row a frame from keyframe `home`: the attempt replays in
+    // plain MuJoCo to the moment it failed.
+    let _ = sw_lerobot::write_atomically(&dest.join("actions.json"), &pretty(&ep.recording.actions));
+    if let Some(e) = &ep.failure {
+        let _ = sw_lerobot::write_atomically(&dest.join("failure.txt"), &format!("{}: {e}\n", e.kind()));
+    }
     let mut cams = vec![("front".to_string(), "front".to_string())];
     cams.extend(ep.wrist_camera.clone().map(|c| ("wrist".to_string(), c)));
     let _ = render_videos(&dest, &dest, &cams, ep, spec);

@@ -162,8 +162,11 @@ impl<'a, 'm> Expert<'a, 'm> {
 
     fn goal(&mut self, g: &Predicate) -> Result<(), ExpertError> {
         self.run.holding = None;
+        if let Predicate::NavigateTo { target, within, .. } = g {
+            return crate::drive::navigate(self, target, *within);
+        }
         let Some(object) = g.subject() else {
-            return Err(ExpertError::Unsupported(format!("the expert does not drive mobile bases yet ({})", g.name())));
+            return Err(ExpertError::Unsupported(format!("the expert cannot do {} yet", g.name())));
         };
         if matches!(g, Predicate::Open { .. } | Predicate::Closed { .. }) {
             return Err(ExpertError::Unsupported(format!("the expert does not open or close things yet ({object})")));

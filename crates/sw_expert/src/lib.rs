@@ -15,6 +15,7 @@
 //! The expert links MuJoCo (as `sw_sim` does) because its IK, planning and execution are
 //! MuJoCo's kinematics, Jacobians, collision detection and dynamics.
 
+mod drive;
 mod episode_scene;
 mod expert;
 mod grasp;
@@ -119,36 +120,47 @@ pub struct Episode {
     pub recording: Recording,
     pub verdicts: Vec<GoalVerdict>,
     pub success: bool,
+    /// Why the run stopped before its end (a thing left the hand, no place was reachable
+    /// with it in the hand, ...): the attempt failed, and what was recorded up to there is
+    /// kept, to be looked at (never to be part of a dataset).
+    pub failure: Option<ExpertError>,
     pub stats: Stats,
     /// The camera beside the robot's tool, if it has one.
     pub wrist_camera: Option<String>,
 }
 
 /// Whether the expert can do every goal of `task`: it picks and places things (on, inside,
-/// stacked on, near, in a region, lifted to a pose); it does not yet open or close things or
-/// drive mobile bases.
+/// stacked on, near, in a region, lifted to a pose) with an arm, or drives a wheeled base
+/// to a place; it does not yet open or close things, nor drive and handle things in one
+/// task.
 pub fn supports(task: &Task) -> Result<(), ExpertError> {
+    let drives = task.goals.iter().filter(|g| matches!(g, sw_task::Predicate::NavigateTo { .. })).count();
+    if drives > 0 && drives < task.goals.len() {
+        return Err(ExpertError::Unsupported(
+            "the expert drives a base to a place or handles things with an arm, not both in one task yet".into(),
+        ));
+    }
     for g in &task.goals {
-        match g {
-            sw_task::Predicate::Open { object, .. } | sw_task::Predicate::Closed { object, .. } => {
-                return Err(ExpertError::Unsupported(format!(
-                    "the expert does not open or close things yet ({} {object})",
-                    g.name()
-                )));
-            }
-            sw_task::Predicate::NavigateTo { robot, target, .. } => {
-                return Err(ExpertError::Unsupported(format!(
-                    "the expert does not drive mobile bases yet ({robot} to {target})"
-                )));
-            }
-            _ => {}
+        if let sw_task::Predicate::Open { object, .. } | sw_task::Predicate::Closed { object, .. } = g {
+            return Err(ExpertError::Unsupported(format!(
+                "the expert does not open or close things yet ({} {object})",
+                g.name()
+            )));
         }
     }
     Ok(())
 }
 
+/// True when every goal of `task` is a drive to a place.
+fn drives(task: &Task) -> bool {
+    !task.goals.is_empty() && task.goals.iter().all(|g| matches!(g, sw_task::Predicate::NavigateTo { .. }))
+}
+
 /// Runs the expert on the episode scene at `scene` for `task`, done by robot instance
-/// `task.robot` of registry model `robot_model`.
+/// `task.robot` of registry model `robot_model`. An error is returned when the run cannot
+/// begin (the scene, the robot, a task the expert does not do, a start that already
+/// satisfies it); a run that stops part way is an unsuccessful episode with its
+/// [`Episode::failure`] and what it recorded.
 pub fn solve(scene: &Path, task: &Task, robot_model: &str, opts: &ExpertOptions) -> Result<Episode, ExpertError> {
     let started = Instant::now();
     supports(task)?;
@@ -161,10 +173,19 @@ pub fn solve(scene: &Path, task: &Task, robot_model: &str, opts: &ExpertOptions)
             "the scene's step {dt} s does not divide a frame of 1/{fps} s; write it with episode_scene"
         )));
     }
-    let rig = rig::Rig::new(&model, &task.robot, robot_model)?;
+    let drive = drives(task);
+    let rig =
+        if drive { rig::Rig::base(&model, &task.robot)? } else { rig::Rig::new(&model, &task.robot, robot_model)? };
     let reach = sw_robots::find(robot_model).map_or(0.85, |d| d.reach);
-    let tracked_names: Vec<String> = task.moved_objects().into_iter().map(str::to_string).collect();
-    let tracked: Vec<usize> = tracked_names.iter().filter_map(|n| rig.objects.get(n).map(|o| o.0)).collect();
+    let mut tracked_names: Vec<String> = task.moved_objects().into_iter().map(str::to_string).collect();
+    if drive {
+        // A drive's observation: the base's pose.
+        tracked_names.extend(model.id_to_name(MjtObjBase::mjOBJ_BODY, rig.base_body).map(str::to_string));
+    }
+    let tracked: Vec<usize> = tracked_names
+        .iter()
+        .filter_map(|n| rig.objects.get(n).map(|o| o.0).or_else(|| model.name_to_id(MjtObjBase::mjOBJ_BODY, n)))
+        .collect();
     let run = run::Runner::new(&model, fps, substeps as usize, tracked, opts.max_seconds)?;
     let initial = sw_task::judge(task, &rig.snapshot(&model, &run.data));
     if initial.iter().all(|v| v.held) {
@@ -182,9 +203,9 @@ pub fn solve(scene: &Path, task: &Task, robot_model: &str, opts: &ExpertOptions)
         stats: Stats::default(),
         reach,
     };
-    expert.solve(task)?;
+    let failure = expert.solve(task).err();
     let verdicts = sw_task::judge(task, &expert.snapshot());
-    let success = verdicts.iter().all(|v| v.held);
+    let success = failure.is_none() && verdicts.iter().all(|v| v.held);
     let mut stats = expert.stats;
     stats.seconds = started.elapsed().as_secs_f64();
     let action_names = (0..model.ffi().nu as usize)
@@ -207,6 +228,7 @@ pub fn solve(scene: &Path, task: &Task, robot_model: &str, opts: &ExpertOptions)
         recording: expert.run.rec,
         verdicts,
         success,
+        failure,
         stats,
         wrist_camera,
     })

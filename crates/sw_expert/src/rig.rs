@@ -180,6 +180,81 @@ impl Rig {
         })
     }
 
+    /// Resolves mobile base `robot` (an instance name) to drive it: its root body (a free
+    /// body on the floor) and the joints of its wheels driven by velocity servos, as the
+    /// rig's driven joints (the episode's state). It has no arm or gripper here: an arm it
+    /// carries holds its pose.
+    pub fn base(model: &MjModel, robot: &str) -> Result<Self, ExpertError> {
+        let nbody = model.ffi().nbody as usize;
+        let parent = model.body_parentid();
+        let prefix = format!("{robot}_");
+        let robot_body: Vec<bool> =
+            (0..nbody).map(|b| b > 0 && name(model, MjtObjBase::mjOBJ_BODY, b).starts_with(&prefix)).collect();
+        let free_root = (1..nbody).find(|&b| {
+            let adr = model.body_jntadr()[b];
+            robot_body[b] && parent[b] == 0 && adr >= 0 && model.jnt_type()[adr as usize] == MjtJoint::mjJNT_FREE
+        });
+        let base_body = free_root
+            .ok_or_else(|| ExpertError::Robot(format!("{robot} is not a free body on the floor; it cannot drive")))?;
+        let mut arm = Vec::new();
+        for a in 0..model.ffi().nu as usize {
+            if model.actuator_trntype()[a] != MjtTrn::mjTRN_JOINT {
+                continue;
+            }
+            let j = model.actuator_trnid()[a][0] as usize;
+            let bias = model.actuator_biasprm()[a];
+            // A velocity servo: force = kv (ctrl - qvel).
+            let velocity = model.actuator_biastype()[a] == MjtBias::mjBIAS_AFFINE && bias[1] == 0.0 && bias[2] < 0.0;
+            if !velocity || model.jnt_type()[j] != MjtJoint::mjJNT_HINGE || !robot_body[model.jnt_bodyid()[j] as usize]
+            {
+                continue;
+            }
+            let r = model.actuator_ctrlrange()[a];
+            arm.push(ArmJoint {
+                name: name(model, MjtObjBase::mjOBJ_JOINT, j),
+                qpos: model.jnt_qposadr()[j] as usize,
+                dof: model.jnt_dofadr()[j] as usize,
+                act: a,
+                lo: r[0],
+                hi: r[1],
+            });
+        }
+        if arm.len() < 2 {
+            return Err(ExpertError::Robot(format!(
+                "{robot} has no wheels driven by velocity servos; the expert drives wheeled bases"
+            )));
+        }
+        let mut objects = BTreeMap::new();
+        for b in 1..nbody {
+            let n = name(model, MjtObjBase::mjOBJ_BODY, b);
+            if parent[b] != 0 || robot_body[b] || n.is_empty() {
+                continue;
+            }
+            let adr = model.body_jntadr()[b];
+            let free = (adr >= 0 && model.jnt_type()[adr as usize] == MjtJoint::mjJNT_FREE)
+                .then(|| model.jnt_qposadr()[adr as usize] as usize);
+            objects.insert(n, (b, free));
+        }
+        let first = arm[0].act;
+        Ok(Rig {
+            robot: robot.to_string(),
+            arm,
+            grip_act: first,
+            grip_open: 0.0,
+            grip_closed: 0.0,
+            max_opening: 0.0,
+            finger_depth: 0.0,
+            finger_qpos: Vec::new(),
+            finger_names: Vec::new(),
+            tcp: 0,
+            robot_body,
+            hand_body: vec![false; nbody],
+            objects,
+            base_body,
+            wrist_camera: None,
+        })
+    }
+
     pub fn n(&self) -> usize {
         self.arm.len()
     }

@@ -128,6 +128,28 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     for r in &rels {
         specific.extend(candidates::for_relation(ctx, &b, &group, k, r));
     }
+    // Work of an arm on the floor or on a stand that already stands (see `order`): beside
+    // it, where it reaches — after the places its own relations name, which it then
+    // keeps only where the arm reaches too.
+    let arms: Vec<([f64; 3], f64)> = crate::reach::floor_arms_reaching(ctx, &group)
+        .into_iter()
+        .filter_map(|ri| Some((crate::reach::base_of(ctx, ri)?, ctx.input.robots[ri].reach)))
+        .collect();
+    if !arms.is_empty() {
+        for ri in crate::reach::floor_arms_reaching(ctx, &group) {
+            let g = ctx.input.robots[ri].group.clone();
+            specific.extend(candidates::beside(ctx, &b, &g, k));
+        }
+    }
+    let out_of_reach = |ctx: &Ctx<'_>, spot: &Spot| {
+        usize::from(!arms.iter().all(|(base, r)| crate::reach::can_work_at_pose(ctx, *base, *r, idx, spot)))
+    };
+    // Among poses that keep as much, the one nearest its arms (the solver's reach is
+    // conservative: a low free thing by a pedestal is often reached all the same).
+    let arm_distance = |spot: &Spot| {
+        let c = spot.apply(b.center());
+        arms.iter().map(|(base, _)| (c[0] - base[0]).hypot(c[1] - base[1])).fold(0.0, f64::max)
+    };
     // Under something with too little clear height below it (a stool under a bench with
     // a bottom shelf): said once, then beside it rather than anywhere.
     for r in &rels {
@@ -173,14 +195,17 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     };
     let mut found: Option<(Spot, usize)> = None;
     let mut best_partial: Option<(Spot, usize)> = None;
+    let mut best_distance = f64::INFINITY;
     for spot in &specific {
         let body = Body::object(&ctx.local[idx], spot);
         // Room kept for what is said to stand around it counts as one more thing to keep.
         let kept = !wants_room || room_kept(ctx, idx, spot, reserve, ends);
         let unmet = checks.iter().filter(|c| !c.holds(ctx, &body, group_size)).count()
             + usize::from(!host_ok(ctx, &body))
-            + usize::from(!kept);
-        if best_partial.as_ref().is_some_and(|(_, u)| *u <= unmet) && unmet > 0 {
+            + usize::from(!kept)
+            + out_of_reach(ctx, spot);
+        let d = arm_distance(spot);
+        if unmet > 0 && best_partial.as_ref().is_some_and(|(_, u)| *u < unmet || (*u == unmet && best_distance <= d)) {
             continue;
         }
         if !fits_floor_by(ctx, idx, spot, &ignore, &abut) {
@@ -197,6 +222,7 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
             break;
         }
         best_partial = Some((*spot, unmet));
+        best_distance = d;
     }
     drop(checks);
     // Under something whose floor space is taken: on a level under its top.
@@ -362,7 +388,9 @@ fn room_between(ctx: &Ctx<'_>, group: &str, k: usize, b: &Aabb) -> Vec<Spot> {
                 c.front.max(c.back).max(c.sides)
             })
         };
-        let width = width + zone(group) + zone(other);
+        // An arm between them is their operator: it stands in their working space and
+        // reaches both ("a UR5e between two conveyors"), so none is kept for it.
+        let width = if robot.is_some_and(|rb| rb.is_arm) { width } else { width + zone(group) + zone(other) };
         let gaps: Vec<f64> = [0.15, 0.3, 0.5, 0.8].iter().map(|e| width + e).collect();
         out.extend(candidates::apart(b, &others, &gaps));
     }
@@ -438,7 +466,9 @@ pub(crate) fn fits_floor(ctx: &Ctx<'_>, idx: usize, spot: &Spot, ignore_zones: &
 /// unit in a counter run touches the counter), never into them.
 pub(crate) fn fits_floor_by(ctx: &Ctx<'_>, idx: usize, spot: &Spot, ignore_zones: &[&str], abut: &[&str]) -> bool {
     let boxes = spot.boxes(&ctx.local[idx]);
-    if !ctx.space.fits(&boxes, FLOOR_GAP, abut, true, ignore_zones) {
+    let operators = crate::reach::operators(ctx, &ctx.input.objects[idx].group);
+    let ignore_zones: Vec<&str> = ignore_zones.iter().copied().chain(operators.iter().map(String::as_str)).collect();
+    if !ctx.space.fits(&boxes, FLOOR_GAP, abut, true, &ignore_zones) {
         return false;
     }
     if !abut.is_empty() && !ctx.space.fits(&boxes, 0.004, &[], false, &[]) {
@@ -456,7 +486,13 @@ pub(crate) fn fits_floor_by(ctx: &Ctx<'_>, idx: usize, spot: &Spot, ignore_zones
         })
         .flat_map(|t| ctx.instances(t).into_iter().map(|i| ctx.input.objects[i].name.clone()))
         .collect();
-    let except: Vec<&str> = abut.iter().copied().chain(over.iter().map(String::as_str)).collect();
+    // Nor for the arm that works at it and its stand (its operator stands there).
+    let except: Vec<&str> = abut
+        .iter()
+        .copied()
+        .chain(over.iter().map(String::as_str))
+        .chain(operators.iter().map(String::as_str))
+        .collect();
     zones(ctx, idx, spot).iter().all(|(z, _)| {
         ctx.space.inside(&Aabb { min: [z.min[0], z.min[1], 0.0], max: [z.max[0], z.max[1], 0.0] })
             && ctx.space.zone_is_clear(z, &except)

@@ -72,6 +72,39 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
             host_of(t).filter(|h| group_keys.contains(h)).into_iter().collect()
         }
     };
+    // An arm on the floor or on a stand of its own with work in several groups ("tends a
+    // mill and a lathe", "sorts blocks from a bin into trays"): it stands beside its
+    // first work (the anchor), and the rest of its work is placed after it, around it,
+    // where it reaches — not the arm after all of it, beside the first.
+    let split = |ri: usize| -> Option<(String, Vec<String>)> {
+        let r = &ctx.input.robots[ri];
+        if !r.is_arm || matches!(r.mount, RobotMount::Surface { .. }) || ctx.robots[ri].is_some() {
+            return None;
+        }
+        let rels = ctx.relations(&r.group);
+        let mut work: Vec<String> = Vec::new();
+        for rel in &rels {
+            if let RelationKind::Reach { target } = rel {
+                for k in resolve(target) {
+                    if !k.starts_with('@') && !work.contains(&k) {
+                        work.push(k);
+                    }
+                }
+            }
+        }
+        // What its other relations name (and the group it tends) stays a dependency.
+        let mut said: Vec<String> = r.near.iter().flat_map(|n| resolve(n)).collect();
+        for rel in rels.iter().filter(|k| !matches!(k, RelationKind::Reach { .. })) {
+            for t in rel.targets() {
+                said.extend(resolve(t));
+            }
+        }
+        let anchor = said.iter().find(|g| work.contains(g)).cloned().or_else(|| work.first().cloned())?;
+        let rest: Vec<String> = work.into_iter().filter(|g| *g != anchor && !said.contains(g)).collect();
+        (!rest.is_empty()).then_some((anchor, rest))
+    };
+    let splits: Vec<(usize, String, Vec<String>)> =
+        (0..ctx.input.robots.len()).filter_map(|ri| split(ri).map(|(a, rest)| (ri, a, rest))).collect();
     let deps: BTreeMap<String, Vec<String>> = units
         .iter()
         .map(|u| {
@@ -93,6 +126,11 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
                     for h in hosts_of(ctx, g) {
                         d.extend(resolve(&h));
                     }
+                    for (ri, _, rest) in &splits {
+                        if rest.contains(g) {
+                            d.push(format!("@robot{ri}"));
+                        }
+                    }
                 }
                 Unit::Robot(ri) => {
                     let r = &ctx.input.robots[*ri];
@@ -102,10 +140,12 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
                     if let Some(n) = &r.near {
                         d.extend(resolve(n));
                     }
+                    let later: Vec<String> =
+                        splits.iter().filter(|(x, ..)| x == ri).flat_map(|(_, _, rest)| rest.clone()).collect();
                     for rel in ctx.relations(&r.group) {
                         for t in rel.targets() {
                             if t != r.group {
-                                d.extend(resolve(t));
+                                d.extend(resolve(t).into_iter().filter(|k| !later.contains(k)));
                             }
                         }
                     }

@@ -11,6 +11,7 @@ use sw_geom::SupportSurface;
 use sw_plan::RelationKind;
 
 use crate::attempt::Ctx;
+use crate::frames::Spot;
 use crate::{RobotItem, RobotMount};
 
 /// Share of the registry reach the solver uses.
@@ -102,10 +103,14 @@ pub(crate) fn work_instance(ctx: &Ctx<'_>, group: &str, base: [f64; 3]) -> Optio
 
 /// The centreline of a conveyor's belt (its top surface's long axis), world frame.
 pub(crate) fn belt_line(ctx: &Ctx<'_>, idx: usize) -> Option<([f64; 3], [f64; 3])> {
+    belt_line_at(ctx, idx, &ctx.placed[idx].as_ref()?.spot)
+}
+
+/// [`belt_line`] of a conveyor standing at `spot`.
+fn belt_line_at(ctx: &Ctx<'_>, idx: usize, spot: &Spot) -> Option<([f64; 3], [f64; 3])> {
     if ctx.input.objects[idx].category != "conveyor" {
         return None;
     }
-    let spot = ctx.placed[idx].as_ref()?.spot;
     let s = top_surface(ctx, idx)?;
     let cy = 0.5 * (s.min[1] + s.max[1]);
     let cx = 0.5 * (s.min[0] + s.max[0]);
@@ -137,11 +142,19 @@ pub(crate) fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// or enough of a work surface (its nearest point within half the reach), or a
 /// machine's side within reach.
 pub(crate) fn can_work_at(ctx: &Ctx<'_>, base: [f64; 3], reach: f64, idx: usize) -> bool {
-    if let Some((a, b)) = belt_line(ctx, idx) {
+    match ctx.placed[idx].as_ref() {
+        Some(p) => can_work_at_pose(ctx, base, reach, idx, &p.spot),
+        None => false,
+    }
+}
+
+/// [`can_work_at`] with object `idx` standing at `spot` (a candidate pose).
+pub(crate) fn can_work_at_pose(ctx: &Ctx<'_>, base: [f64; 3], reach: f64, idx: usize, spot: &Spot) -> bool {
+    if let Some((a, b)) = belt_line_at(ctx, idx, spot) {
         let sh = shoulder(base);
         return reaches(base, reach, nearest_on_segment(a, b, sh));
     }
-    let Some(spot) = ctx.placed[idx].as_ref().map(|p| p.spot) else { return false };
+    let spot = *spot;
     // A free item (a pallet): its centre.
     if ctx.input.objects[idx].asset.is_free() {
         let b = ctx.bounds[idx];
@@ -245,4 +258,40 @@ pub(crate) fn instances_in_reach(ctx: &Ctx<'_>, base: [f64; 3], reach: f64, grou
     let all = ctx.placed_instances(group);
     let n = all.iter().filter(|(i, _)| can_work_at(ctx, base, reach, *i)).count();
     (n, all.len())
+}
+
+/// The arms standing on the floor or on a stand of their own (not on a work surface)
+/// said to reach `group`, placed or not: robot indices. Such an arm and its work are
+/// placed together — its first work, the arm beside it, then the rest of its work
+/// around it, where it reaches (`order`, `floor::place`).
+pub(crate) fn floor_arms_reaching(ctx: &Ctx<'_>, group: &str) -> Vec<usize> {
+    ctx.input
+        .robots
+        .iter()
+        .enumerate()
+        .filter(|(_, r)| r.is_arm && !matches!(r.mount, RobotMount::Surface { .. }))
+        .filter(|(_, r)| {
+            ctx.relations(&r.group).iter().any(|k| matches!(k, RelationKind::Reach { target } if target == group))
+        })
+        .map(|(ri, _)| ri)
+        .collect()
+}
+
+/// The base of a placed robot.
+pub(crate) fn base_of(ctx: &Ctx<'_>, ri: usize) -> Option<[f64; 3]> {
+    ctx.robots[ri].as_ref().map(|p| p.pos)
+}
+
+/// The names of the arms on the floor or on a stand said to reach `group`, and of their
+/// stands: the operators of that work, who stand in its working space (and it in theirs).
+pub(crate) fn operators(ctx: &Ctx<'_>, group: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for ri in floor_arms_reaching(ctx, group) {
+        let r = &ctx.input.robots[ri];
+        out.push(r.name.clone());
+        if let RobotMount::Carrier { object } = &r.mount {
+            out.push(object.clone());
+        }
+    }
+    out
 }

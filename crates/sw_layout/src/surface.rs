@@ -73,7 +73,7 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
     if !hosts.is_empty() {
         place_loose(ctx, &hosts);
     }
-    for idx in in_stack_order(ctx, items) {
+    for idx in hosts_first(ctx, &in_stack_order(ctx, items)) {
         if sw_geom::cancel::requested() {
             return;
         }
@@ -151,6 +151,32 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
             );
         }
     }
+}
+
+/// `items` with each one after the items it rests on ("four cubes in a bowl on the
+/// table": the bowl first, then the cubes; "a red cube on the green cube" likewise):
+/// an item whose host is itself still to be placed would find no host and go to the
+/// floor. Stable otherwise; a cycle of hosts keeps the given order.
+fn hosts_first(ctx: &Ctx<'_>, items: &[usize]) -> Vec<usize> {
+    let group_of = |i: usize| ctx.input.objects[i].group.as_str();
+    // How many hosts among `items` lie under each item's group (its depth in the pile).
+    let depth = |i: usize| -> usize {
+        let mut g = group_of(i).to_string();
+        let mut seen: Vec<String> = vec![g.clone()];
+        let mut d = 0;
+        while let Some(t) = ctx.instances(&g).first().and_then(|&j| surface_target(ctx, j)) {
+            if seen.contains(&t) || !items.iter().any(|&j| group_of(j) == t) {
+                break;
+            }
+            seen.push(t.clone());
+            g = t;
+            d += 1;
+        }
+        d
+    };
+    let mut keyed: Vec<(usize, usize)> = items.iter().map(|&i| (depth(i), i)).collect();
+    keyed.sort_by_key(|(d, _)| *d);
+    keyed.into_iter().map(|(_, i)| i).collect()
 }
 
 /// The members of a stacked group from the bottom up, widest first (stable): what stands

@@ -432,7 +432,17 @@ fn build_standing_mirror(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64
 pub(crate) const COAT_RACK: Category = def(
     "coat_rack",
     "coat rack",
-    &["coat stand", "hat stand", "coat tree", "hall tree", "hat and coat stand", "clothes stand"],
+    &[
+        "coat stand",
+        "hat stand",
+        "coat tree",
+        "hall tree",
+        "hat and coat stand",
+        "clothes stand",
+        "coatrack",
+        "hatrack",
+        "hat rack",
+    ],
     &["furniture", "home", "office", "tall", "round"],
     "a free-standing coat stand: a pole on a round base with hooks at the top",
     &["stand", "rack", "furniture"],

@@ -311,7 +311,7 @@ fn build_fork(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const SPOON: Category = def(
     "spoon",
     "spoon",
-    &["tablespoon", "teaspoon", "soup spoon", "dessert spoon", "serving spoon", "wooden spoon"],
+    &["tablespoon", "teaspoon", "soup spoon", "dessert spoon", "serving spoon", "wooden spoon", "soupspoon"],
     UTENSIL,
     "a spoon with an oval bowl and a handle",
     &["cutlery", "utensil"],
@@ -431,7 +431,7 @@ fn build_ladle(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const WHISK: Category = def(
     "whisk",
     "whisk",
-    &["balloon whisk", "egg whisk", "wire whisk", "egg beater"],
+    &["balloon whisk", "egg whisk", "wire whisk", "egg beater", "eggbeater", "rotary whisk"],
     UTENSIL,
     "a balloon whisk: loops of wire on a handle",
     &["utensil", "kitchenware"],
@@ -616,7 +616,7 @@ fn jug(b: &mut AssetBuilder, w: f64, d: f64, h: f64, profile: &[[f64; 2]], [body
 pub(crate) const TEAPOT: Category = def(
     "teapot",
     "teapot",
-    &["tea pot", "coffee pot", "tea kettle pot"],
+    &["tea pot", "coffee pot", "tea kettle pot", "coffeepot"],
     &["kitchen", "tabletop", "small", "graspable", "handled"],
     "a round ceramic teapot with a lid, a spout and a handle",
     &["pot", "jug", "kitchenware", "crockery"],

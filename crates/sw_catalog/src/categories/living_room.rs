@@ -237,7 +237,7 @@ fn build_floor_lamp(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const RUG: Category = def(
     "rug",
     "rug",
-    &["carpet", "area rug", "floor rug", "runner rug", "mat", "floor mat"],
+    &["carpet", "area rug", "floor rug", "runner rug", "mat", "floor mat", "runner", "hall runner", "carpet runner"],
     &["home", "textile", "floor"],
     "a flat rectangular rug on the floor",
     &["floor covering", "textile", "mat"],
@@ -372,7 +372,7 @@ fn build_bean_bag(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const VASE: Category = def(
     "vase",
     "vase",
-    &["flower vase", "vase of flowers", "ceramic vase", "glass vase", "urn"],
+    &["flower vase", "vase of flowers", "ceramic vase", "glass vase", "urn", "pottery", "piece of pottery"],
     &["home", "tabletop", "small", "graspable", "round"],
     "a decorative vase with a narrow neck",
     &["container", "vessel", "decoration"],

@@ -311,7 +311,7 @@ fn build_tape_dispenser(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 
 pub(crate) const HOLE_PUNCH: Category = def(
     "hole_punch",
     "hole punch",
-    &["paper punch", "two-hole punch", "hole puncher", "paper puncher"],
+    &["paper punch", "two-hole punch", "hole puncher", "paper puncher", "puncher"],
     DESKTOP,
     "a two-hole paper punch with a lever on top",
     &["office supply", "stationery", "tool"],

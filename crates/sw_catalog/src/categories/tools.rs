@@ -1110,7 +1110,7 @@ pub(crate) const BICYCLE: Category = def(
     build_bicycle,
 );
 
-fn build_bicycle(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+pub(crate) fn build_bicycle(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = whd(p);
     let paint = b.material(
         "frame",

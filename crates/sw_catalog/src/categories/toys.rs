@@ -140,7 +140,17 @@ fn build_rubber_duck(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const BOARD_GAME: Category = def(
     "board_game",
     "board game",
-    &["game box", "boxed game", "jigsaw puzzle", "puzzle box", "monopoly", "chess set", "box of games"],
+    &[
+        "game box",
+        "boxed game",
+        "jigsaw puzzle",
+        "puzzle box",
+        "monopoly",
+        "chess set",
+        "box of games",
+        "gameboard",
+        "game board",
+    ],
     TOY,
     "a boxed board game lying flat",
     &["game", "toy", "box"],
@@ -361,6 +371,7 @@ pub(crate) const SPORTS_BALL: Category = def(
         "basketball",
         "volleyball",
         "beach ball",
+        "beachball",
         "rugby ball",
         "netball",
         "handball",
@@ -441,7 +452,7 @@ pub(crate) const SHOE: Category = def(
     build_shoe,
 );
 
-fn build_shoe(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+pub(crate) fn build_shoe(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = whd(p);
     let upper = b.material(
         "upper",
@@ -769,6 +780,10 @@ pub(crate) const SPRAY_BOTTLE: Category = def(
         "window cleaner",
         "aerosol can",
         "spray can",
+        "cleansing agent",
+        "cleaning agent",
+        "household cleaner",
+        "surface cleaner",
     ],
     &["home", "cleaning", "tabletop", "small", "graspable"],
     "a trigger spray bottle of cleaner",

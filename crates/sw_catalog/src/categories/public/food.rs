@@ -120,7 +120,7 @@ thing!(ARTICHOKE: "artichoke", "artichoke", ["globe artichoke"], ROUND_FRUIT, "a
 thing!(BAGEL: "bagel", "bagel", ["plain bagel", "sesame bagel"], COOKED, "a round golden bread bagel",
     ["bread", "baked goods", "food"], Food @ OnSurface, true, [0.10, 0.10, 0.035], 300.0, round(DISC, GOLDEN));
 // Croissant: 14 cm tip to tip.
-thing!(CROISSANT: "croissant", "croissant", ["butter croissant"], COOKED, "a curved golden flaky croissant",
+thing!(CROISSANT: "croissant", "croissant", ["crescent roll", "butter croissant"], COOKED, "a curved golden flaky croissant",
     ["pastry", "baked goods", "food"], Food @ OnSurface, true, [0.14, 0.07, 0.05], 250.0, blob(GOLDEN));
 // Round cake: 20–23 cm tin, 10 cm tall.
 thing!(CAKE: "cake", "cake", ["birthday cake", "sponge cake", "gateau", "layer cake", "chocolate cake"], COOKED,
@@ -194,7 +194,7 @@ thing!(FRENCH_FRIES: "french_fries", "french fries", ["fries", "carton of fries"
     "a red carton of golden french fries", ["fast food", "food"], Food @ OnSurface, true, [0.10, 0.06, 0.13], 300.0,
     Look::Appliance { body: RED, front: [0.95, 0.8, 0.3, 1.0], door: [-0.4, 0.4, 0.75, 1.0], knobs: 0, top: false });
 // Tub of ice cream: 0.5 l, 12 cm across.
-thing!(ICE_CREAM: "ice_cream", "ice cream", ["ice cream tub", "tub of ice cream", "gelato"], PACKED, "a round tub of ice cream with a lid",
+thing!(ICE_CREAM: "ice_cream", "ice cream", ["icecream", "ice cream tub", "tub of ice cream", "gelato"], PACKED, "a round tub of ice cream with a lid",
     ["dessert", "frozen food", "food"], Food @ OnSurface, true, [0.12, 0.12, 0.11], 500.0, jar(PACKS, WHITE_C));
 // Bag of sweets: 12 × 4 × 16 cm.
 thing!(BAG_OF_SWEETS: "bag_of_sweets", "bag of sweets", ["bag of candy", "candy", "sweets bag", "candy bag"], PACKED,
@@ -234,10 +234,10 @@ thing!(BOTTLED_WATER: "bottled_water", "bottled water", ["bottle of water", "min
     "a clear plastic bottle of water with a blue cap", ["bottle", "drink"], Tabletop @ OnSurface, true, [0.065, 0.065, 0.21], 700.0,
     bottle(CLEAR, [0.1, 0.3, 0.8, 1.0]));
 // 330 ml long-neck beer bottle: 6 cm across, 23 cm tall.
-thing!(BEER_BOTTLE: "beer_bottle", "beer bottle", ["beer", "bottle of beer"], DRINK, "a brown glass bottle of beer with a crown cap",
+thing!(BEER_BOTTLE: "beer_bottle", "beer bottle", ["cider", "bottle of cider", "beer", "bottle of beer"], DRINK, "a brown glass bottle of beer with a crown cap",
     ["bottle", "drink"], Tabletop @ OnSurface, true, [0.06, 0.06, 0.23], 750.0, bottle(AMBER, [0.8, 0.75, 0.2, 1.0]));
 // 70 cl spirits bottle: 8 cm across, 28 cm tall.
-thing!(SPIRITS_BOTTLE: "spirits_bottle", "spirits bottle", ["liquor", "liquor bottle", "bottle of spirits", "whisky bottle", "vodka bottle", "gin bottle", "rum bottle"],
+thing!(SPIRITS_BOTTLE: "spirits_bottle", "spirits bottle", ["vodka", "tequila", "bottle of vodka", "alcohol", "bottle of alcohol", "liquor", "liquor bottle", "bottle of spirits", "whisky bottle", "vodka bottle", "gin bottle", "rum bottle"],
     DRINK, "a square-shouldered glass bottle of spirits", ["bottle", "drink"], Tabletop @ OnSurface, true, [0.08, 0.08, 0.28], 700.0,
     bottle(&[[0.7, 0.45, 0.15, 1.0], [0.8, 0.85, 0.88, 1.0]], BLACK_C));
 // 1 l juice bottle: 8 cm across, 24 cm tall.

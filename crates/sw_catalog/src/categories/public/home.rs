@@ -62,7 +62,7 @@ thing!(PAN_LID: "pan_lid", "pan lid", ["pot lid", "saucepan lid", "skillet lid",
     "a round glass pan lid with a knob", ["cookware"], HandHeld @ OnSurface, true, [0.26, 0.26, 0.05], 300.0,
     Look::Turned { profile: DOME, body: GLASSY, top: 0.75, cap_r: 0.15, cap: BLACK_C });
 // Stovetop whistling kettle, 22 × 20 × 22 cm.
-thing!(STOVETOP_KETTLE: "stovetop_kettle", "stovetop kettle", ["whistling kettle", "hob kettle", "kettle non electric"],
+thing!(STOVETOP_KETTLE: "stovetop_kettle", "stovetop kettle", ["teakettle", "whistling kettle", "hob kettle", "kettle non electric"],
     &["kitchen", "cookware", "tabletop"], "a round steel kettle heated on the hob, with a spout and a handle",
     ["kettle", "cookware"], Tabletop @ OnSurface, true, [0.22, 0.22, 0.22], 150.0,
     Look::Turned { profile: URN, body: METAL, top: 0.85, cap_r: 0.3, cap: BLACK_C });

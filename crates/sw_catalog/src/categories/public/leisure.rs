@@ -109,7 +109,7 @@ thing!(CELLO: "cello", "cello", ["violoncello"], MUSIC, "a large wooden cello",
 thing!(SAXOPHONE: "saxophone", "saxophone", ["sax", "alto sax", "tenor sax"], MUSIC, "a curved brass saxophone with keys",
     ["wind instrument", "instrument"], Toy @ OnSurface, true, [0.70, 0.30, 0.15], 40.0, horn(BRASS));
 // Trumpet: 50 × 13 × 15 cm.
-thing!(TRUMPET: "trumpet", "trumpet", ["brass trumpet", "pocket trumpet"], MUSIC, "a brass trumpet with valves and a flared bell",
+thing!(TRUMPET: "trumpet", "trumpet", ["cornet", "bugle", "brass trumpet", "pocket trumpet"], MUSIC, "a brass trumpet with valves and a flared bell",
     ["brass instrument", "instrument"], Toy @ OnSurface, true, [0.50, 0.13, 0.15], 80.0, horn(BRASS));
 // Trombone: 100 × 20 × 15 cm.
 thing!(TROMBONE: "trombone", "trombone", ["slide trombone"], MUSIC, "a brass trombone with its slide",

@@ -14,14 +14,18 @@
 //! it looks like is drawn inside that box. Furniture and appliances with flat tops carry a
 //! support surface there.
 
+mod common;
 mod food;
 mod home;
 mod leisure;
+mod rare;
 mod work;
 
+pub(crate) use common::*;
 pub(crate) use food::*;
 pub(crate) use home::*;
 pub(crate) use leisure::*;
+pub(crate) use rare::*;
 pub(crate) use work::*;
 
 use sw_geom::{AssetBuilder, Rng};
@@ -217,6 +221,18 @@ macro_rules! thing {
 }
 pub(crate) use thing;
 
+/// One category drawn by another family's builder at its own size.
+macro_rules! like {
+    ($id:ident: $name:literal, $display:literal, [$($syn:literal),* $(,)?], $tags:expr, $desc:literal,
+     [$($isa:literal),+ $(,)?], $kind:ident @ $place:ident, $movable:literal, [$w:expr, $d:expr, $h:expr], $build:path $(,)?) => {
+        pub(crate) const $id: crate::Category = super::super::forms::def(
+            $name, $display, &[$($syn),*], $tags, $desc, &[$($isa),+], crate::Kind::$kind,
+            sw_geom::PlacementKind::$place, $movable, &super::super::household::sized($w, $d, $h), $build,
+        );
+    };
+}
+pub(crate) use like;
+
 // Palettes and profiles shared by the families.
 pub(crate) const WOODS: &[Rgba] = &[[0.62, 0.45, 0.28, 1.0], [0.5, 0.34, 0.2, 1.0], [0.72, 0.56, 0.38, 1.0]];
 pub(crate) const METAL: &[Rgba] = &[[0.66, 0.68, 0.7, 1.0], [0.55, 0.57, 0.6, 1.0]];
@@ -258,3 +274,32 @@ pub(crate) const URN: &[[f64; 2]] =
 pub(crate) const DOME: &[[f64; 2]] = &[[0.0, 0.0], [1.0, 0.0], [0.95, 0.45], [0.7, 0.85], [0.0, 1.0]];
 /// A disc with a rounded rim (a pizza, a frisbee, a pie).
 pub(crate) const DISC: &[[f64; 2]] = &[[0.0, 0.0], [0.95, 0.0], [1.0, 0.5], [0.95, 1.0], [0.0, 1.0]];
+
+/// Shorthands for the common looks, shared by the LVIS families.
+pub(crate) const fn turned(profile: &'static [[f64; 2]], body: &'static [Rgba]) -> Look {
+    Look::Turned { profile, body, top: 1.0, cap_r: 1.0, cap: WHITE_C }
+}
+pub(crate) const fn capped(
+    profile: &'static [[f64; 2]],
+    body: &'static [Rgba],
+    top: f64,
+    cap_r: f64,
+    cap: Rgba,
+) -> Look {
+    Look::Turned { profile, body, top, cap_r, cap }
+}
+pub(crate) const fn blob(body: &'static [Rgba]) -> Look {
+    Look::Blob { body, accent: BROWN_C, stem: false }
+}
+pub(crate) const fn pack(body: &'static [Rgba], band: Rgba) -> Look {
+    Look::Pack { body, band }
+}
+pub(crate) const fn flat(body: &'static [Rgba], panel: Rgba) -> Look {
+    Look::Flat { body, panel }
+}
+pub(crate) const fn long(grip: f64, handle: &'static [Rgba], head: Rgba) -> Look {
+    Look::Long { grip, grip_w: 0.45, grip_h: 0.7, handle, head }
+}
+pub(crate) const fn appliance(body: &'static [Rgba], front: Rgba, knobs: usize) -> Look {
+    Look::Appliance { body, front, door: [-0.4, 0.4, 0.2, 0.7], knobs, top: true }
+}
