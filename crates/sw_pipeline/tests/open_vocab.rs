@@ -173,10 +173,10 @@ fn a_proxy_takes_the_kind_and_size_of_its_nearest_categories() {
     sizes.sort_by(|a, b| (a[0] * a[1] * a[2]).total_cmp(&(b[0] * b[1] * b[2])));
     let size = size.expect("sized by its neighbours");
     assert_eq!(size, sizes[1], "{sizes:?}");
-    // A category named for the noun (the aquarium, a "fish tank", for a fish) or after one of
+    // A category named for the noun (the aquarium, a "goldfish bowl", for a goldfish; "fish" itself is a catalog category) or after one of
     // its modifiers (the toaster for a toaster cosy) neither votes on its kind nor sizes it.
     let for_it = Fixed { near: &[("aquarium", 0.8, 0.6), ("salami", 0.6, 0.5), ("sausage", 0.55, 0.5)] };
-    let Resolution::Proxy { kind, nearest, .. } = resolve_noun("fish", &for_it) else { panic!() };
+    let Resolution::Proxy { kind, nearest, .. } = resolve_noun("goldfish", &for_it) else { panic!() };
     assert_eq!((kind, nearest.map(|n| n.0)), (Some(Kind::Food), Some("aquarium")));
     let after = Fixed { near: &[("toaster", 0.8, 0.6), ("napkin", 0.5, 0.4)] };
     let Resolution::Proxy { kind, .. } = resolve_noun("toaster cosy", &after) else { panic!() };
@@ -202,7 +202,7 @@ fn by_meaning_homonyms_stay_proxies_and_kinds_are_sized_like_their_kind() {
         assert!(category_of(&r).is_some_and(|c| want.contains(&c)), "{noun}: {r:?}");
     }
     // A small thing's proxy is small, a big thing's big.
-    for (noun, lo, hi) in [("pencil case", 0.02, 0.5), ("chaise longue", 0.5, 2.5)] {
+    for (noun, lo, hi) in [("pencil case", 0.02, 0.5), ("church pew", 0.5, 2.5)] {
         match resolve_noun(noun, m) {
             Resolution::Proxy { size: Some(s), .. } => {
                 let big = s.iter().copied().fold(0.0, f64::max);

@@ -336,6 +336,6 @@ pub(crate) const HIGH_CHAIR: crate::Category = crate::Category {
     ..super::super::furniture::CHAIR
 };
 // A child's tricycle, 70 × 50 × 60 cm (drawn as a small cycle).
-like!(TRICYCLE: "tricycle", "tricycle", ["trike", "kids tricycle", "children's tricycle", "toddler trike", "balance bike", "kids bike", "child's bike"],
+like!(TRICYCLE: "tricycle", "tricycle", ["trike", "kids tricycle", "children's tricycle", "toddler trike"],
     &["home", "toy", "outdoor"], "a child's tricycle: wheels, a small frame, a saddle and handlebars", ["cycle", "ride-on toy", "toy"],
     Toy @ Floor, false, [0.70, 0.50, 0.60], super::super::tools::build_bicycle);
