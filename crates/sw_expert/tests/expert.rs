@@ -57,18 +57,7 @@ fn a_panda_puts_the_red_cube_in_the_bowl_and_the_controls_replay() {
     let n = ep.recording.actions.len();
     assert!(n > 30 && ep.recording.states.len() == n && ep.recording.qpos.len() == n);
     // The recorded controls, held for one frame each from `home`, end where the run ended.
-    let model = MjModel::from_xml(&scene).unwrap();
-    let mut data = model.make_data();
-    data.reset_keyframe(model.name_to_id(MjtObjBase::mjOBJ_KEY, "home").unwrap()).unwrap();
-    data.forward();
-    for (k, a) in ep.recording.actions.iter().enumerate() {
-        let err = data.qpos().iter().zip(&ep.recording.qpos[k]).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
-        assert!(err < 1e-9, "frame {k}: replay differs by {err}");
-        data.ctrl_mut().copy_from_slice(a);
-        for _ in 0..substeps {
-            data.step();
-        }
-    }
+    replays_exactly(&scene, &ep);
 }
 
 #[test]
