@@ -131,12 +131,11 @@ pub(crate) fn place(ctx: &mut Ctx<'_>, idx: usize) -> bool {
     // Work of an arm on the floor or on a stand that already stands (see `order`): beside
     // it, where it reaches — after the places its own relations name, which it then
     // keeps only where the arm reaches too.
-    let arms: Vec<([f64; 3], f64)> = crate::reach::floor_arms_reaching(ctx, &group)
-        .into_iter()
-        .filter_map(|ri| Some((crate::reach::base_of(ctx, ri)?, ctx.input.robots[ri].reach)))
-        .collect();
+    let reaching = crate::reach::floor_arms_reaching(ctx, &group);
+    let arms: Vec<([f64; 3], f64)> =
+        reaching.iter().filter_map(|&ri| Some((crate::reach::base_of(ctx, ri)?, ctx.input.robots[ri].reach))).collect();
     if !arms.is_empty() {
-        for ri in crate::reach::floor_arms_reaching(ctx, &group) {
+        for &ri in &reaching {
             let g = ctx.input.robots[ri].group.clone();
             specific.extend(candidates::beside(ctx, &b, &g, k));
         }
