@@ -585,6 +585,18 @@ fn attempt(sh: &Shared<'_>, p: usize, seed: u64) -> Result<Tried, Stop> {
             Err(e) => return fail("scene", e.to_string(), family),
         };
     std::fs::write(pkg.join("scene.xml"), xml).map_err(fatal)?;
+    // A task that closes a drawer or door starts with it part way open.
+    let to_close: Vec<String> = task
+        .goals
+        .iter()
+        .filter_map(|g| match g {
+            sw_task::Predicate::Closed { joint, .. } => Some(joint.clone()),
+            _ => None,
+        })
+        .collect();
+    if let Err(e) = sw_expert::open_at_start(&pkg.join("scene.xml"), &to_close, seed) {
+        return fail("scene", e.to_string(), family);
+    }
     let eopts = sw_expert::ExpertOptions { fps: spec.fps, seed, max_seconds: 30.0 * task.goals.len().max(1) as f64 };
     let ep = match sw_expert::solve(&pkg.join("scene.xml"), &task, &robot_model, &eopts) {
         Ok(ep) => ep,

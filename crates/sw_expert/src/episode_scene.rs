@@ -85,6 +85,12 @@ pub fn episode_scene(
     // friction constraints yield under a steady load): MuJoCo's noslip pass removes that
     // drift in the friction dimensions. In the scene, so a replay is the same physics.
     root.section("option").set("noslip_iterations", format!("{GRASP_NOSLIP}"));
+    // A thing between two flat pads touched at one point a pad pivots about the line
+    // through the two points (a cylinder carried across the room tipped out of the pads that
+    // way, its load shifting onto one contact a pad): several contacts per convex pair
+    // make the pad's grip a patch, and torsional friction on the moved things (condim 4)
+    // resists the turn about the pads' normal.
+    root.section("option").section("flag").set("multiccd", "enable");
     let mut rng = Rng::derive(seed, "episode");
     let mut r = Randomisation { seed, light_scale: 1.0, ..Randomisation::default() };
     // Materials by name, for colours.
@@ -95,6 +101,11 @@ pub fn episode_scene(
             if !movable.contains(&name) {
                 continue;
             }
+            b.walk_mut(&mut |g| {
+                if g.name == "geom" && g.get("class") == Some("sw_collision") {
+                    g.set("condim", "4");
+                }
+            });
             if vary.physics {
                 let scale = rng.range(0.8, 1.25);
                 let mu = rng.range(0.7, 1.3);
@@ -201,6 +212,44 @@ pub fn episode_scene(
     }
     let _ = substeps;
     Ok((root.to_document(), r))
+}
+
+/// Sets the episode's start (keyframe `home`) with each of `joints` part way open — drawn
+/// from `seed` between half and nine tenths of its range — so that a task that closes
+/// them does not already hold at the start. `scene` is the written episode scene (it is
+/// compiled for the joints' addresses) and is rewritten in place. Returns (joint,
+/// position) as set, for the episode's record.
+pub fn open_at_start(scene: &std::path::Path, joints: &[String], seed: u64) -> Result<Vec<(String, f64)>, ExpertError> {
+    use mujoco_rs::prelude::*;
+    if joints.is_empty() {
+        return Ok(Vec::new());
+    }
+    let model = MjModel::from_xml(scene).map_err(|e| ExpertError::Scene(e.to_string()))?;
+    let text = std::fs::read_to_string(scene).map_err(|e| ExpertError::Scene(format!("{}: {e}", scene.display())))?;
+    let mut root = Element::parse(&text).map_err(|e| ExpertError::Scene(format!("scene.xml: {}", e.message)))?;
+    let nq = model.ffi().nq as usize;
+    let key = root
+        .first_mut("keyframe")
+        .and_then(|k| k.children.iter_mut().find(|c| c.name == "key" && c.get("name") == Some("home")))
+        .ok_or_else(|| ExpertError::Scene("the episode scene has no keyframe 'home'".into()))?;
+    let mut qpos = key.get("qpos").map(parse_nums).unwrap_or_default();
+    if qpos.len() != nq {
+        return Err(ExpertError::Scene(format!("keyframe 'home' has {} positions, the model {nq}", qpos.len())));
+    }
+    let mut rng = Rng::derive(seed, "start joints");
+    let mut set = Vec::new();
+    for j in joints {
+        let id = model
+            .name_to_id(MjtObjBase::mjOBJ_JOINT, j)
+            .ok_or_else(|| ExpertError::Scene(format!("no joint '{j}' in the scene")))?;
+        let [lo, hi] = model.jnt_range()[id];
+        let v = round3(lo + rng.range(0.5, 0.9) * (hi - lo));
+        qpos[model.jnt_qposadr()[id] as usize] = v;
+        set.push((j.clone(), v));
+    }
+    key.set("qpos", nums(&qpos));
+    std::fs::write(scene, root.to_document()).map_err(|e| ExpertError::Scene(format!("{}: {e}", scene.display())))?;
+    Ok(set)
 }
 
 fn scale_inertial(e: &mut Element, s: f64) {

@@ -85,7 +85,7 @@ pub(crate) struct Expert<'a, 'm> {
 }
 
 impl<'a, 'm> Expert<'a, 'm> {
-    fn sync_scratch(&mut self) {
+    pub(crate) fn sync_scratch(&mut self) {
         let q = self.run.data.qpos().to_vec();
         self.scratch.qpos_mut().copy_from_slice(&q);
         fk(&mut self.scratch);
@@ -116,7 +116,7 @@ impl<'a, 'm> Expert<'a, 'm> {
         Ok(path)
     }
 
-    fn plan_to(&mut self, allow: Allow, goal: &[f64]) -> Result<Vec<Vec<f64>>, ExpertError> {
+    pub(crate) fn plan_to(&mut self, allow: Allow, goal: &[f64]) -> Result<Vec<Vec<f64>>, ExpertError> {
         let start = self.run.arm_target(self.rig);
         let mut checker = Checker::new(self.rig, allow);
         let out = plan(&mut checker, &mut self.scratch, &start, goal, &mut self.rng);
@@ -149,6 +149,14 @@ impl<'a, 'm> Expert<'a, 'm> {
         Posture::Hit(hit)
     }
 
+    /// A collision-free posture putting the tool at `t` (see [`Expert::posture`]).
+    pub(crate) fn free_posture(&mut self, near: &[f64], t: &Target, allow: Allow) -> Option<Vec<f64>> {
+        match self.posture(near, t, allow) {
+            Posture::Free(q) => Some(q),
+            Posture::NoIk | Posture::Hit(_) => None,
+        }
+    }
+
     /// Runs every goal in order.
     pub fn solve(&mut self, task: &Task) -> Result<(), ExpertError> {
         // Let the scene come to rest with the gripper open.
@@ -165,12 +173,14 @@ impl<'a, 'm> Expert<'a, 'm> {
         if let Predicate::NavigateTo { target, within, .. } = g {
             return crate::drive::navigate(self, target, *within);
         }
+        match g {
+            Predicate::Closed { joint, .. } => return crate::articulate::close(self, joint),
+            Predicate::Open { joint, .. } => return crate::articulate::open(self.model, joint),
+            _ => {}
+        }
         let Some(object) = g.subject() else {
             return Err(ExpertError::Unsupported(format!("the expert cannot do {} yet", g.name())));
         };
-        if matches!(g, Predicate::Open { .. } | Predicate::Closed { .. }) {
-            return Err(ExpertError::Unsupported(format!("the expert does not open or close things yet ({object})")));
-        }
         let (body, free) = *self
             .rig
             .objects

@@ -15,6 +15,7 @@
 //! The expert links MuJoCo (as `sw_sim` does) because its IK, planning and execution are
 //! MuJoCo's kinematics, Jacobians, collision detection and dynamics.
 
+mod articulate;
 mod drive;
 mod episode_scene;
 mod expert;
@@ -34,7 +35,7 @@ use serde::{Deserialize, Serialize};
 use sw_geom::Rng;
 use sw_task::{GoalVerdict, Task};
 
-pub use episode_scene::{BASE_TIMESTEP, Randomisation, Vary, episode_scene, frame_timing};
+pub use episode_scene::{BASE_TIMESTEP, Randomisation, Vary, episode_scene, frame_timing, open_at_start};
 pub use render::{CameraSpec, FrameRenderer};
 pub use run::Recording;
 
@@ -131,8 +132,9 @@ pub struct Episode {
 
 /// Whether the expert can do every goal of `task`: it picks and places things (on, inside,
 /// stacked on, near, in a region, lifted to a pose) with an arm, or drives a wheeled base
-/// to a place; it does not yet open or close things, nor drive and handle things in one
-/// task.
+/// to a place, or pushes a drawer or door closed; it does not yet open things (nothing to
+/// pull on: the catalog's handles have no collision geometry), nor drive and handle things
+/// in one task.
 pub fn supports(task: &Task) -> Result<(), ExpertError> {
     let drives = task.goals.iter().filter(|g| matches!(g, sw_task::Predicate::NavigateTo { .. })).count();
     if drives > 0 && drives < task.goals.len() {
@@ -141,10 +143,9 @@ pub fn supports(task: &Task) -> Result<(), ExpertError> {
         ));
     }
     for g in &task.goals {
-        if let sw_task::Predicate::Open { object, .. } | sw_task::Predicate::Closed { object, .. } = g {
+        if let sw_task::Predicate::Open { object, .. } = g {
             return Err(ExpertError::Unsupported(format!(
-                "the expert does not open or close things yet ({} {object})",
-                g.name()
+                "the expert does not open things yet ({object}): the catalog's handles are drawn only, with no collision geometry to pull on"
             )));
         }
     }

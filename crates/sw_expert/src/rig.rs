@@ -13,7 +13,7 @@ use crate::ExpertError;
 use crate::math::{M3, V3};
 
 /// Group of the collision geoms the scene writer emits (`sw_collision`).
-const COLLISION_GROUP: i32 = 3;
+pub(crate) const COLLISION_GROUP: i32 = 3;
 /// Group of the support-surface sites (`sw_surface`).
 const SURFACE_GROUP: i32 = 5;
 

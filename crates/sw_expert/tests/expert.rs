@@ -22,7 +22,17 @@ fn bind(dir: &Path, instruction: &str) -> Result<Task, sw_task::TaskError> {
         serde_json::from_str(&std::fs::read_to_string(dir.join("plan.json")).unwrap()).unwrap();
     let layout: sw_plan::LaidOutScene =
         serde_json::from_str(&std::fs::read_to_string(dir.join("layout.json")).unwrap()).unwrap();
-    sw_task::bind(instruction, "flag", &SceneFacts::new(&plan, &layout, Vec::new()))
+    // The scene's joints that open and close (`<object>_<part>_<n>_joint`).
+    let root = sw_mjcf::xml::Element::parse(&std::fs::read_to_string(dir.join("scene.xml")).unwrap()).unwrap();
+    let mut joints = Vec::new();
+    root.walk(&mut |e| {
+        if let (true, Some(n)) = (e.name == "joint", e.get("name"))
+            && n.ends_with("_joint")
+        {
+            joints.push(n.to_string());
+        }
+    });
+    sw_task::bind(instruction, "flag", &SceneFacts::new(&plan, &layout, joints))
 }
 
 fn robot_model(dir: &Path, robot: &str) -> String {
@@ -235,4 +245,76 @@ fn a_run_stopped_part_way_is_an_unsolved_episode_with_its_recording() {
     assert!(failure.to_string().contains("limit"), "{failure}");
     assert_eq!(ep.recording.actions.len(), 30);
     replays_exactly(&path, &ep);
+}
+
+/// Writes the episode scene with the task's joints to close part way open, runs the expert
+/// and checks the joint's state in a fresh replay; the (episode, scene, joint).
+fn close_and_replay(prompt: &str, instruction: &str, seed: u64) -> (sw_expert::Episode, PathBuf, String) {
+    let tmp = tempfile::tempdir().unwrap().keep();
+    let dir = package(prompt, seed, &tmp);
+    let task = bind(&dir, instruction).unwrap();
+    let joint = task
+        .goals
+        .iter()
+        .find_map(|g| match g {
+            sw_task::Predicate::Closed { joint, .. } => Some(joint.clone()),
+            _ => None,
+        })
+        .unwrap_or_else(|| panic!("{instruction}: no closed goal in {:?}", task.goals));
+    let xml = std::fs::read_to_string(dir.join("scene.xml")).unwrap();
+    let (text, _) = episode_scene(&xml, 15, seed, &[], &[], &[], Vary::NONE).unwrap();
+    let path = dir.join("episode.xml");
+    std::fs::write(&path, text).unwrap();
+    let set = sw_expert::open_at_start(&path, std::slice::from_ref(&joint), seed).unwrap();
+    assert_eq!(set.len(), 1);
+    let opts = ExpertOptions { fps: 15, seed, max_seconds: 60.0 };
+    let ep = solve(&path, &task, &robot_model(&dir, &task.robot), &opts).unwrap();
+    (ep, path, joint)
+}
+
+/// The joint's position as a fraction of its range after replaying the recorded controls
+/// in a fresh MuJoCo from keyframe `home` (and at the start).
+fn joint_fraction_replayed(scene: &Path, ep: &sw_expert::Episode, joint: &str) -> (f64, f64) {
+    let model = MjModel::from_xml(scene).unwrap();
+    let mut data = model.make_data();
+    data.reset_keyframe(model.name_to_id(MjtObjBase::mjOBJ_KEY, "home").unwrap()).unwrap();
+    data.forward();
+    let j = model.name_to_id(MjtObjBase::mjOBJ_JOINT, joint).unwrap();
+    let adr = model.jnt_qposadr()[j] as usize;
+    let [lo, hi] = model.jnt_range()[j];
+    let start = (data.qpos()[adr] - lo) / (hi - lo);
+    for a in &ep.recording.actions {
+        data.ctrl_mut().copy_from_slice(a);
+        for _ in 0..ep.substeps {
+            data.step();
+        }
+    }
+    (start, (data.qpos()[adr] - lo) / (hi - lo))
+}
+
+#[test]
+fn a_panda_pushes_a_microwave_door_shut_and_the_controls_replay() {
+    let (ep, scene, joint) = close_and_replay("a Panda on a table with a microwave on it", "close the microwave", 1);
+    assert!(ep.success, "{:?} {:?}", ep.failure, ep.verdicts);
+    replays_exactly(&scene, &ep);
+    let (start, end) = joint_fraction_replayed(&scene, &ep, &joint);
+    assert!(start >= 0.5 && end <= 0.1, "{joint}: {start:.2} open at the start, {end:.2} at the end");
+}
+
+#[test]
+fn a_ur5e_pushes_a_desk_drawer_in_and_the_controls_replay() {
+    let (ep, scene, joint) = close_and_replay("a UR5e on a pedestal next to a desk", "close the drawer of the desk", 1);
+    assert!(ep.success, "{:?} {:?}", ep.failure, ep.verdicts);
+    replays_exactly(&scene, &ep);
+    let (start, end) = joint_fraction_replayed(&scene, &ep, &joint);
+    assert!(start >= 0.5 && end <= 0.1, "{joint}: {start:.2} open at the start, {end:.2} at the end");
+}
+
+#[test]
+fn opening_is_refused_with_the_reason() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = package("a Panda on a table with a microwave on it", 1, tmp.path());
+    let task = bind(&dir, "open the microwave").unwrap();
+    let e = sw_expert::supports(&task).unwrap_err().to_string();
+    assert!(e.contains("microwave_1") && e.contains("collision geometry"), "{e}");
 }

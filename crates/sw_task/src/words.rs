@@ -283,6 +283,12 @@ fn arguments(action: Action, t: &[String], clause: &str) -> Result<Args, TaskErr
         }
         if let Some((r, n)) = rel_at(t, i) {
             let rest = &t[i + n..];
+            // "push the drawer in", "slide it back in": a particle that ends the clause is
+            // where the part goes — shut — not a relation missing its thing.
+            if rest.is_empty() && n == 1 && w == "in" && matches!(action, Action::Push | Action::Place) {
+                args.result = Some(Action::Close);
+                break;
+            }
             let later_goal = next_goal(t, i + n).is_some();
             // "the cube on the left": a place word alone after "on"/"at"/"in" modifies the thing.
             if let Some(region) = region_only(&t[i + n..next_goal(t, i + n).map_or(t.len(), |g| g.0)])
@@ -333,6 +339,11 @@ fn arguments(action: Action, t: &[String], clause: &str) -> Result<Args, TaskErr
     while let Some(last) = np.last().map(String::as_str) {
         match last {
             "open" => args.result = Some(Action::Open),
+            // "slide the drawer out": a moving verb's particle, the part left open.
+            "out" if matches!(action, Action::Push | Action::Place) => args.result = Some(Action::Open),
+            // "set it down on the tray", "pick the cube up": the verb's particle after its
+            // thing.
+            "down" | "up" | "away" | "back" if np.len() > 1 => {}
             "shut" | "closed" => args.result = Some(Action::Close),
             w if vocab::RESULTS.contains(&w) => {
                 return Err(TaskError::Words(format!(
@@ -467,7 +478,7 @@ pub(crate) fn read(instruction: &str) -> Result<Vec<Clause>, TaskError> {
     let mut last_subjects: Vec<NounPhrase> = Vec::new();
     // Every thing named, in order (pronouns and elided goals look back through it).
     let mut named: Vec<NounPhrase> = Vec::new();
-    for seg in &clauses_words {
+    for (ci, seg) in clauses_words.iter().enumerate() {
         let clause = seg.join(" ");
         // The verb: the first word after the wrappers that is one.
         let verb_at = (0..seg.len()).find(|&i| is_verb_at(seg, i));
@@ -525,6 +536,14 @@ pub(crate) fn read(instruction: &str) -> Result<Vec<Clause>, TaskError> {
             }
             continue;
         };
+        // "push and close the drawer": verbs joined by "and" share the thing after the
+        // last; a verb with nothing after it before another verb's clause is its manner.
+        if verb_at.is_some()
+            && seg[from..].iter().all(|w| w == "and" || vocab::WRAPPERS.contains(&w.as_str()))
+            && clauses_words.get(ci + 1).is_some_and(|next| (0..next.len()).any(|i| is_verb_at(next, i)))
+        {
+            continue;
+        }
         let args = arguments(act, &seg[from..], &clause)?;
         if let Some(r) = args.result {
             act = r;
@@ -692,6 +711,30 @@ mod tests {
         assert_eq!(read("put the mug in the bin and the cup on the tray").map(|c| c.len()).ok(), Some(2));
         let c = read("put the red and white mug on the tray").unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(subjects(&c[0]), [("red and white mug", false)]);
+    }
+
+    #[test]
+    fn particles_after_the_thing_and_shared_verbs_are_read_by_structure() {
+        let one = |text: &str| {
+            let c = read(text).unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert_eq!(c.len(), 1, "{text}: {c:?}");
+            c.into_iter().next().unwrap_or_else(|| panic!("{text}"))
+        };
+        // A particle ending a moving verb's clause leaves the part shut or open.
+        for text in ["push the drawer in", "slide the top drawer back in", "push and close the drawer"] {
+            assert_eq!(one(text).action, Action::Close, "{text}");
+        }
+        assert_eq!(one("slide the drawer out").action, Action::Open);
+        // "in" with a thing after it is still a relation.
+        let c = one("push the cube in the box");
+        assert_eq!((c.action, c.rel), (Action::Push, Some(Rel::Inside)));
+        // The verb's particle after its thing.
+        for text in ["set it down on the tray", "put it back on the shelf", "put the mug down in the bowl"] {
+            let c = read(&format!("pick up the mug and {text}")).unwrap_or_else(|e| panic!("{text}: {e}"));
+            let last = c.last().unwrap_or_else(|| panic!("{text}"));
+            assert_eq!(last.action, Action::Place, "{text}");
+            assert_eq!(subjects(last), [("mug", false)], "{text}");
+        }
     }
 
     #[test]
