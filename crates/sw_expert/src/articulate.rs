@@ -74,9 +74,7 @@ fn part<M: ModelType>(model: &MjModel, data: &MjData<M>, joint: &str) -> Result<
             (add(data.geom_xpos()[g], mat_vec(&m, [a[0], a[1], a[2]])), m, [a[3], a[4], a[5]])
         })
         .collect();
-    if boxes.is_empty() {
-        return Err(ExpertError::Grasp(format!("the part {joint} moves has no collision geometry to push")));
-    }
+    let no_geometry = || ExpertError::Grasp(format!("the part {joint} moves has no collision geometry to push"));
     let extent = |(_, m, h): &(V3, M3, V3), u: V3| (0..3).map(|k| dot(u, col(m, k)).abs() * h[k]).sum::<f64>();
     let along = |p: V3| dot(sub(p, anchor), axis);
     let radial = |p: V3| sub(sub(p, anchor), scale(axis, along(p)));
@@ -89,7 +87,7 @@ fn part<M: ModelType>(model: &MjModel, data: &MjData<M>, joint: &str) -> Result<
                 (norm(radial(x.0)) + extent(x, unit(radial(x.0))))
                     .total_cmp(&(norm(radial(y.0)) + extent(y, unit(radial(y.0)))))
             })
-            .expect("non-empty");
+            .ok_or_else(no_geometry)?;
         let r = radial(b.0);
         let out = unit(r);
         let reach = norm(r) + extent(b, out);
@@ -106,7 +104,7 @@ fn part<M: ModelType>(model: &MjModel, data: &MjData<M>, joint: &str) -> Result<
         let b = boxes
             .iter()
             .max_by(|x, y| (dot(x.0, axis) + extent(x, axis)).total_cmp(&(dot(y.0, axis) + extent(y, axis))))
-            .expect("non-empty");
+            .ok_or_else(no_geometry)?;
         let push = scale(axis, -1.0);
         (add(b.0, scale(axis, extent(b, axis))), push, b)
     };

@@ -85,12 +85,6 @@ pub fn episode_scene(
     // friction constraints yield under a steady load): MuJoCo's noslip pass removes that
     // drift in the friction dimensions. In the scene, so a replay is the same physics.
     root.section("option").set("noslip_iterations", format!("{GRASP_NOSLIP}"));
-    // A thing between two flat pads touched at one point a pad pivots about the line
-    // through the two points (a cylinder carried across the room tipped out of the pads that
-    // way, its load shifting onto one contact a pad): several contacts per convex pair
-    // make the pad's grip a patch, and torsional friction on the moved things (condim 4)
-    // resists the turn about the pads' normal.
-    root.section("option").section("flag").set("multiccd", "enable");
     let mut rng = Rng::derive(seed, "episode");
     let mut r = Randomisation { seed, light_scale: 1.0, ..Randomisation::default() };
     // Materials by name, for colours.
@@ -101,11 +95,6 @@ pub fn episode_scene(
             if !movable.contains(&name) {
                 continue;
             }
-            b.walk_mut(&mut |g| {
-                if g.name == "geom" && g.get("class") == Some("sw_collision") {
-                    g.set("condim", "4");
-                }
-            });
             if vary.physics {
                 let scale = rng.range(0.8, 1.25);
                 let mu = rng.range(0.7, 1.3);
