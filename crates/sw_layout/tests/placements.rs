@@ -211,3 +211,65 @@ proptest! {
         }
     }
 }
+
+/// The object `o` rests on, if another object.
+fn host<'a>(s: &'a LaidOutScene, o: &PlacedObject) -> Option<(&'a PlacedObject, String)> {
+    let Support::Object { object, surface } = &o.support else { return None };
+    s.objects.iter().find(|x| &x.name == object).map(|x| (x, surface.clone()))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 10, ..ProptestConfig::default() })]
+
+    /// "n cubes in a bowl on the table": every cube inside the bowl, on its floor or heaped
+    /// on a cube that is, below its rim; a cube that does not fit is named in a warning.
+    /// With a 30 cm bowl at least two go in (its floor holds one or more, one more heaps).
+    #[test]
+    fn things_in_a_bowl_go_inside_packed_or_heaped(seed in 0u64..10_000, n in 2u32..=5) {
+        let p = plan(RoomKind::Tabletop, Dims::new(4.0, 4.0, 3.0),
+            &[("table", "table", 1), ("bowl", "bowl", 1), ("cubes", "cube", n)],
+            vec![("bowl", RelationKind::On { target: "table".into() }), ("cubes", RelationKind::Inside { target: "bowl".into() })]);
+        let mut f = forge(p, seed);
+        // The forge makes a bowl as wide as its contents need (the widest it comes in).
+        for (_, group, asset, _) in f.assets.iter_mut().filter(|a| a.1 == "bowl") {
+            let mut req = sw_catalog::AssetRequest::new("bowl", seed);
+            req.overrides = vec![("width".into(), 0.3), ("depth".into(), 0.3), ("height".into(), 0.1)];
+            *asset = sw_catalog::generate(&req).unwrap();
+            prop_assert_eq!(group.as_str(), "bowl");
+        }
+        let s = solve_forged(&f, seed);
+        check(&f, &s);
+        let bowl = of(&s, "bowl")[0];
+        let rim = bowl.pos[2] + world_boxes(&f, bowl).iter().map(|b| b.max[2] - bowl.pos[2]).fold(0.0, f64::max);
+        let mut inside = 0;
+        for o in of(&s, "cubes") {
+            let on_floor = |x: &PlacedObject| host(&s, x).is_some_and(|(h, surf)| h.name == bowl.name && surf == "inside");
+            let heaped = host(&s, o).is_some_and(|(h, _)| h.group == "cubes" && on_floor(h))
+                && footprint(&f, o).min[2] < rim;
+            if on_floor(o) || heaped {
+                inside += 1;
+            } else {
+                prop_assert!(s.warnings.iter().any(|w| w.message.contains(&format!("{}:", o.name))),
+                    "{} is not in the bowl and no warning names it: {:?}", o.name, s.warnings);
+            }
+        }
+        prop_assert!(inside >= 2.min(n), "only {inside} of {n} cubes in the bowl: {:?}", s.warnings);
+    }
+
+    /// "eight workbenches in a row" in a room whose size was not given: one row, the room
+    /// grown to hold it (was: folded into two rows).
+    #[test]
+    fn a_row_that_does_not_fit_grows_a_room_of_no_stated_size(seed in 0u64..10_000) {
+        let mut p = plan(RoomKind::Workshop, Dims::new(6.0, 5.0, 3.0), &[("benches", "workbench", 8)],
+            vec![("benches", RelationKind::InRow)]);
+        p.room.size_fixed = false;
+        let f = forge(p, seed);
+        let s = solve_forged(&f, seed);
+        check(&f, &s);
+        prop_assert!(s.room.size.width > 6.0, "the room did not grow: {:?}", s.room.size);
+        let cs: Vec<[f64; 2]> = of(&s, "benches").iter().map(|o| center(&footprint(&f, o))).collect();
+        let (xs, ys): (Vec<f64>, Vec<f64>) = cs.iter().map(|c| (c[0], c[1])).unzip();
+        let spread = |v: &[f64]| v.iter().copied().fold(f64::NEG_INFINITY, f64::max) - v.iter().copied().fold(f64::INFINITY, f64::min);
+        prop_assert!(spread(&xs).min(spread(&ys)) <= 0.05, "not one row: centres {cs:?}");
+    }
+}
