@@ -424,6 +424,25 @@ pub(crate) fn facing_bodies(b: &Aabb, targets: &[Body], sign: f64) -> Vec<Spot> 
                 }
             }
         }
+        // Several in front of one narrow target ("a bin and three trays in front of
+        // it"): rows packed one behind the other at the item's own depth, where the
+        // steps above leave gaps too narrow for it.
+        for turn in [0.0, PI, PI / 2.0, -PI / 2.0] {
+            let fp = footprint_at(b, toward + turn);
+            let depth = (fp.max[0] - fp.min[0]) * f[0].abs() + (fp.max[1] - fp.min[1]) * f[1].abs();
+            for j in 1..=4 {
+                let d = 0.1 + f64::from(j) * (depth + 0.06);
+                if d > relate::FRONT_GAP {
+                    break;
+                }
+                for s in [0.0_f64, -0.15, 0.15, -0.3, 0.3] {
+                    if s.abs() > half_w + 0.1 && s != 0.0 {
+                        continue;
+                    }
+                    out.push(aligned(b, toward + turn, f, face + d, side, mid + s));
+                }
+            }
+        }
     }
     out
 }
