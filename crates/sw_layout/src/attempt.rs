@@ -153,15 +153,22 @@ pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
             RelationKind::SetInto { target } if is_small(ctx, idx) || ctx.bounds[idx].size()[2] <= 0.15 => {
                 Some(target.clone())
             }
-            // Small things on each side of a table: on its top, at opposite edges.
-            RelationKind::OnEachSideOf { target }
-                if is_small(ctx, idx)
-                    && ctx
-                        .instances(target)
-                        .first()
-                        .is_some_and(|&i| !ctx.input.objects[i].asset.surfaces.is_empty()) =>
-            {
-                Some(target.clone())
+            // Small things on each side of a table: on its top, at opposite edges. On each
+            // side of a small thing ("a bowl on each side of the cutting board"): beside it
+            // on what it rests on (`surface::try_surface` keeps the sides), or on the floor
+            // by it when it rests on nothing.
+            RelationKind::OnEachSideOf { target } if is_small(ctx, idx) => {
+                let &t = ctx.instances(target).first()?;
+                if is_small(ctx, t) {
+                    ctx.relations(target).iter().find_map(|r| match r {
+                        RelationKind::On { target: h } | RelationKind::Inside { target: h } if h != target => {
+                            Some(h.clone())
+                        }
+                        _ => None,
+                    })
+                } else {
+                    (!ctx.input.objects[t].asset.surfaces.is_empty()).then(|| target.clone())
+                }
             }
             // Items between two arms rest on the surface the arms share.
             RelationKind::Between { first, second } if is_small(ctx, idx) => shared_work(ctx, first, second),

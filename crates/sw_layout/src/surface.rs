@@ -337,7 +337,11 @@ fn heap_inside(ctx: &mut Ctx<'_>, idx: usize, target: &str) -> bool {
             let Some(p) = ctx.placed[i].as_ref() else { continue };
             let inside = matches!(&p.support, Support::Object { object, .. } if *object == host);
             let name = &ctx.input.objects[i].name;
-            let free = !ctx.placed.iter().flatten().any(|q| matches!(&q.support, Support::Object { object, .. } if object == name));
+            let free = !ctx
+                .placed
+                .iter()
+                .flatten()
+                .any(|q| matches!(&q.support, Support::Object { object, .. } if object == name));
             // The top of the one below, where this one's bottom would be.
             let top = p.spot.z + ctx.bounds[i].max[2];
             if i != idx && inside && free && top < rim {
@@ -579,23 +583,45 @@ fn try_surface(
     // in front of the Panda"): the grid is tried nearest that first, and only spots that
     // keep those relations until none does.
     let group = ctx.input.objects[idx].group.clone();
+    let host_group = ctx.input.objects[host].group.clone();
+    let flanked =
+        ctx.input.plan.relations.iter().any(
+            |r| matches!(&r.kind, RelationKind::OnEachSideOf { target } if *target == group && r.subject != group),
+        );
     let by: Vec<RelationKind> = ctx
         .relations(&group)
         .into_iter()
         .filter(|r| {
-            matches!(
-                r,
-                RelationKind::NextTo { .. }
-                    | RelationKind::Near { .. }
-                    | RelationKind::InFrontOf { .. }
-                    | RelationKind::Behind { .. }
-            ) && r.targets().first().is_some_and(|t| !crate::relate::bodies(ctx, t).is_empty())
+            // On each side of the host itself is `Want::Side`; of a thing on it, kept here.
+            let by_thing = matches!(r, RelationKind::OnEachSideOf { target } if *target != host_group);
+            (by_thing
+                || matches!(
+                    r,
+                    RelationKind::NextTo { .. }
+                        | RelationKind::Near { .. }
+                        | RelationKind::InFrontOf { .. }
+                        | RelationKind::Behind { .. }
+                ))
+                && r.targets().first().is_some_and(|t| !crate::relate::bodies(ctx, t).is_empty())
         })
         .cloned()
         .collect();
     let aims: Vec<[f64; 2]> = by
         .iter()
         .flat_map(|r| {
+            // On each side of a thing: towards the two ends of its long axis, where a thing
+            // set down on a top has room more often than at its front and back.
+            if let RelationKind::OnEachSideOf { target } = r {
+                return crate::relate::bodies(ctx, target)
+                    .into_iter()
+                    .flat_map(|(_, b)| {
+                        let x = crate::relate::x_axis(&b);
+                        let u = if b.half_along(x) >= b.half_along(b.front) { x } else { b.front };
+                        let (c, d) = (b.center(), b.half_along(u) + 0.12);
+                        [[c[0] + u[0] * d, c[1] + u[1] * d], [c[0] - u[0] * d, c[1] - u[1] * d]]
+                    })
+                    .collect::<Vec<_>>();
+            }
             let sign = match r {
                 RelationKind::InFrontOf { .. } => 1.0,
                 RelationKind::Behind { .. } => -1.0,
@@ -662,6 +688,11 @@ fn try_surface(
                     aims.iter().map(|m| (w[0] - m[0]).hypot(w[1] - m[1])).fold(f64::INFINITY, f64::min)
                 };
                 grid.sort_by(|a, b| key(a).total_cmp(&key(b)));
+            } else if flanked {
+                // Things are to stand on each side of it on this top: from the middle out,
+                // so that both sides of it have room.
+                let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
+                grid.sort_by(|a, b| (a.0 - cx).hypot(a.1 - cy).total_cmp(&(b.0 - cx).hypot(b.1 - cy)));
             }
             {
                 for (x, y) in grid {
