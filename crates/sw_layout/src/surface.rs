@@ -567,6 +567,11 @@ fn try_surface(
     if ctx.input.objects[idx].name == host_name {
         return false;
     }
+    let group = ctx.input.objects[idx].group.clone();
+    let flanked =
+        ctx.input.plan.relations.iter().any(
+            |r| matches!(&r.kind, RelationKind::OnEachSideOf { target } if *target == group && r.subject != group),
+        );
     let flip = ctx.rng.chance(0.5);
     let mut yaws = if flip { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
     if let Some((a, c)) = between.first() {
@@ -578,11 +583,16 @@ fn try_surface(
         let wide_x = b.max[0] - b.min[0] >= b.max[1] - b.min[1];
         yaws = if along_x == wide_x { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
     }
+    if flanked {
+        // Its long side along the top's long side: room at both its ends.
+        let long_x = surf.max[0] - surf.min[0] >= surf.max[1] - surf.min[1];
+        let wide_x = b.max[0] - b.min[0] >= b.max[1] - b.min[1];
+        yaws = if long_x == wide_x { [0.0, FRAC_PI_2] } else { [FRAC_PI_2, 0.0] };
+    }
     let from_right = ctx.rng.chance(0.5);
     // Where it is said to stand by something placed ("a plate next to the toaster", "blocks
     // in front of the Panda"): the grid is tried nearest that first, and only spots that
     // keep those relations until none does.
-    let group = ctx.input.objects[idx].group.clone();
     let host_group = ctx.input.objects[host].group.clone();
     let flanked =
         ctx.input.plan.relations.iter().any(

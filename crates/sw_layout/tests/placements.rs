@@ -336,6 +336,6 @@ proptest! {
             prop_assert!(ga.max(gr) <= 0.6, "{} is {:.2} m from the board", o.name, ga.max(gr));
             sides.push(if a.abs() / half(&bb, bf) >= r.abs() / half(&bb, right) { (0, a.signum()) } else { (1, r.signum()) });
         }
-        prop_assert!(sides[0].0 == sides[1].0 && sides[0].1 != sides[1].1, "not on opposite sides: {sides:?}");
+        prop_assert!(sides[0].0 == sides[1].0 && sides[0].1 != sides[1].1, "not on opposite sides: {sides:?}; {:?} {:?}", s.objects.iter().map(|x| (&x.name, x.pos, x.yaw, x.size)).collect::<Vec<_>>(), s.warnings);
     }
 }
