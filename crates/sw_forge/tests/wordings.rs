@@ -260,3 +260,47 @@ fn a_part_of_a_catalog_object_is_never_the_whole_object() {
         }
     }
 }
+
+/// Words with no number of their own that place or count what the numbers size: blind holes
+/// at both ends, a bore through the length, a body below another, and inch drawings written
+/// without a unit. Each is made as the words say, or refused quoting them — never made
+/// otherwise (the second reading measures the part for each).
+#[test]
+fn words_that_place_or_count_without_a_number() {
+    let mut out = Vec::new();
+    let cyl = |d: f64, l: f64| PI * d * d / 4.0 * l;
+    // (ISO coarse tap drills: M4 3.3, M5 4.2, M6 5.0.)
+    for (d, l, m, tap, depth) in [(8.0, 40.0, 4, 3.3, 10.0), (10.0, 30.0, 5, 4.2, 8.0), (12.0, 50.0, 6, 5.0, 12.0)] {
+        let want = cyl(d, l) - 2.0 * cyl(tap, depth);
+        for prompt in [
+            format!("STANDOFF Ø{d} x {l} LG, M{m} TAPPED x {depth} DP BOTH ENDS"),
+            format!("pin {d} mm diameter, {l} mm long, with an M{m} tapped hole {depth} mm deep at each end"),
+        ] {
+            out.push(made(&prompt, [d, d, l], want));
+        }
+    }
+    for (s, l, h) in [(20.0, 80.0, 6.0), (25.0, 100.0, 10.0), (30.0, 150.0, 12.0)] {
+        let prompt = format!(
+            "A square bar {s} mm across the flats and {l} mm long, with a {h} mm hole bored right through its length"
+        );
+        out.push(made(&prompt, [s, s, l], s * s * l - cyl(h, l)));
+    }
+    for (fd, ft, bd, bl, bore) in [(40.0, 5.0, 25.0, 20.0, 16.0), (30.0, 4.0, 20.0, 12.0, 10.0)] {
+        let prompt = format!(
+            "Flanged bushing: flange Ø{fd} x {ft} thick, body Ø{bd} x {bl} long below the flange, Ø{bore} bore right through"
+        );
+        out.push(made(&prompt, [fd, fd, ft + bl], cyl(fd, ft) + cyl(bd, bl) - cyl(bore, ft + bl)));
+    }
+    // Unitless fractions and leading-point decimals are an inch drawing's.
+    let i = 25.4;
+    for (od, id, l, text) in [
+        (0.375, 0.191, 0.5, "round spacer 3/8 OD x .191 ID x 1/2 long"),
+        (0.625, 0.375, 0.75, "bushing 5/8 OD x 3/8 ID x 3/4 long"),
+    ] {
+        out.push(made(text, [od * i, od * i, l * i], tube(od * i, id * i, l * i)));
+    }
+    // Two blind holes that would meet, and a second inch size in millimetres that disagrees.
+    out.push(refused("PIN Ø6 x 20 LG, Ø4 x 12 DP BOTH ENDS", &["BOTH"]));
+    out.push(refused("bushing 5/8 OD x 3/8 ID x 3/4 long, 20 mm long", &["20"]));
+    check(out);
+}
