@@ -304,3 +304,36 @@ fn words_that_place_or_count_without_a_number() {
     out.push(refused("bushing 5/8 OD x 3/8 ID x 3/4 long, 20 mm long", &["20"]));
     check(out);
 }
+
+/// A bore "through its length" runs along the part's own axis: a round part's axis whatever
+/// its proportions (a disc wider than it is long, a flanged bushing whose flange is wider
+/// than the part is long, a cylinder as long as it is wide), a bar's or block's one longest
+/// extent otherwise. The volumes are worked out here: a bore along the axis removes
+/// `π/4·d²·L` of the part's length L, one across it would remove a different amount.
+#[test]
+fn a_bore_through_its_length_runs_along_the_parts_axis() {
+    let mut out = Vec::new();
+    let cyl = |d: f64, l: f64| PI * d * d / 4.0 * l;
+    // Discs and rounds wider than long, and as wide as long (no one longest extent).
+    for (d, l, h) in [(80.0, 20.0, 10.0), (60.0, 60.0, 20.0), (120.0, 15.0, 25.0)] {
+        for prompt in [
+            format!("A cylinder {d} mm in diameter and {l} mm long with a {h} mm hole through its length"),
+            format!("round disc Ø{d} x {l} long, {h} mm bore through the full length"),
+        ] {
+            out.push(made(&prompt, [d, d, l], cyl(d, l) - cyl(h, l)));
+        }
+    }
+    // A flanged bushing wider than it is long: the bore still runs its axis.
+    for (fd, ft, bd, bl, bore) in [(60.0, 5.0, 30.0, 20.0, 16.0), (50.0, 6.0, 24.0, 10.0, 12.0)] {
+        let prompt = format!(
+            "Flanged bushing: flange Ø{fd} x {ft} thick, body Ø{bd} x {bl} long below the flange, Ø{bore} bore through its length"
+        );
+        out.push(made(&prompt, [fd, fd, ft + bl], cyl(fd, ft) + cyl(bd, bl) - cyl(bore, ft + bl)));
+    }
+    // A block: along its one longest extent, on its centre line.
+    for (l, w, h, d) in [(120.0, 40.0, 30.0, 10.0), (90.0, 25.0, 25.0, 8.0)] {
+        let prompt = format!("A block {l} x {w} x {h} mm with a {d} mm hole drilled through its length");
+        out.push(made(&prompt, [l, w, h], l * w * h - cyl(d, l)));
+    }
+    check(out);
+}

@@ -114,6 +114,38 @@ fn line_empty(model: &Model, axis: Axis, at: [f64; 2]) -> Option<bool> {
     Some(true)
 }
 
+/// The part's own axis, the one a bore "through its length" runs along: the common axis of
+/// its round bodies (turned, revolved, coned or polygonal bars — whatever their
+/// proportions: a flanged bushing wider than it is long still has its axis), else the one
+/// axis along which it is longest; `None` where round bodies stand on different axes or two
+/// extents tie for longest with no round body to decide.
+pub fn part_axis(model: &Model) -> Option<Axis> {
+    let round: Vec<Axis> = model
+        .adds
+        .iter()
+        .filter_map(|b| match &b.shape {
+            Shape::Prism {
+                profile: Profile::Circle { .. } | Profile::Annulus { .. } | Profile::Ngon { .. },
+                axis,
+                ..
+            } => Some(*axis),
+            Shape::Cone { axis, .. } | Shape::Torus { axis, .. } => Some(*axis),
+            Shape::Revolve { .. } => Some(Axis::Z),
+            _ => None,
+        })
+        .collect();
+    if let Some(first) = round.first() {
+        return round.iter().all(|a| a == first).then_some(*first);
+    }
+    let size = model.size();
+    let long = size.iter().copied().fold(0.0, f64::max);
+    let axes: Vec<Axis> = Axis::ALL.into_iter().filter(|x| size[x.index()] >= long * (1.0 - 1e-9)).collect();
+    match axes.as_slice() {
+        [x] => Some(*x),
+        _ => None,
+    }
+}
+
 /// The axial length of a round body the second reading sizes.
 fn axial(s: &Solid) -> Option<f64> {
     match *s {
@@ -245,7 +277,8 @@ impl Takeoff<'_> {
                     || (d.is(i, "end") && d.is(i + 1, "to") && d.is(i + 2, "end"))
             });
             let (Some(at), false) = (along, blind) else { continue };
-            // The length the words give the part (its Length role), else its longest extent.
+            // Along the part's own axis (its round bodies', else its one longest extent);
+            // where that cannot be told, along every extent the words' length matches.
             let length = d
                 .dims
                 .iter()
@@ -258,10 +291,14 @@ impl Takeoff<'_> {
                 .map(|(_, x)| x.mm)
                 .next()
                 .unwrap_or(got[2]);
-            let axes: Vec<Axis> = Axis::ALL.into_iter().filter(|a| close(size[a.index()], length)).collect();
+            let axes: Vec<Axis> = match part_axis(model) {
+                Some(a) => vec![a],
+                None => Axis::ALL.into_iter().filter(|a| close(size[a.index()], length)).collect(),
+            };
             if axes.is_empty() {
                 continue;
             }
+            let length = size[axes[0].index()];
             let mut told = false;
             let mut empty = false;
             for a in axes {

@@ -3,6 +3,7 @@
 //! counterbores and countersinks, slots, keyways (on a shaft or in a bore), ring grooves,
 //! and pockets, recesses and sockets cut into a face.
 
+use super::super::account::part_axis;
 use super::super::doc::Role;
 use super::super::lexicon::{CutKind, Noun, ShapeHint};
 use super::super::profile::Profile;
@@ -239,13 +240,16 @@ fn way_axis(r: &mut Reader<'_>, e: usize) -> Res<Option<(Axis, bool)>> {
             } else {
                 continue;
             };
-            let long = size.iter().copied().fold(0.0, f64::max);
-            let axes: Vec<Axis> = Axis::ALL.into_iter().filter(|x| size[x.index()] >= long * (1.0 - 1e-9)).collect();
-            let [x] = axes.as_slice() else {
-                return Err(Refusal::new(d.quote(i, i + n - 1), "the part has no one longest extent to bore along"));
+            // An axis said with it ("through the full length along Z"), else the part's own
+            // axis: its round bodies', whatever their proportions, else its longest extent.
+            let Some(x) = cut_axis(r, e).or_else(|| part_axis(&r.model)) else {
+                return Err(Refusal::new(
+                    d.quote(i, i + n - 1),
+                    "the part has no one axis (round bodies on one axis, or one longest extent) to bore along",
+                ));
             };
             d.mark_range(i, i + n);
-            return Ok(Some((*x, true)));
+            return Ok(Some((x, true)));
         }
     }
     Ok(None)
@@ -385,7 +389,16 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     if at.is_empty() {
         // Through the copies of what it passes through ("through each motor mount").
         let per = tg.iter().find_map(|t| r.built[*t].as_ref().filter(|b| b.at.len() > 1).map(|b| b.at.clone()));
-        at = per.unwrap_or_else(|| vec![[0.0, 0.0]]);
+        // A bore "through its length" runs on the part's centre line, wherever the part
+        // stands (a bar lying along X sits on the floor, its centre line above it).
+        let centre = lengthwise.then(|| {
+            let bodies: Vec<usize> =
+                tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
+            let (u, v) = axis.uv();
+            let (a, b) = (extent(r, &bodies, u), extent(r, &bodies, v));
+            [(a[0] + a[1]) / 2.0, (b[0] + b[1]) / 2.0]
+        });
+        at = per.unwrap_or_else(|| vec![centre.unwrap_or([0.0, 0.0])]);
     }
     if count > 1 && at.len() != count as usize {
         return Err(Refusal::new(
