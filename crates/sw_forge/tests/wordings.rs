@@ -337,3 +337,20 @@ fn a_bore_through_its_length_runs_along_the_parts_axis() {
     }
     check(out);
 }
+
+/// Two lengths of one role joined by "and" ("legs 80 mm and 60 mm", "legs of 60 and 40")
+/// are that role's two values, as "legs 80 x 60" is. Gusset volume: ½·a·b·t.
+#[test]
+fn two_legs_joined_by_and_are_both_legs() {
+    let mut out = Vec::new();
+    for (a, b, t) in [(80.0, 60.0, 8.0), (100.0, 70.0, 6.0), (50.0, 40.0, 5.0)] {
+        for prompt in [
+            format!("Gusset: right-angled triangle, legs {a} mm and {b} mm, {t} mm plate"),
+            format!("Triangular gusset, {t} mm plate, legs {a} x {b}"),
+            format!("gusset plate, right triangle with legs of {a} and {b} mm, {t} mm thick"),
+        ] {
+            out.push(made(&prompt, [a, b, t], 0.5 * a * b * t));
+        }
+    }
+    check(out);
+}
