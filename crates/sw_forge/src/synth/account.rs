@@ -13,7 +13,7 @@
 //! Each is measured on the model itself (its extents, its cuts, which points lie inside it),
 //! never on the first reader's account of the words, so a phrase read as filler cannot pass.
 
-use super::doc::Role;
+use super::doc::{Doc, Role};
 use super::lexicon::{CutKind, Noun};
 use super::model::Model;
 use super::profile::Profile;
@@ -32,8 +32,7 @@ fn clause_end(t: &Takeoff<'_>, h: usize) -> usize {
 
 /// "both ends", "each end", "either end" in `a..b`, not after "through" (a hole through
 /// both ends is one hole).
-pub fn at_both_ends(t: &Takeoff<'_>, a: usize, b: usize) -> Option<usize> {
-    let d = t.doc;
+pub fn at_both_ends(d: &Doc, a: usize, b: usize) -> Option<usize> {
     (a..b.saturating_sub(1)).find(|&i| {
         matches!(d.word(i), Some("both" | "each" | "either"))
             && d.is(i + 1, "end")
@@ -160,7 +159,7 @@ impl Takeoff<'_> {
         let th = &self.things[t];
         let base = th.count.unwrap_or(1).max(1);
         let end = clause_end(self, th.phrase.1);
-        if base == 1 && at_both_ends(self, th.phrase.0, end).is_some() { 2 } else { base }
+        if base == 1 && at_both_ends(self.doc, th.phrase.0, end).is_some() { 2 } else { base }
     }
 
     /// The checks of the words without numbers of their own (see the module's notes).
@@ -179,7 +178,7 @@ impl Takeoff<'_> {
             }
             let n = self.cut_count(t);
             let end = clause_end(self, th.phrase.1);
-            let Some(at) = at_both_ends(self, th.phrase.0, end) else { continue };
+            let Some(at) = at_both_ends(self.doc, th.phrase.0, end) else { continue };
             if n < 2 {
                 continue;
             }
@@ -359,7 +358,6 @@ impl Takeoff<'_> {
 mod tests {
     use std::f64::consts::PI;
 
-    use super::super::doc::Doc;
     use super::super::solid::Body;
     use super::*;
 

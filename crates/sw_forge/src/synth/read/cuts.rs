@@ -3,7 +3,7 @@
 //! counterbores and countersinks, slots, keyways (on a shaft or in a bore), ring grooves,
 //! and pockets, recesses and sockets cut into a face.
 
-use super::super::account::part_axis;
+use super::super::account::{at_both_ends, part_axis};
 use super::super::doc::Role;
 use super::super::lexicon::{CutKind, Noun, ShapeHint};
 use super::super::profile::Profile;
@@ -457,11 +457,7 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         // In the depth's own clause, after it.
         let dc = r.doc;
         let b = (a..dc.len()).find(|&i| dc.sym(i, ',') || dc.sym(i, ';') || dc.sym(i, '.')).unwrap_or(dc.len());
-        let both = (a..b.saturating_sub(1)).find(|&i| {
-            matches!(dc.word(i), Some("both" | "each" | "either"))
-                && dc.is(i + 1, "end")
-                && !(i > 0 && matches!(dc.word(i - 1), Some("through" | "thru")))
-        });
+        let both = at_both_ends(dc, a, b);
         if let Some(i) = both {
             let bodies: Vec<usize> =
                 tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
