@@ -260,3 +260,97 @@ fn a_part_of_a_catalog_object_is_never_the_whole_object() {
         }
     }
 }
+
+/// Words with no number of their own that place or count what the numbers size: blind holes
+/// at both ends, a bore through the length, a body below another, and inch drawings written
+/// without a unit. Each is made as the words say, or refused quoting them — never made
+/// otherwise (the second reading measures the part for each).
+#[test]
+fn words_that_place_or_count_without_a_number() {
+    let mut out = Vec::new();
+    let cyl = |d: f64, l: f64| PI * d * d / 4.0 * l;
+    // (ISO coarse tap drills: M4 3.3, M5 4.2, M6 5.0.)
+    for (d, l, m, tap, depth) in [(8.0, 40.0, 4, 3.3, 10.0), (10.0, 30.0, 5, 4.2, 8.0), (12.0, 50.0, 6, 5.0, 12.0)] {
+        let want = cyl(d, l) - 2.0 * cyl(tap, depth);
+        for prompt in [
+            format!("STANDOFF Ø{d} x {l} LG, M{m} TAPPED x {depth} DP BOTH ENDS"),
+            format!("pin {d} mm diameter, {l} mm long, with an M{m} tapped hole {depth} mm deep at each end"),
+        ] {
+            out.push(made(&prompt, [d, d, l], want));
+        }
+    }
+    for (s, l, h) in [(20.0, 80.0, 6.0), (25.0, 100.0, 10.0), (30.0, 150.0, 12.0)] {
+        let prompt = format!(
+            "A square bar {s} mm across the flats and {l} mm long, with a {h} mm hole bored right through its length"
+        );
+        out.push(made(&prompt, [s, s, l], s * s * l - cyl(h, l)));
+    }
+    for (fd, ft, bd, bl, bore) in [(40.0, 5.0, 25.0, 20.0, 16.0), (30.0, 4.0, 20.0, 12.0, 10.0)] {
+        let prompt = format!(
+            "Flanged bushing: flange Ø{fd} x {ft} thick, body Ø{bd} x {bl} long below the flange, Ø{bore} bore right through"
+        );
+        out.push(made(&prompt, [fd, fd, ft + bl], cyl(fd, ft) + cyl(bd, bl) - cyl(bore, ft + bl)));
+    }
+    // Unitless fractions and leading-point decimals are an inch drawing's.
+    let i = 25.4;
+    for (od, id, l, text) in [
+        (0.375, 0.191, 0.5, "round spacer 3/8 OD x .191 ID x 1/2 long"),
+        (0.625, 0.375, 0.75, "bushing 5/8 OD x 3/8 ID x 3/4 long"),
+    ] {
+        out.push(made(text, [od * i, od * i, l * i], tube(od * i, id * i, l * i)));
+    }
+    // Two blind holes that would meet, and a second inch size in millimetres that disagrees.
+    out.push(refused("PIN Ø6 x 20 LG, Ø4 x 12 DP BOTH ENDS", &["BOTH"]));
+    out.push(refused("bushing 5/8 OD x 3/8 ID x 3/4 long, 20 mm long", &["20"]));
+    check(out);
+}
+
+/// A bore "through its length" runs along the part's own axis: a round part's axis whatever
+/// its proportions (a disc wider than it is long, a flanged bushing whose flange is wider
+/// than the part is long, a cylinder as long as it is wide), a bar's or block's one longest
+/// extent otherwise. The volumes are worked out here: a bore along the axis removes
+/// `π/4·d²·L` of the part's length L, one across it would remove a different amount.
+#[test]
+fn a_bore_through_its_length_runs_along_the_parts_axis() {
+    let mut out = Vec::new();
+    let cyl = |d: f64, l: f64| PI * d * d / 4.0 * l;
+    // Discs and rounds wider than long, and as wide as long (no one longest extent).
+    for (d, l, h) in [(80.0, 20.0, 10.0), (60.0, 60.0, 20.0), (120.0, 15.0, 25.0)] {
+        for prompt in [
+            format!("A cylinder {d} mm in diameter and {l} mm long with a {h} mm hole through its length"),
+            format!("round disc Ø{d} x {l} long, {h} mm bore through the full length"),
+        ] {
+            out.push(made(&prompt, [d, d, l], cyl(d, l) - cyl(h, l)));
+        }
+    }
+    // A flanged bushing wider than it is long: the bore still runs its axis.
+    for (fd, ft, bd, bl, bore) in [(60.0, 5.0, 30.0, 20.0, 16.0), (50.0, 6.0, 24.0, 10.0, 12.0)] {
+        let prompt = format!(
+            "Flanged bushing: flange Ø{fd} x {ft} thick, body Ø{bd} x {bl} long below the flange, Ø{bore} bore through its length"
+        );
+        out.push(made(&prompt, [fd, fd, ft + bl], cyl(fd, ft) + cyl(bd, bl) - cyl(bore, ft + bl)));
+    }
+    // A block: along its one longest extent, on its centre line.
+    for (l, w, h, d) in [(120.0, 40.0, 30.0, 10.0), (90.0, 25.0, 25.0, 8.0)] {
+        let prompt = format!("A block {l} x {w} x {h} mm with a {d} mm hole drilled through its length");
+        out.push(made(&prompt, [l, w, h], l * w * h - cyl(d, l)));
+    }
+    check(out);
+}
+
+/// Two lengths of one role joined by "and" ("legs 80 mm and 60 mm", "legs of 60 and 40")
+/// are that role's two values, as "legs 80 x 60" is. Gusset volume: ½·a·b·t.
+#[test]
+fn two_legs_joined_by_and_are_both_legs() {
+    let mut out = Vec::new();
+    for (a, b, t) in [(80.0, 60.0, 8.0), (100.0, 70.0, 6.0), (50.0, 40.0, 5.0)] {
+        for prompt in [
+            format!("Gusset: right-angled triangle, legs {a} mm and {b} mm, {t} mm plate"),
+            format!("Triangular gusset, {t} mm plate, legs {a} x {b}"),
+            format!("gusset plate, right triangle with legs of {a} and {b} mm, {t} mm thick"),
+        ] {
+            out.push(made(&prompt, [a, b, t], 0.5 * a * b * t));
+        }
+    }
+    check(out);
+}

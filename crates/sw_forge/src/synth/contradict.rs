@@ -267,7 +267,12 @@ impl Takeoff<'_> {
             }
             // A size said by its role that the list of sizes does not have ("70 x 40 x 25
             // … 30 thick"), on a body of three sizes.
-            if lists.len() == 1 && lists[0].len() == 3 && matches!(hint, ShapeHint::Rect) {
+            // (Not a section named in the body's phrase, "ANGLE BRACKET 50 x 50 x 5, 30 WIDE":
+            // its list is the section's designation and the length is said apart.)
+            let section = (th.phrase.0..=th.phrase.1).any(|i| {
+                d.word(i).is_some_and(|w| matches!(super::lexicon::noun(w), Some(Noun::Body(ShapeHint::Section(_)))))
+            });
+            if lists.len() == 1 && lists[0].len() == 3 && matches!(hint, ShapeHint::Rect) && !section {
                 let along = [Role::Length, Role::Width, Role::Height, Role::Thickness, Role::Depth];
                 if let Some(x) = dims.iter().find(|x| {
                     x.list.is_none()

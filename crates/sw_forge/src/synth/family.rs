@@ -974,21 +974,23 @@ fn section(r: &mut Reading<'_>) -> Res<Made> {
     Ok(Made { model, takeoff: Takeoff { extents: sorted([ext2[0], ext2[1], len]), volume: area * len } })
 }
 
+/// Whether word `w` at token `i` is one a family reads: its name, a role, a standard's
+/// designation, a count or a word with no geometry (or one of `extra`, its own shape words).
+fn family_word_read(r: &Reading<'_>, i: usize, w: &str, extra: &[&str]) -> bool {
+    (i >= r.name.0 && i <= r.name.1)
+        || tag_of(w).is_some()
+        || lexicon::is_filler(w)
+        || NO_GEOMETRY.contains(&w)
+        || notation::STANDARDS.contains(&w)
+        || extra.contains(&w)
+        || lexicon::number_word(w).is_some()
+        || matches!(w, "x" | "diameter" | "equally" | "spaced" | "blind" | "hub" | "side" | "sae" | "metric")
+}
+
 /// Every word must be read: a family's name, a role, a count, a standard's designation, or
 /// a word with no geometry. The first word that is none of these ends the family reading.
 fn all_read(r: &Reading<'_>, extra: &[&str]) -> bool {
-    let allowed = |i: usize, w: &str| {
-        (i >= r.name.0 && i <= r.name.1)
-            || tag_of(w).is_some()
-            || lexicon::is_filler(w)
-            || NO_GEOMETRY.contains(&w)
-            || notation::STANDARDS.contains(&w)
-            || extra.contains(&w)
-            || lexicon::number_word(w).is_some()
-            || matches!(w, "x" | "diameter" | "equally" | "spaced" | "blind" | "hub" | "side" | "sae" | "metric")
-            || r.doc.is_used(i)
-    };
-    r.words.iter().all(|(i, w)| allowed(*i, w))
+    r.words.iter().all(|(i, w)| family_word_read(r, *i, w, extra) || r.doc.is_used(*i))
         && r.lens.iter().all(|l| l.used)
         && r.doc.toks.iter().enumerate().all(|(i, t)| match t.kind {
             // Counts, and a standard's number.
@@ -1029,7 +1031,13 @@ pub fn read(doc: &Doc) -> Option<Res<(&'static str, Model)>> {
         Family::Pin => pin(&mut r),
         Family::Angle | Family::Channel | Family::Beam | Family::Tee | Family::Gusset => section(&mut r),
     };
-    let extra: Vec<&str> = owner.iter().map(String::as_str).collect();
+    let mut extra: Vec<&str> = owner.iter().map(String::as_str).collect();
+    // Words that restate the family's own shape.
+    extra.extend_from_slice(match r.family {
+        Family::Gusset => &["triangle", "right-angled", "right-angle", "triangular"][..],
+        Family::Angle => &["l", "l-shaped", "outside"][..],
+        _ => &[][..],
+    });
     let name = match r.family {
         Family::Ring => "family:ring",
         Family::Flange => "family:flange",
@@ -1047,19 +1055,7 @@ pub fn read(doc: &Doc) -> Option<Res<(&'static str, Model)>> {
     };
     match made {
         // A refusal of the family's own stands only when the family read every word.
-        Err(e) => {
-            let words_ok = r.words.iter().all(|(i, w)| {
-                (*i >= r.name.0 && *i <= r.name.1)
-                    || tag_of(w).is_some()
-                    || lexicon::is_filler(w)
-                    || NO_GEOMETRY.contains(&w.as_str())
-                    || notation::STANDARDS.contains(&w.as_str())
-                    || extra.contains(&w.as_str())
-                    || lexicon::number_word(w).is_some()
-                    || matches!(w.as_str(), "x" | "equally" | "spaced" | "blind" | "hub" | "side" | "sae" | "metric")
-            });
-            words_ok.then_some(Err(e))
-        }
+        Err(e) => r.words.iter().all(|(i, w)| family_word_read(&r, *i, w, &extra)).then_some(Err(e)),
         Ok(m) => {
             if !all_read(&r, &extra) {
                 return None;

@@ -12,6 +12,7 @@
 //! when every overlap is known, its through-holes when simple — comes from the same model
 //! analytically, so the validator can check the executed code against it.
 
+pub mod account;
 pub mod contradict;
 pub mod doc;
 pub mod family;
@@ -126,7 +127,10 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
         // A named part family reads what the feature language could not: its template's
         // parameters bound by role, checked against its own formulas.
         Err(r) => match family::read(&d) {
-            Some(Ok((template, m))) => return Ok(finish(prompt, template, &m)),
+            Some(Ok((template, m))) => {
+                takeoff.account(&m).map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
+                return Ok(finish(prompt, template, &m));
+            }
             // The feature language's words stay quoted; the family says what it lacks.
             Some(Err(f)) => {
                 return Err(SynthError::Unread {
@@ -139,6 +143,7 @@ pub fn synthesize(prompt: &str) -> Result<Synthesis, SynthError> {
     };
     // The second reading: what the words alone say the part measures.
     takeoff.check(&model).map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
+    takeoff.account(&model).map_err(|x| SynthError::Unread { phrase: x.phrase, reason: x.reason })?;
     // A named part family that reads every word the same sizes bound by their roles must
     // agree with the feature language; where they differ, one of them misread the words.
     if let Some(Ok((_, fm))) = family::read(&d) {

@@ -514,11 +514,38 @@ fn marker(toks: &[Token], i: usize) -> bool {
 }
 
 /// The unit of a prompt's numbers written without one: inches when every unit it writes is
-/// the inch, else millimetres (a drawing's default; "50 x 50 x 6, 1 m length" is in mm).
-fn prompt_unit(toks: &[Token]) -> f64 {
+/// the inch, or when it writes no unit at all and writes its numbers as inch drawings do
+/// (binary fractions "3/8", "1-1/4", decimals with no leading digit ".191"); else
+/// millimetres (a drawing's default; "50 x 50 x 6, 1 m length" is in mm).
+fn prompt_unit(toks: &[Token], text: &str) -> f64 {
     let units: Vec<f64> =
         toks.iter().filter_map(|t| if let Tk::Num { unit: Some(f), .. } = t.kind { Some(f) } else { None }).collect();
-    if !units.is_empty() && units.iter().all(|f| (f - 25.4).abs() < 1e-9) { 25.4 } else { 1.0 }
+    if !units.is_empty() {
+        return if units.iter().all(|f| (f - 25.4).abs() < 1e-9) { 25.4 } else { 1.0 };
+    }
+    let inch_written = toks.iter().any(|t| {
+        let Tk::Num { unit: None, .. } = t.kind else { return false };
+        let raw = text.get(t.start..t.end).unwrap_or("").trim();
+        inch_notation(raw)
+    });
+    if inch_written { 25.4 } else { 1.0 }
+}
+
+/// Whether a number is written the way only inch drawings write lengths: a fraction of a
+/// power of two ("3/8", "1-1/4", "7/16") or a decimal with no digit before its point (".191").
+fn inch_notation(raw: &str) -> bool {
+    let raw = raw.trim_start_matches(['+', '-']);
+    if raw.starts_with('.') && raw.len() > 1 && raw[1..].chars().all(|c| c.is_ascii_digit()) {
+        return true;
+    }
+    let frac = raw.rsplit(['-', ' ']).next().unwrap_or(raw);
+    match frac.split_once('/') {
+        Some((a, b)) => {
+            let (Ok(a), Ok(b)) = (a.parse::<u32>(), b.parse::<u32>()) else { return false };
+            a > 0 && a < b && b.is_power_of_two() && (2..=64).contains(&b)
+        }
+        None => false,
+    }
 }
 
 /// Drawing-note lengths: numbers written without a unit that the words around them make
@@ -526,7 +553,7 @@ fn prompt_unit(toks: &[Token]) -> f64 {
 /// prompt's unit; a chamfer's "1 x 45°"; spacings "on 50 centres"; and holes named by
 /// their callout alone ("4x Ø6.6 thru", "M6 clearance").
 fn notes(toks: &mut Vec<Token>, text: &str) {
-    let unit = prompt_unit(toks);
+    let unit = prompt_unit(toks, text);
     let n = toks.len();
     let word = |toks: &[Token], i: usize| toks.get(i).and_then(Token::word).map(str::to_string);
     let is_role = |w: &str| super::doc::role_of(w).is_some() && !matches!(w, "side" | "sided" | "extruded" | "extrude");

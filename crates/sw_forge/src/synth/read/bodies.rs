@@ -216,7 +216,10 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
     // "A plate with four posts": a body the part is said to have stands on the one before.
     let with = r.els[e].mentions.first().is_some_and(|m| r.mentions[*m].prep.as_deref() == Some("with"));
     let on_top = with || r.says(e, "top") || r.says(e, "topped") || r.says(e, "above") || r.says(e, "on");
+    // "a body … below the flange": under the body before it.
+    let below = ["below", "under", "beneath", "underneath"].iter().any(|w| r.says(e, w));
     match prev {
+        Some(p) if below && !r.says(e, "top") => Ok([p[0] - l, p[0]]),
         Some(p) if on_top => {
             mark_on_top(r, e);
             Ok([p[1], p[1] + l])

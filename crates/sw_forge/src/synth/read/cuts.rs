@@ -3,6 +3,7 @@
 //! counterbores and countersinks, slots, keyways (on a shaft or in a bore), ring grooves,
 //! and pockets, recesses and sockets cut into a face.
 
+use super::super::account::{at_both_ends, part_axis};
 use super::super::doc::Role;
 use super::super::lexicon::{CutKind, Noun, ShapeHint};
 use super::super::profile::Profile;
@@ -202,7 +203,7 @@ fn cut_axis(r: &Reader<'_>, e: usize) -> Option<Axis> {
 
 /// "through the 40 way", "through the 1.5 in way": along the axis on which the part
 /// measures that length (one axis only).
-fn way_axis(r: &mut Reader<'_>, e: usize) -> Res<Option<Axis>> {
+fn way_axis(r: &mut Reader<'_>, e: usize) -> Res<Option<(Axis, bool)>> {
     let d = r.doc;
     let size = r.model.size();
     for k in r.els[e].dims.clone() {
@@ -220,7 +221,36 @@ fn way_axis(r: &mut Reader<'_>, e: usize) -> Res<Option<Axis>> {
         };
         r.used_dims[k] = true;
         d.mark_range(dm.tok, dm.tok + 2);
-        return Ok(Some(*a));
+        return Ok(Some((*a, false)));
+    }
+    // "through its length", "lengthwise", "end to end": along the part's longest extent.
+    for (a, b) in r.sentences_of(e) {
+        for i in a..b {
+            let n = if matches!(d.word(i), Some("through" | "thru" | "along"))
+                && matches!(d.word(i + 1), Some("its" | "the"))
+                && d.is(i + 2, "length")
+            {
+                3
+            } else if matches!(d.word(i), Some("full" | "entire" | "whole")) && d.is(i + 1, "length") {
+                2
+            } else if matches!(d.word(i), Some("lengthwise" | "lengthways")) {
+                1
+            } else if d.is(i, "end") && d.is(i + 1, "to") && d.is(i + 2, "end") {
+                3
+            } else {
+                continue;
+            };
+            // An axis said with it ("through the full length along Z"), else the part's own
+            // axis: its round bodies', whatever their proportions, else its longest extent.
+            let Some(x) = cut_axis(r, e).or_else(|| part_axis(&r.model)) else {
+                return Err(Refusal::new(
+                    d.quote(i, i + n - 1),
+                    "the part has no one axis (round bodies on one axis, or one longest extent) to bore along",
+                ));
+            };
+            d.mark_range(i, i + n);
+            return Ok(Some((x, true)));
+        }
     }
     Ok(None)
 }
@@ -316,8 +346,10 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         order.sort_by(|a, b| s[*a].total_cmp(&s[*b]));
         (s[order[0]] <= 0.5 * s[order[1]]).then(|| Axis::ALL[order[0]])
     });
-    let axis = match way_axis(r, e)? {
-        Some(a) => Some(a),
+    let way = way_axis(r, e)?;
+    let lengthwise = way.is_some_and(|w| w.1);
+    let axis = match way {
+        Some((a, _)) => Some(a),
         None => cut_axis(r, e),
     };
     // Across a round body standing on Z, unless its axis is said: a radial or cross hole.
@@ -332,7 +364,7 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let radial = r.says(e, "radial")
         || r.says(e, "radially")
         || named_radial
-        || (axis != Axis::Z && by_points.is_none() && thin != Some(axis));
+        || (axis != Axis::Z && by_points.is_none() && thin != Some(axis) && !lengthwise);
     if radial && axis != Axis::Z {
         return radial_hole(r, e, d, axis, &tg);
     }
@@ -357,7 +389,16 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     if at.is_empty() {
         // Through the copies of what it passes through ("through each motor mount").
         let per = tg.iter().find_map(|t| r.built[*t].as_ref().filter(|b| b.at.len() > 1).map(|b| b.at.clone()));
-        at = per.unwrap_or_else(|| vec![[0.0, 0.0]]);
+        // A bore "through its length" runs on the part's centre line, wherever the part
+        // stands (a bar lying along X sits on the floor, its centre line above it).
+        let centre = lengthwise.then(|| {
+            let bodies: Vec<usize> =
+                tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
+            let (u, v) = axis.uv();
+            let (a, b) = (extent(r, &bodies, u), extent(r, &bodies, v));
+            [(a[0] + a[1]) / 2.0, (b[0] + b[1]) / 2.0]
+        });
+        at = per.unwrap_or_else(|| vec![centre.unwrap_or([0.0, 0.0])]);
     }
     if count > 1 && at.len() != count as usize {
         return Err(Refusal::new(
@@ -377,6 +418,7 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     let depth = r
         .find(e, &[Role::Depth], &[], &["counterbore", "countersink"])
         .filter(|k| sink_at.is_none_or(|s| r.dim(*k).tok < s));
+    let depth_tok = depth.map(|k| r.dim(k).tok);
     let depth = depth.map(|k| {
         r.used_dims[k] = true;
         r.dim(k).mm
@@ -409,13 +451,40 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
         }
     };
     let profile = if square { Profile::Rect { w: d, h: d } } else { Profile::Circle { d } };
+    // A blind hole "at both ends" ("M5 tapped x 8 dp both ends"): one from each end face.
+    let mut spans = vec![span];
+    if let (Some(dp), Some(a)) = (depth, depth_tok) {
+        // In the depth's own clause, after it.
+        let dc = r.doc;
+        let b = (a..dc.len()).find(|&i| dc.sym(i, ',') || dc.sym(i, ';') || dc.sym(i, '.')).unwrap_or(dc.len());
+        let both = at_both_ends(dc, a, b);
+        if let Some(i) = both {
+            let bodies: Vec<usize> =
+                tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
+            let full = extent(r, &bodies, axis);
+            if 2.0 * dp >= full[1] - full[0] - 1e-9 {
+                return Err(Refusal::new(
+                    r.doc.quote(i, i + 1),
+                    format!(
+                        "two blind holes {} mm deep from the ends of a part {} mm long would meet",
+                        super::super::num::n(dp),
+                        super::super::num::n(full[1] - full[0])
+                    ),
+                ));
+            }
+            r.doc.mark_range(i, i + 2);
+            spans = vec![[full[0], full[0] + dp], [full[1] - dp, full[1]]];
+        }
+    }
     let mut bodies = Vec::new();
-    for p in &at {
-        bodies.push(push_cut(
-            r,
-            &r.els[e].noun.clone(),
-            Shape::Prism { profile: profile.clone(), axis, at: *p, rot: 0.0, from: span[0], to: span[1] },
-        ));
+    for span in &spans {
+        for p in &at {
+            bodies.push(push_cut(
+                r,
+                &r.els[e].noun.clone(),
+                Shape::Prism { profile: profile.clone(), axis, at: *p, rot: 0.0, from: span[0], to: span[1] },
+            ));
+        }
     }
     // A counterbore or countersink with them: on the face the holes open into (+ end).
     counterbore(r, e, d, axis, &at, span)?;
