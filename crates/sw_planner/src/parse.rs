@@ -293,6 +293,7 @@ impl<'a> Parser<'a> {
             // Read on as before: the verb only opens the robot's work (a word that is also a
             // noun, "a Panda, screws and a bin", stays a noun).
             self.note_handling_verb(i);
+            self.pronoun_worked_on(i);
             if let Some(next) = self.try_dims(i)? {
                 i = next;
                 continue;
@@ -781,6 +782,20 @@ impl<'a> Parser<'a> {
                     r.word = word;
                     return;
                 }
+                // "a mobile robot with an arm", "a mobile base carrying a UR5e": one robot,
+                // an arm on a base that drives.
+                let after_with = start >= 1 && matches!(self.word(start - 1), "with" | "carrying");
+                if after_with
+                    && word.kind == sw_robots::RobotKind::Arm
+                    && let Some(Subject::Robot(prev)) = self.subject.clone()
+                    && let Some(r) = self.draft.robots.get_mut(prev)
+                    && r.word.kind == sw_robots::RobotKind::MobileBase
+                {
+                    r.word = word;
+                    r.phrase = format!("{} with {}", r.phrase, p.text);
+                    self.make_mobile_manipulator(prev);
+                    return;
+                }
                 // "the robot", "the arm": the robot already introduced.
                 if self.is_definite(start)
                     && let Some(idx) = self.resolve_robot(word.wants, word.kind, !word.exact)
@@ -833,6 +848,13 @@ impl<'a> Parser<'a> {
                     } else if self.draft.robots[idx].word.kind == sw_robots::RobotKind::Arm {
                         self.draft.robots[idx].near = Some(host);
                     }
+                } else if after_with
+                    && let Some(g) = self.with_subject.clone()
+                    && self.draft.robots[idx].word.kind == sw_robots::RobotKind::Arm
+                {
+                    // "a lathe with a robot arm", "packing station with a cobot": the thing
+                    // it comes with is its work.
+                    self.draft.robots[idx].near = Some(g);
                 }
                 self.subject = Some(Subject::Robot(idx));
                 self.mentions.push(Subject::Robot(idx));
@@ -1154,7 +1176,9 @@ impl<'a> Parser<'a> {
     /// A verb of handling said of a robot ("a Panda sorts …", "a UR5e picking …", "…, and
     /// places them …"): what the clause names from here on is the robot's work.
     fn note_handling_verb(&mut self, i: usize) {
-        if !crate::phrase::is_handling_verb(self.word(i)) {
+        // "… a robot arm to stand it upright", "… it to close the fridge door": after "to", a
+        // verb of doing something to a thing (which elsewhere is an adjective or a noun).
+        if !self.handling_verb_at(i) {
             return;
         }
         // "the sorting", "two stacks": after an article, a possessive or a count the word is a
@@ -1184,6 +1208,43 @@ impl<'a> Parser<'a> {
         };
         self.working = Some(r);
         self.last_worker = Some(r);
+        // A mobile robot said to handle things has an arm: the mobile manipulator (a
+        // TurtleBot named as such stays one, and one that only carries things, "brings a
+        // shelf pod", "delivers parcels", needs none).
+        if !crate::phrase::is_transport_verb(self.word(i))
+            && self.draft.robots.get(r).is_some_and(|x| x.word.kind == sw_robots::RobotKind::MobileBase && !x.word.exact)
+        {
+            self.make_mobile_manipulator(r);
+        }
+    }
+
+    /// Whether the word at `i` is a verb of handling: one of the known verbs, or after "to"
+    /// a verb of operating a thing ("to open it", "to stand it upright").
+    fn handling_verb_at(&self, i: usize) -> bool {
+        let w = self.word(i);
+        if crate::phrase::is_handling_verb(w) {
+            return true;
+        }
+        i >= 1
+            && self.word(i - 1) == "to"
+            && crate::phrase::is_operating_verb(w)
+            && self.toks.get(i + 1).is_some_and(|t| t.kind == TokenKind::Word)
+    }
+
+    /// "a sawyer arm to open it", "a UR5e unloading them": the thing a pronoun after a verb
+    /// of handling refers to is the robot's work.
+    fn pronoun_worked_on(&mut self, i: usize) {
+        if self.working.is_none() || self.used[i] || i == 0 || !self.handling_verb_at(i - 1) {
+            return;
+        }
+        let w = self.word(i).to_string();
+        if !matches!(w.as_str(), "it" | "them") {
+            return;
+        }
+        if let Some(Subject::Group(g)) = self.resolve_pronoun(&w) {
+            self.worked_on(&g);
+            self.used[i] = true;
+        }
     }
 
     /// A thing named in a robot's clause of handling is its work: the robot reaches it.
