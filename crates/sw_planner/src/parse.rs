@@ -294,6 +294,21 @@ impl<'a> Parser<'a> {
             // noun, "a Panda, screws and a bin", stays a noun).
             self.note_handling_verb(i);
             self.pronoun_worked_on(i);
+            // "boxes onto two pallets, one either side of the robot": "one" before a place is
+            // one of the group counted last, not of the clause's subject.
+            if self.word(i) == "one"
+                && i >= 1
+                && self.toks[i - 1].kind == TokenKind::Comma
+                && crate::cues::cue_at(&self.toks, i + 1).is_some()
+                && !matches!(self.subject, Some(Subject::Robot(_)))
+                && let Some(g) =
+                    self.draft.groups.iter().rev().find(|g| g.count.is_some_and(|c| c >= 2.0)).map(|g| g.id.clone())
+            {
+                self.subject = Some(Subject::Group(g));
+                self.used[i] = true;
+                i += 1;
+                continue;
+            }
             if let Some(next) = self.try_dims(i)? {
                 i = next;
                 continue;
@@ -432,10 +447,19 @@ impl<'a> Parser<'a> {
             let robot = format!("@robot:{r}");
             self.draft.relations.iter().any(|(s, k)| s == g && k.targets().contains(&robot.as_str()))
         };
+        // What the robot's other work is put on ("boxes onto two pallets, one either side of
+        // the robot") is its work all the same.
+        let carries_work = |g: &str, r: usize| {
+            self.work.iter().any(|(x, w)| {
+                *x == r
+                    && w != g
+                    && self.draft.relations.iter().any(|(s, k)| s == w && matches!(k, RelationKind::On { target } if target == g))
+            })
+        };
         let work: Vec<(usize, RelationKind)> = self
             .work
             .iter()
-            .filter(|(r, g)| !placed_by(g, *r))
+            .filter(|(r, g)| !placed_by(g, *r) || carries_work(g, *r))
             .map(|(r, g)| (*r, RelationKind::Reach { target: g.clone() }))
             .filter(|w| !self.draft.robot_relations.contains(w))
             .collect();

@@ -1807,9 +1807,37 @@ fn a_robot_on_each_of_several_things_is_one_per_thing() {
         let p = ok(prompt);
         assert_eq!(robot(&p, model).count, n, "{prompt:?}\n{}", dump(&p));
     }
+    // "loading both", "tending each": one robot's work, not one robot each.
+    for prompt in [
+        "2 CNC machines side by side, a UR10e on a pedestal in front of them loading both",
+        "two lathes and a robot arm tending each",
+    ] {
+        let p = ok(prompt);
+        assert_eq!(p.robots.iter().map(|r| r.count).sum::<u32>(), 1, "{prompt:?}\n{}", dump(&p));
+    }
     // One host: one robot.
     let p = ok("a bench and a Panda on each side of it");
     assert!(p.robots.iter().map(|r| r.count).sum::<u32>() <= 2, "{}", dump(&p));
     let p = ok("a table with a panda on it");
     assert_eq!(robot(&p, "panda").count, 1);
+}
+
+#[test]
+fn one_before_a_place_is_one_of_the_group_counted_last() {
+    // "one either side of" after a counted group that is not the clause's subject: one of
+    // that group, and the count said is not carried over to another noun.
+    let p = ok("a UR10 palletizing cartons off a conveyor onto 2 pallets, one on either side of the robot");
+    let arm = robot(&p, "ur10e").id.clone();
+    let pallet = group(&p, "pallet").id.clone();
+    assert_rel(&p, &pallet, RelationKind::OnEachSideOf { target: arm.clone() });
+    assert!(reaches(&p, &arm, &pallet), "{}", dump(&p));
+    assert_eq!(group(&p, "conveyor").count, 1, "{}", dump(&p));
+    let p = ok("a robot arm stacking crates on two pallets, one either side of it");
+    assert_rel(&p, &group(&p, "pallet").id, RelationKind::OnEachSideOf { target: robot(&p, "ur5e").id.clone() });
+    // The subject itself counted: unchanged.
+    let p = ok("4 beds, one in each corner");
+    assert_eq!(group(&p, "bed").count, 4);
+    // Things merely placed round a robot are not its work.
+    let p = ok("a UR5e picking parts, three fences around the robot");
+    assert!(!reaches(&p, &robot(&p, "ur5e").id, &group(&p, "safety_fence").id), "{}", dump(&p));
 }

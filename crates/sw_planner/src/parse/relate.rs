@@ -133,7 +133,11 @@ impl Parser<'_> {
             let distributive = self.each_before(j) || matches!(self.word(j), "each" | "both");
             // "a Panda on each bench", "two tables, a UR5e at each", "an arm at every one of
             // the 4 stations": one robot (or the count said) for every instance.
+            // A verb's object is not a place: "loading both", "tending each" are one robot's
+            // work on all of them.
+            let place = cue != Cue::Tend || self.word(i) == "at";
             if distributive
+                && place
                 && matches!(cue, Cue::Tend | Cue::NextTo | Cue::InFront | Cue::On | Cue::Near | Cue::Behind)
                 && let Some(Subject::Robot(r)) = self.subject.clone()
             {
