@@ -281,9 +281,10 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
         plan.relations.push(Relation { subject: id.clone(), kind: kind.clone() });
         // An arm between two things works on both ("a robot arm between the mixer and
         // the blender", "a cobot between two conveyors").
-        let arm = plan.robots.iter().any(|r| {
-            &r.id == id && sw_robots::find(&r.model).is_some_and(|x| x.kind == sw_robots::RobotKind::Arm)
-        });
+        let arm = plan
+            .robots
+            .iter()
+            .any(|r| &r.id == id && sw_robots::find(&r.model).is_some_and(|x| x.kind == sw_robots::RobotKind::Arm));
         if let RelationKind::Between { first, second } = kind
             && arm
         {

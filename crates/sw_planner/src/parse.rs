@@ -453,7 +453,11 @@ impl<'a> Parser<'a> {
             self.work.iter().any(|(x, w)| {
                 *x == r
                     && w != g
-                    && self.draft.relations.iter().any(|(s, k)| s == w && matches!(k, RelationKind::On { target } if target == g))
+                    && self
+                        .draft
+                        .relations
+                        .iter()
+                        .any(|(s, k)| s == w && matches!(k, RelationKind::On { target } if target == g))
             })
         };
         let work: Vec<(usize, RelationKind)> = self
@@ -1236,7 +1240,11 @@ impl<'a> Parser<'a> {
         // TurtleBot named as such stays one, and one that only carries things, "brings a
         // shelf pod", "delivers parcels", needs none).
         if !crate::phrase::is_transport_verb(self.word(i))
-            && self.draft.robots.get(r).is_some_and(|x| x.word.kind == sw_robots::RobotKind::MobileBase && !x.word.exact)
+            && self
+                .draft
+                .robots
+                .get(r)
+                .is_some_and(|x| x.word.kind == sw_robots::RobotKind::MobileBase && !x.word.exact)
         {
             self.make_mobile_manipulator(r);
         }
