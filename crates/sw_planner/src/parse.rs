@@ -294,6 +294,10 @@ impl<'a> Parser<'a> {
             // noun, "a Panda, screws and a bin", stays a noun).
             self.note_handling_verb(i);
             self.pronoun_worked_on(i);
+            if let Some(next) = self.try_bare_place_of_robot(i) {
+                i = next;
+                continue;
+            }
             // "boxes onto two pallets, one either side of the robot": "one" before a place is
             // one of the group counted last, not of the clause's subject.
             if self.word(i) == "one"
@@ -1248,6 +1252,35 @@ impl<'a> Parser<'a> {
         {
             self.make_mobile_manipulator(r);
         }
+    }
+
+    /// "…, franka nearby", "UR5 behind", "a robot arm close by": a robot placed by an adverb
+    /// with nothing after it is placed by the scene's first thing, and works at it.
+    fn try_bare_place_of_robot(&mut self, i: usize) -> Option<usize> {
+        let Some(Subject::Robot(r)) = self.subject.clone() else { return None };
+        let ends = |k: usize| self.toks.get(k).is_none_or(|t| matches!(t.kind, TokenKind::Stop | TokenKind::Comma));
+        let (behind, len) = match self.word(i) {
+            "nearby" | "alongside" => (false, 1),
+            "close" | "near" if self.word(i + 1) == "by" => (false, 2),
+            "behind" | "beside" => (self.word(i) == "behind", 1),
+            _ => return None,
+        };
+        if !ends(i + len) {
+            return None;
+        }
+        let first = self.draft.groups.first()?.id.clone();
+        let robot = self.draft.robots.get_mut(r)?;
+        if robot.near.is_some() {
+            return None;
+        }
+        let mounted = matches!(robot.mount, Mount::OnSurface { .. });
+        if !mounted {
+            robot.near = Some(first.clone());
+        }
+        let kind = if behind { RelationKind::Behind { target: first } } else { RelationKind::Near { target: first } };
+        self.draft.robot_relations.push((r, kind));
+        self.mark(i, i + len);
+        Some(i + len)
     }
 
     /// Whether the word at `i` is a verb of handling: one of the known verbs, or after "to"
