@@ -1254,15 +1254,15 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// "…, franka nearby", "UR5 behind", "a robot arm close by": a robot placed by an adverb
+    /// "…, franka nearby", "a robot arm close by": a robot placed by an adverb
     /// with nothing after it is placed by the scene's first thing, and works at it.
     fn try_bare_place_of_robot(&mut self, i: usize) -> Option<usize> {
         let Some(Subject::Robot(r)) = self.subject.clone() else { return None };
         let ends = |k: usize| self.toks.get(k).is_none_or(|t| matches!(t.kind, TokenKind::Stop | TokenKind::Comma));
-        let (behind, len) = match self.word(i) {
-            "nearby" | "alongside" => (false, 1),
-            "close" | "near" if self.word(i + 1) == "by" => (false, 2),
-            "behind" | "beside" => (self.word(i) == "behind", 1),
+        // (A bare "behind" is read with the arm's mount: "a panda mounted behind".)
+        let len = match self.word(i) {
+            "nearby" | "alongside" => 1,
+            "close" | "near" if self.word(i + 1) == "by" => 2,
             _ => return None,
         };
         if !ends(i + len) {
@@ -1277,8 +1277,7 @@ impl<'a> Parser<'a> {
         if !mounted {
             robot.near = Some(first.clone());
         }
-        let kind = if behind { RelationKind::Behind { target: first } } else { RelationKind::Near { target: first } };
-        self.draft.robot_relations.push((r, kind));
+        self.draft.robot_relations.push((r, RelationKind::Near { target: first }));
         self.mark(i, i + len);
         Some(i + len)
     }

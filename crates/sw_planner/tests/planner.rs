@@ -1843,11 +1843,11 @@ fn one_before_a_place_is_one_of_the_group_counted_last() {
 }
 
 #[test]
-fn a_robot_placed_by_a_bare_adverb_works_at_the_scenes_first_thing() {
+fn a_robot_placed_nearby_works_at_the_scenes_first_thing() {
     for (prompt, cat, model) in [
         ("basket on the rug, franka nearby", "shopping_basket", "panda"),
         ("a lathe against the wall. A robot arm close by.", "lathe", "ur5e"),
-        ("cnc machine, ur10 behind", "machine", "ur10e"),
+        ("cnc machine, ur10 alongside", "machine", "ur10e"),
     ] {
         let p = ok(prompt);
         let arm = robot(&p, model).id.clone();
@@ -1855,6 +1855,7 @@ fn a_robot_placed_by_a_bare_adverb_works_at_the_scenes_first_thing() {
         assert!(not_understood(&p).is_empty(), "{prompt:?}: {:?}", not_understood(&p));
     }
     // An adverb with a target of its own is that relation, not this one.
-    let p = ok("a lathe and a mill, a robot arm behind the mill");
-    assert_rel(&p, &robot(&p, "ur5e").id, RelationKind::Behind { target: group(&p, "machine").id.clone() });
+    let p = ok("a lathe and a mill, a robot arm close by the mill");
+    assert!(reaches(&p, &robot(&p, "ur5e").id, &group(&p, "machine").id), "{}", dump(&p));
+    assert!(!reaches(&p, &robot(&p, "ur5e").id, &group(&p, "lathe").id), "{}", dump(&p));
 }
