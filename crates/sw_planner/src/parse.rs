@@ -294,6 +294,10 @@ impl<'a> Parser<'a> {
             // noun, "a Panda, screws and a bin", stays a noun).
             self.note_handling_verb(i);
             self.pronoun_worked_on(i);
+            if let Some(next) = self.try_possessive_side(i) {
+                i = next;
+                continue;
+            }
             if let Some(next) = self.try_bare_place_of_robot(i) {
                 i = next;
                 continue;
@@ -1280,6 +1284,35 @@ impl<'a> Parser<'a> {
         self.draft.robot_relations.push((r, RelationKind::Near { target: first }));
         self.mark(i, i + len);
         Some(i + len)
+    }
+
+    /// "a tote to its left", "parts table on its left", "bins at their right-hand side": beside
+    /// what the possessive refers to (a robot included).
+    fn try_possessive_side(&mut self, i: usize) -> Option<usize> {
+        if !matches!(self.word(i), "to" | "on" | "at" | "by") || !matches!(self.word(i + 2), "left" | "right" | "side")
+        {
+            return None;
+        }
+        let pronoun = match self.word(i + 1) {
+            "its" => "it",
+            "their" => "they",
+            _ => return None,
+        };
+        let mut end = i + 3;
+        if self.word(end) == "hand" {
+            end += 1;
+        }
+        if self.word(end) == "side" && self.word(i + 2) != "side" {
+            end += 1;
+        }
+        let subject = self.subject.clone()?;
+        let target = match self.resolve_pronoun(pronoun)? {
+            Subject::Group(g) => g,
+            Subject::Robot(r) => format!("@robot:{r}"),
+        };
+        self.mark(i, end);
+        self.apply(&subject, Cue::NextTo, vec![target]);
+        Some(end)
     }
 
     /// Whether the word at `i` is a verb of handling: one of the known verbs, or after "to"

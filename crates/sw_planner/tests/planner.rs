@@ -1859,3 +1859,31 @@ fn a_robot_placed_nearby_works_at_the_scenes_first_thing() {
     assert!(reaches(&p, &robot(&p, "ur5e").id, &group(&p, "machine").id), "{}", dump(&p));
     assert!(!reaches(&p, &robot(&p, "ur5e").id, &group(&p, "lathe").id), "{}", dump(&p));
 }
+
+#[test]
+fn a_possessive_side_is_beside_what_it_refers_to() {
+    // "to its left", "on its right-hand side": next to the thing (or robot) "its" names.
+    let p = ok("UR5e on a table, a tote to its left");
+    let arm = robot(&p, "ur5e").id.clone();
+    let beside: Vec<&str> = p
+        .relations
+        .iter()
+        .filter(|r| r.kind == RelationKind::NextTo { target: arm.clone() })
+        .map(|r| r.subject.as_str())
+        .collect();
+    assert!(!beside.is_empty(), "{}", dump(&p));
+    for b in beside {
+        assert!(reaches(&p, &arm, b), "the arm reaches what stands beside it on its table\n{}", dump(&p));
+    }
+    // Said of the robot's clause, the table is beside the arm either way round: its work.
+    let p = ok("ur10 bolted to the floor tending a cnc machine, parts table on its left hand side");
+    let arm = robot(&p, "ur10e").id.clone();
+    let table = group(&p, "table").id.clone();
+    let beside =
+        p.relations.iter().any(|r| r.subject == table && r.kind == RelationKind::NextTo { target: arm.clone() })
+            || robot(&p, "ur10e").near.as_deref() == Some(table.as_str());
+    assert!(beside && reaches(&p, &arm, &table), "{}", dump(&p));
+    assert!(not_understood(&p).is_empty(), "{:?}", not_understood(&p));
+    let p = ok("a sofa, a floor lamp on its right side");
+    assert_rel(&p, &group(&p, "floor_lamp").id, RelationKind::NextTo { target: group(&p, "sofa").id.clone() });
+}

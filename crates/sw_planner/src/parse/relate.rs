@@ -141,18 +141,7 @@ impl Parser<'_> {
                 && matches!(cue, Cue::Tend | Cue::NextTo | Cue::InFront | Cue::On | Cue::Near | Cue::Behind)
                 && let Some(Subject::Robot(r)) = self.subject.clone()
             {
-                let pronoun = j > 0
-                    && matches!(self.word(j - 1), "each" | "both" | "all")
-                    && self.phrase_at(j, true, Bare::Target).ok().flatten().is_none();
-                let found = if pronoun {
-                    match self.resolve_pronoun("they") {
-                        Some(Subject::Group(h)) => Some((h, j)),
-                        _ => None,
-                    }
-                } else {
-                    self.target_at(j, &cue)
-                };
-                let (target, next) = found?;
+                let (target, next) = self.distributed_over(j, &cue)?;
                 if !target.starts_with('@') {
                     self.mark(i, next);
                     let hosts = self.group(&target).and_then(|g| g.count).filter(|c| *c > 1.0);
@@ -169,19 +158,7 @@ impl Parser<'_> {
                 && matches!(cue, Cue::Tend | Cue::NextTo | Cue::InFront | Cue::On | Cue::Near | Cue::In | Cue::Behind)
                 && let Some(Subject::Group(g)) = self.subject.clone()
             {
-                // "on each", "on both": the plural group named before.
-                let pronoun = j > 0
-                    && matches!(self.word(j - 1), "each" | "both" | "all")
-                    && self.phrase_at(j, true, Bare::Target).ok().flatten().is_none();
-                let found = if pronoun {
-                    match self.resolve_pronoun("they") {
-                        Some(Subject::Group(h)) => Some((h, j)),
-                        _ => None,
-                    }
-                } else {
-                    self.target_at(j, &cue)
-                };
-                let (target, next) = found?;
+                let (target, next) = self.distributed_over(j, &cue)?;
                 if !target.starts_with('@') && target != g {
                     self.mark(i, next);
                     self.add_companion(&target, &g);
@@ -350,6 +327,21 @@ impl Parser<'_> {
         {
             group.count = Some(group.count.unwrap_or(1.0) * n);
             group.plural = true;
+        }
+    }
+
+    /// The group a distributive target at `j` names ("each of the desks", "every bench"), or
+    /// with the noun left out ("on each", "on both") the plural group named before.
+    fn distributed_over(&mut self, j: usize, cue: &Cue) -> Option<(String, usize)> {
+        let pronoun = j > 0
+            && matches!(self.word(j - 1), "each" | "both" | "all")
+            && self.phrase_at(j, true, Bare::Target).ok().flatten().is_none();
+        if !pronoun {
+            return self.target_at(j, cue);
+        }
+        match self.resolve_pronoun("they") {
+            Some(Subject::Group(h)) => Some((h, j)),
+            _ => None,
         }
     }
 
