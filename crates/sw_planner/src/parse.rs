@@ -1311,7 +1311,12 @@ impl<'a> Parser<'a> {
             Subject::Robot(r) => format!("@robot:{r}"),
         };
         self.mark(i, end);
-        self.apply(&subject, Cue::NextTo, vec![target]);
+        // "a desk with … a book to its left": a side of the host it stands on, where it stays.
+        let on_it =
+            matches!(&subject, Subject::Group(g) if self.implicit_on.iter().any(|(x, h)| x == g && *h == target));
+        if !on_it {
+            self.apply(&subject, Cue::NextTo, vec![target]);
+        }
         Some(end)
     }
 

@@ -1884,6 +1884,9 @@ fn a_possessive_side_is_beside_what_it_refers_to() {
             || robot(&p, "ur10e").near.as_deref() == Some(table.as_str());
     assert!(beside && reaches(&p, &arm, &table), "{}", dump(&p));
     assert!(not_understood(&p).is_empty(), "{:?}", not_understood(&p));
+    // A side of the host a thing stands on is a place on it.
+    let p = ok("a study desk with a pencil case in the middle, a book to its left");
+    assert_rel(&p, &group(&p, "book").id, on(&group(&p, "desk").id));
     let p = ok("a sofa, a floor lamp on its right side");
     assert_rel(&p, &group(&p, "floor_lamp").id, RelationKind::NextTo { target: group(&p, "sofa").id.clone() });
 }
