@@ -153,15 +153,22 @@ pub(crate) fn surface_target(ctx: &Ctx<'_>, idx: usize) -> Option<String> {
             RelationKind::SetInto { target } if is_small(ctx, idx) || ctx.bounds[idx].size()[2] <= 0.15 => {
                 Some(target.clone())
             }
-            // Small things on each side of a table: on its top, at opposite edges.
-            RelationKind::OnEachSideOf { target }
-                if is_small(ctx, idx)
-                    && ctx
-                        .instances(target)
-                        .first()
-                        .is_some_and(|&i| !ctx.input.objects[i].asset.surfaces.is_empty()) =>
-            {
-                Some(target.clone())
+            // Small things on each side of a table: on its top, at opposite edges. On each
+            // side of a small thing ("a bowl on each side of the cutting board"): beside it
+            // on what it rests on (`surface::try_surface` keeps the sides), or on the floor
+            // by it when it rests on nothing.
+            RelationKind::OnEachSideOf { target } if is_small(ctx, idx) => {
+                let &t = ctx.instances(target).first()?;
+                if is_small(ctx, t) {
+                    ctx.relations(target).iter().find_map(|r| match r {
+                        RelationKind::On { target: h } | RelationKind::Inside { target: h } if h != target => {
+                            Some(h.clone())
+                        }
+                        _ => None,
+                    })
+                } else {
+                    (!ctx.input.objects[t].asset.surfaces.is_empty()).then(|| target.clone())
+                }
             }
             // Items between two arms rest on the surface the arms share.
             RelationKind::Between { first, second } if is_small(ctx, idx) => shared_work(ctx, first, second),
@@ -267,6 +274,38 @@ fn said_clearance(plan: &sw_plan::ScenePlan, group: &str, mut c: Clearance) -> C
         }
     }
     c
+}
+
+/// A small thing with no place of its own said that others are placed by on the floor
+/// ("a bin and three trays in front of it" in a room with no table): it goes on the
+/// floor anyway (step 4 finds no host for it), so it is placed with the floor things,
+/// before them (`order`) — else they look for it before it stands and are placed
+/// anywhere.
+fn floor_target(ctx: &Ctx<'_>, idx: usize) -> bool {
+    let o = &ctx.input.objects[idx];
+    if !is_small(ctx, idx) || !ctx.relations(&o.group).is_empty() || surface_target(ctx, idx).is_some() {
+        return false;
+    }
+    let targeted = ctx.input.plan.relations.iter().any(|r| {
+        r.subject != o.group
+            && crate::relate::is_positional(&r.kind)
+            && r.kind.targets().contains(&o.group.as_str())
+            && ctx.instances(&r.subject).first().is_some_and(|&i| surface_target(ctx, i).is_none())
+    });
+    // The hosts step 4 would put it on (`surface::place_loose`).
+    let host = |work: bool| {
+        ctx.input.objects.iter().any(|h| {
+            h.carries_robot.is_none()
+                && if work {
+                    h.has_tag("surface") && h.has_tag("furniture")
+                } else {
+                    h.has_tag("storage") && !h.asset.surfaces.is_empty()
+                }
+        })
+    };
+    let hosted = (o.has_tag("tabletop") && host(true))
+        || (!o.has_tag("tabletop") && (o.has_tag("container") || o.has_tag("stackable")) && host(false));
+    targeted && !hosted
 }
 
 /// Small things that rest on surfaces (as opposed to furniture and fixtures).
@@ -388,11 +427,12 @@ pub(crate) fn run_pinned(input: &LayoutInput<'_>, size: Dims, pins: Option<&crat
     // Small things go here too when where they stand was said ("a bin under the table").
     let related: Vec<bool> = input.objects.iter().map(|o| !ctx.relations(&o.group).is_empty()).collect();
     let companions: Vec<bool> = input.objects.iter().map(|o| !floor::hosts_of(&ctx, &o.group).is_empty()).collect();
+    let floor_first: Vec<bool> = (0..input.objects.len()).map(|i| floor_target(&ctx, i)).collect();
     let furniture: Vec<usize> = (0..input.objects.len())
         .filter(|&i| {
             !pinned[i]
                 && input.objects[i].carries_robot.is_none()
-                && (!is_small(&ctx, i) || related[i] || companions[i])
+                && (!is_small(&ctx, i) || related[i] || companions[i] || floor_first[i])
                 && surface_target(&ctx, i).is_none()
         })
         .collect();

@@ -73,8 +73,16 @@ pub(crate) fn for_relation(ctx: &mut Ctx<'_>, b: &Aabb, group: &str, k: usize, r
         }
         RelationKind::InCenter => center_slots(ctx, b, group),
         RelationKind::NextTo { target } | RelationKind::Near { target } => beside(ctx, b, target, k),
-        RelationKind::InFrontOf { target } => facing_side(ctx, b, target, k, 1.0),
-        RelationKind::Behind { target } => facing_side(ctx, b, target, k, -1.0),
+        RelationKind::InFrontOf { target } => {
+            let mut v = facing_side(ctx, b, target, k, 1.0);
+            v.extend(past_siblings(ctx, b, group, target, 1.0));
+            v
+        }
+        RelationKind::Behind { target } => {
+            let mut v = facing_side(ctx, b, target, k, -1.0);
+            v.extend(past_siblings(ctx, b, group, target, -1.0));
+            v
+        }
         RelationKind::AtEndOfRow { target } => row_end(ctx, b, target),
         RelationKind::Between { first, second } => between(ctx, first, second, k),
         RelationKind::Under { target } => under(ctx, target, k, ctx.instances(group).len()),
@@ -401,6 +409,36 @@ fn facing_side(ctx: &Ctx<'_>, b: &Aabb, target: &str, k: usize, sign: f64) -> Ve
         bodies.insert(0, row);
     }
     facing_bodies(b, &bodies, sign)
+}
+
+/// Several in front of (behind) one target narrower than they are together ("a bin and
+/// three trays in front of it"): beyond each member of the group already there, away
+/// from the target's face, and beside it, a floor gap apart — the fixed steps of
+/// [`facing_bodies`] leave gaps narrower than the thing between its placed siblings.
+fn past_siblings(ctx: &Ctx<'_>, b: &Aabb, group: &str, target: &str, sign: f64) -> Vec<Spot> {
+    let mut out = Vec::new();
+    let gap = FLOOR_GAP + 0.01;
+    for (_, t) in relate::bodies(ctx, target) {
+        let f = axis([t.front[0] * sign, t.front[1] * sign]);
+        let side = [-f[1], f[0]];
+        let toward = yaw_facing(-f[0], -f[1]);
+        for (_, m) in relate::bodies(ctx, group) {
+            let mc = m.center();
+            let (lo, hi) = relate::span(&m.fp, f);
+            let (slo, shi) = relate::span(&m.fp, side);
+            let mid = mc[0] * side[0] + mc[1] * side[1];
+            for turn in [0.0, PI] {
+                let fp = footprint_at(b, toward + turn);
+                let half_side =
+                    0.5 * ((fp.max[0] - fp.min[0]) * side[0].abs() + (fp.max[1] - fp.min[1]) * side[1].abs());
+                // Beyond it, then beside it on either hand, level with it.
+                out.push(aligned(b, toward + turn, f, hi + gap, side, mid));
+                out.push(aligned(b, toward + turn, f, lo, side, shi + gap + half_side));
+                out.push(aligned(b, toward + turn, f, lo, side, slo - gap - half_side));
+            }
+        }
+    }
+    out
 }
 
 pub(crate) fn facing_bodies(b: &Aabb, targets: &[Body], sign: f64) -> Vec<Spot> {

@@ -237,8 +237,10 @@ fn formations_of(ctx: &Ctx<'_>, group: &str, idxs: &[usize], rel: &RelationKind)
     match rel {
         RelationKind::InRow => {
             let mut v = vec![rows(ctx, &[idxs.to_vec()], &[true], &[], reserve)];
-            if n >= 4 {
-                // When one row does not fit: two.
+            // When one row does not fit a room whose size was given: two. A room whose
+            // size was not given grows to fit the row instead (`solve`); a row folded in
+            // two is not the row that was asked for.
+            if n >= 4 && ctx.input.plan.room.size_fixed {
                 v.push(rows(ctx, &split(idxs, 2), &[true, true], &[seat_gap], reserve));
             }
             v

@@ -20,6 +20,8 @@ const EDGE: f64 = 0.15;
 /// A support this far or more below its host's top is inside it, m (the report and the
 /// judge: 0.02; a shallow tray's floor is 2–3 cm down).
 const INTERIOR: f64 = 0.021;
+/// Between things packed inside a small container, m (the collision test keeps 4 mm).
+const CONTAINER_GAP: f64 = 0.006;
 
 /// Which of a host's surfaces an item may use, and where on them.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -125,6 +127,17 @@ pub(crate) fn place_all(ctx: &mut Ctx<'_>, items: &[usize]) {
             continue;
         }
         if stack_on_own(ctx, idx, &group) {
+            continue;
+        }
+        // A container whose floor is full ("four cubes in a bowl" with room for two side
+        // by side): heaped on one of its own kind inside it, within the walls.
+        if want == Want::Interior && heap_inside(ctx, idx, &target) {
+            let subject = ctx.input.plan.phrase_of(&group);
+            let phrase = ctx.input.plan.phrase_of(&target);
+            ctx.warn(
+                "relation_unmet",
+                format!("{name}: \"{phrase}\" has no room on its floor for \"{subject}\"; heaped on one inside it"),
+            );
             continue;
         }
         // A container or small thing that cannot hold it ("six eggs in a bowl" with room
@@ -303,6 +316,39 @@ fn stack_on_own(ctx: &mut Ctx<'_>, idx: usize, group: &str) -> bool {
             (resting && free).then_some((p.spot.z, i))
         })
         .collect();
+    below.sort_by(|a, b| a.0.total_cmp(&b.0));
+    below.into_iter().any(|(_, b)| on_top_of(ctx, idx, b))
+}
+
+/// Item `idx` on top of one of its own kind that rests on an interior support of an
+/// instance of `target` (a bowl's, a bin's floor) with nothing on it yet, when its bottom
+/// then stays below the container's rim. Round things are not heaped (they roll off in
+/// the settle) and neither is what is rounder than it is flat on top.
+fn heap_inside(ctx: &mut Ctx<'_>, idx: usize, target: &str) -> bool {
+    if ctx.input.objects[idx].has_tag("round") {
+        return false;
+    }
+    let group = ctx.input.objects[idx].group.clone();
+    let mut below: Vec<(f64, usize)> = Vec::new();
+    for (hi, _) in ctx.placed_instances(target) {
+        let host = ctx.input.objects[hi].name.clone();
+        let rim = ctx.placed[hi].as_ref().map_or(f64::NEG_INFINITY, |p| p.spot.z) + ctx.bounds[hi].max[2];
+        for i in ctx.instances(&group) {
+            let Some(p) = ctx.placed[i].as_ref() else { continue };
+            let inside = matches!(&p.support, Support::Object { object, .. } if *object == host);
+            let name = &ctx.input.objects[i].name;
+            let free = !ctx
+                .placed
+                .iter()
+                .flatten()
+                .any(|q| matches!(&q.support, Support::Object { object, .. } if object == name));
+            // The top of the one below, where this one's bottom would be.
+            let top = p.spot.z + ctx.bounds[i].max[2];
+            if i != idx && inside && free && top < rim {
+                below.push((top, i));
+            }
+        }
+    }
     below.sort_by(|a, b| a.0.total_cmp(&b.0));
     below.into_iter().any(|(_, b)| on_top_of(ctx, idx, b))
 }
@@ -512,10 +558,20 @@ fn try_surface(
         return false;
     }
     let host_name = ctx.input.objects[host].name.clone();
+    // Inside a small container (a bowl's, a tote's floor) things are packed close, as a
+    // person fills a bowl: the collision test's own gap and a little more.
+    let container = crate::attempt::is_small(ctx, host) || ctx.input.objects[host].has_tag("container");
+    let interior = container && surf.clearance.is_none() && ctx.bounds[host].max[2] - surf.z >= INTERIOR;
+    let gap = if interior { CONTAINER_GAP } else { SURFACE_GAP };
     // A host with a relation to itself would be odd; an item never rests on itself.
     if ctx.input.objects[idx].name == host_name {
         return false;
     }
+    let group = ctx.input.objects[idx].group.clone();
+    let flanked =
+        ctx.input.plan.relations.iter().any(
+            |r| matches!(&r.kind, RelationKind::OnEachSideOf { target } if *target == group && r.subject != group),
+        );
     let flip = ctx.rng.chance(0.5);
     let mut yaws = if flip { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
     if let Some((a, c)) = between.first() {
@@ -527,28 +583,55 @@ fn try_surface(
         let wide_x = b.max[0] - b.min[0] >= b.max[1] - b.min[1];
         yaws = if along_x == wide_x { [FRAC_PI_2, 0.0] } else { [0.0, FRAC_PI_2] };
     }
+    if flanked {
+        // Its long side along the top's long side: room at both its ends.
+        let long_x = surf.max[0] - surf.min[0] >= surf.max[1] - surf.min[1];
+        let wide_x = b.max[0] - b.min[0] >= b.max[1] - b.min[1];
+        yaws = if long_x == wide_x { [0.0, FRAC_PI_2] } else { [FRAC_PI_2, 0.0] };
+    }
     let from_right = ctx.rng.chance(0.5);
     // Where it is said to stand by something placed ("a plate next to the toaster", "blocks
     // in front of the Panda"): the grid is tried nearest that first, and only spots that
     // keep those relations until none does.
-    let group = ctx.input.objects[idx].group.clone();
+    let host_group = ctx.input.objects[host].group.clone();
+    let flanked =
+        ctx.input.plan.relations.iter().any(
+            |r| matches!(&r.kind, RelationKind::OnEachSideOf { target } if *target == group && r.subject != group),
+        );
     let by: Vec<RelationKind> = ctx
         .relations(&group)
         .into_iter()
         .filter(|r| {
-            matches!(
-                r,
-                RelationKind::NextTo { .. }
-                    | RelationKind::Near { .. }
-                    | RelationKind::InFrontOf { .. }
-                    | RelationKind::Behind { .. }
-            ) && r.targets().first().is_some_and(|t| !crate::relate::bodies(ctx, t).is_empty())
+            // On each side of the host itself is `Want::Side`; of a thing on it, kept here.
+            let by_thing = matches!(r, RelationKind::OnEachSideOf { target } if *target != host_group);
+            (by_thing
+                || matches!(
+                    r,
+                    RelationKind::NextTo { .. }
+                        | RelationKind::Near { .. }
+                        | RelationKind::InFrontOf { .. }
+                        | RelationKind::Behind { .. }
+                ))
+                && r.targets().first().is_some_and(|t| !crate::relate::bodies(ctx, t).is_empty())
         })
         .cloned()
         .collect();
     let aims: Vec<[f64; 2]> = by
         .iter()
         .flat_map(|r| {
+            // On each side of a thing: towards the two ends of its long axis, where a thing
+            // set down on a top has room more often than at its front and back.
+            if let RelationKind::OnEachSideOf { target } = r {
+                return crate::relate::bodies(ctx, target)
+                    .into_iter()
+                    .flat_map(|(_, b)| {
+                        let x = crate::relate::x_axis(&b);
+                        let u = if b.half_along(x) >= b.half_along(b.front) { x } else { b.front };
+                        let (c, d) = (b.center(), b.half_along(u) + 0.12);
+                        [[c[0] + u[0] * d, c[1] + u[1] * d], [c[0] - u[0] * d, c[1] - u[1] * d]]
+                    })
+                    .collect::<Vec<_>>();
+            }
             let sign = match r {
                 RelationKind::InFrontOf { .. } => 1.0,
                 RelationKind::Behind { .. } => -1.0,
@@ -576,7 +659,7 @@ fn try_surface(
             } else {
                 (0.5 * (b.max[0] - b.min[0]), 0.5 * (b.max[1] - b.min[1]))
             };
-            let m = 0.005;
+            let m = if interior { 0.002 } else { 0.005 };
             let (x0, x1) = (surf.min[0] + ex + m, surf.max[0] - ex - m);
             let (y0, y1) = (surf.min[1] + ey + m, surf.max[1] - ey - m);
             if x1 < x0 || y1 < y0 {
@@ -615,6 +698,11 @@ fn try_surface(
                     aims.iter().map(|m| (w[0] - m[0]).hypot(w[1] - m[1])).fold(f64::INFINITY, f64::min)
                 };
                 grid.sort_by(|a, b| key(a).total_cmp(&key(b)));
+            } else if flanked {
+                // Things are to stand on each side of it on this top: from the middle out,
+                // so that both sides of it have room.
+                let (cx, cy) = (0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]));
+                grid.sort_by(|a, b| (a.0 - cx).hypot(a.1 - cy).total_cmp(&(b.0 - cx).hypot(b.1 - cy)));
             }
             {
                 for (x, y) in grid {
@@ -635,7 +723,7 @@ fn try_surface(
                     }
                     let rect = [x - ex, y - ey, x + ex, y + ey];
                     let used = ctx.surface_use.get(&host).and_then(|u| u.get(si));
-                    if used.is_some_and(|u| u.iter().any(|r| rects_overlap(r, &rect, SURFACE_GAP))) {
+                    if used.is_some_and(|u| u.iter().any(|r| rects_overlap(r, &rect, gap))) {
                         continue;
                     }
                     if !between.is_empty() {

@@ -211,3 +211,131 @@ proptest! {
         }
     }
 }
+
+/// The object `o` rests on, if another object.
+fn host<'a>(s: &'a LaidOutScene, o: &PlacedObject) -> Option<(&'a PlacedObject, String)> {
+    let Support::Object { object, surface } = &o.support else { return None };
+    s.objects.iter().find(|x| &x.name == object).map(|x| (x, surface.clone()))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 10, ..ProptestConfig::default() })]
+
+    /// "n cubes in a bowl on the table": every cube inside the bowl, on its floor or heaped
+    /// on a cube that is, below its rim; a cube that does not fit is named in a warning.
+    /// With a 30 cm bowl at least two go in (its floor holds one or more, one more heaps).
+    #[test]
+    fn things_in_a_bowl_go_inside_packed_or_heaped(seed in 0u64..10_000, n in 2u32..=5) {
+        let p = plan(RoomKind::Tabletop, Dims::new(4.0, 4.0, 3.0),
+            &[("table", "table", 1), ("bowl", "bowl", 1), ("cubes", "cube", n)],
+            vec![("bowl", RelationKind::On { target: "table".into() }), ("cubes", RelationKind::Inside { target: "bowl".into() })]);
+        let mut f = forge(p, seed);
+        // The forge makes a bowl as wide as its contents need (the widest it comes in).
+        for (_, group, asset, _) in f.assets.iter_mut().filter(|a| a.1 == "bowl") {
+            let mut req = sw_catalog::AssetRequest::new("bowl", seed);
+            req.overrides = vec![("width".into(), 0.3), ("depth".into(), 0.3), ("height".into(), 0.1)];
+            *asset = sw_catalog::generate(&req).unwrap();
+            prop_assert_eq!(group.as_str(), "bowl");
+        }
+        let s = solve_forged(&f, seed);
+        check(&f, &s);
+        let bowl = of(&s, "bowl")[0];
+        let rim = bowl.pos[2] + world_boxes(&f, bowl).iter().map(|b| b.max[2] - bowl.pos[2]).fold(0.0, f64::max);
+        let mut inside = 0;
+        for o in of(&s, "cubes") {
+            let on_floor = |x: &PlacedObject| host(&s, x).is_some_and(|(h, surf)| h.name == bowl.name && surf == "inside");
+            let heaped = host(&s, o).is_some_and(|(h, _)| h.group == "cubes" && on_floor(h))
+                && footprint(&f, o).min[2] < rim;
+            if on_floor(o) || heaped {
+                inside += 1;
+            } else {
+                prop_assert!(s.warnings.iter().any(|w| w.message.contains(&format!("{}:", o.name))),
+                    "{} is not in the bowl and no warning names it: {:?}", o.name, s.warnings);
+            }
+        }
+        prop_assert!(inside >= 2.min(n), "only {inside} of {n} cubes in the bowl: {:?}", s.warnings);
+    }
+
+    /// "eight workbenches in a row" in a room whose size was not given: one row, the room
+    /// grown to hold it (was: folded into two rows).
+    #[test]
+    fn a_row_that_does_not_fit_grows_a_room_of_no_stated_size(seed in 0u64..10_000) {
+        let mut p = plan(RoomKind::Workshop, Dims::new(6.0, 5.0, 3.0), &[("benches", "workbench", 8)],
+            vec![("benches", RelationKind::InRow)]);
+        p.room.size_fixed = false;
+        let f = forge(p, seed);
+        let s = solve_forged(&f, seed);
+        check(&f, &s);
+        prop_assert!(s.room.size.width > 6.0, "the room did not grow: {:?}", s.room.size);
+        let cs: Vec<[f64; 2]> = of(&s, "benches").iter().map(|o| center(&footprint(&f, o))).collect();
+        let (xs, ys): (Vec<f64>, Vec<f64>) = cs.iter().map(|c| (c[0], c[1])).unzip();
+        let spread = |v: &[f64]| v.iter().copied().fold(f64::NEG_INFINITY, f64::max) - v.iter().copied().fold(f64::INFINITY, f64::min);
+        // Two rows stand a bench depth and a walkway apart; one row varies only with its members' depths.
+        prop_assert!(spread(&xs).min(spread(&ys)) <= 0.25, "not one row: centres {cs:?}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 10, ..ProptestConfig::default() })]
+
+    /// "a bin and three trays in front of it" with no table: the bin, a small thing with no
+    /// place of its own, stands before the trays look for it, and every tray's centre is
+    /// 0–2.5 m beyond its front face, within its width ± 0.3 m (the judge's rule). Was:
+    /// the trays first, along the far wall.
+    #[test]
+    fn several_things_stand_in_front_of_a_small_loose_thing(seed in 0u64..10_000, n in 1u32..=3) {
+        let p = plan(RoomKind::Tabletop, Dims::new(4.0, 4.0, 3.0), &[("bin", "bin", 1), ("trays", "tray", n)],
+            vec![("trays", RelationKind::InFrontOf { target: "bin".into() })]);
+        let f = forge(p, seed);
+        let s = solve_forged(&f, seed);
+        check(&f, &s);
+        let bin = of(&s, "bin")[0];
+        let (bf, bb) = (front(bin), footprint(&f, bin));
+        let bc = center(&bb);
+        let side = [-bf[1], bf[0]];
+        let half = |d: [f64; 2]| 0.5 * ((bb.max[0] - bb.min[0]) * d[0].abs() + (bb.max[1] - bb.min[1]) * d[1].abs());
+        for o in of(&s, "trays") {
+            let c = center(&footprint(&f, o));
+            let d = [c[0] - bc[0], c[1] - bc[1]];
+            let beyond = d[0] * bf[0] + d[1] * bf[1] - half(bf);
+            let lateral = (d[0] * side[0] + d[1] * side[1]).abs();
+            prop_assert!((0.0..=2.5).contains(&beyond) && lateral <= half(side) + 0.3,
+                "{} is not in front of the bin: {beyond:.2} m beyond its face, {lateral:.2} m aside; {:?}", o.name, s.objects.iter().map(|x| (&x.name, x.pos, x.yaw)).collect::<Vec<_>>());
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 10, ..ProptestConfig::default() })]
+
+    /// "a bowl on each side of the cutting board" (the board on a table): the bowls rest
+    /// on the table, not on the board, on two opposite sides of it in its frame, each
+    /// within 0.6 m of it. Was: on the board (no room), then on the floor.
+    #[test]
+    fn things_on_each_side_of_a_small_thing_stand_beside_it_on_its_host(seed in 0u64..10_000) {
+        let p = plan(RoomKind::Kitchen, Dims::new(5.0, 4.0, 2.7),
+            &[("table", "table", 1), ("board", "cutting_board", 1), ("bowls", "bowl", 2)],
+            vec![("board", RelationKind::On { target: "table".into() }),
+                 ("bowls", RelationKind::OnEachSideOf { target: "board".into() })]);
+        let f = forge(p, seed);
+        let s = solve_forged(&f, seed);
+        check(&f, &s);
+        let board = of(&s, "board")[0];
+        let (bf, bb) = (front(board), footprint(&f, board));
+        let bc = center(&bb);
+        let right = [bf[1], -bf[0]];
+        let mut sides = Vec::new();
+        for o in of(&s, "bowls") {
+            prop_assert!(host(&s, o).is_some_and(|(h, _)| h.group == "table"), "{} is not on the table: {:?}", o.name, o.support);
+            let ob = footprint(&f, o);
+            let c = center(&ob);
+            let d = [c[0] - bc[0], c[1] - bc[1]];
+            let half = |b: &Aabb, v: [f64; 2]| 0.5 * ((b.max[0] - b.min[0]) * v[0].abs() + (b.max[1] - b.min[1]) * v[1].abs());
+            let (a, r) = (d[0] * bf[0] + d[1] * bf[1], d[0] * right[0] + d[1] * right[1]);
+            let (ga, gr) = (a.abs() - half(&bb, bf) - half(&ob, bf), r.abs() - half(&bb, right) - half(&ob, right));
+            prop_assert!(ga.max(gr) <= 0.6, "{} is {:.2} m from the board", o.name, ga.max(gr));
+            sides.push(if a.abs() / half(&bb, bf) >= r.abs() / half(&bb, right) { (0, a.signum()) } else { (1, r.signum()) });
+        }
+        prop_assert!(sides[0].0 == sides[1].0 && sides[0].1 != sides[1].1, "not on opposite sides: {sides:?}; {:?} {:?}", s.objects.iter().map(|x| (&x.name, x.pos, x.yaw, x.size)).collect::<Vec<_>>(), s.warnings);
+    }
+}

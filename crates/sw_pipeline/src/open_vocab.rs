@@ -47,7 +47,8 @@ pub const NAMED_SENSE_MIN: f32 = 0.45;
 /// How much nearer another category's sense must be to take a noun away from the one its
 /// words name.
 pub const SENSE_MARGIN: f32 = 0.05;
-/// The nearest categories tell an unknown noun's kind of thing only this close.
+/// The nearest categories tell an unknown noun's kind of thing only this close (the mean
+/// of name and sense scores).
 pub const KIND_MIN: f32 = 0.45;
 /// How many of the nearest categories vote on an unknown noun's kind (each by its
 /// similarity over its rank, so that the nearest counts most but four close neighbours
@@ -98,6 +99,20 @@ pub const ABSTRACT: &[&str] = &[
     "a memory",
     "an atmosphere",
     "a vibe",
+    // Kinds of non-thing the list above lacked: money matters, speech and news, plans and situations, relations between people.
+    "a price",
+    "a debt",
+    "a payment",
+    "a conversation",
+    "a speech",
+    "news",
+    "an opinion",
+    "a promise",
+    "a plan",
+    "a mistake",
+    "a situation",
+    "a relationship",
+    "a delay",
 ];
 
 /// How a noun was resolved.
@@ -226,12 +241,14 @@ fn sense_refuses(sense: f32, best: Option<f32>) -> bool {
 
 /// Resolves one noun phrase (a proxy's label).
 pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
-    let words = noun_words(label);
+    // The head phrase names the thing ("a bag of feed" is a kind of bag); the model reads
+    // the whole noun, complement included.
+    let (words, complement) = phrase_parts(label);
     if words.is_empty() {
         return Resolution::Proxy { kind: None, size: None, nearest: None };
     }
     let (cands, head_len) = candidates(&words);
-    let text = words.join(" ");
+    let text = phrase_text(&words, &complement);
     let modifiers = &words[..words.len() - head_len];
     if !cands.is_empty() {
         let cats: Vec<&'static Category> = cands.iter().map(|(c, _)| *c).collect();
@@ -291,7 +308,15 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
         return proxy_by_meaning(&text, meaning, agreed);
     }
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
-    if let Some(s) = meaning.scores(&text, &all) {
+    // The evidence that the noun is a thing is its nearness to a category by name *and*
+    // by sense (its name with its description), the mean of the two: a name alone is near
+    // by spelling and shared sub-words ("a hunch" and the ottoman, "a traffic jam" and the
+    // forklift), a sense alone is low for a real thing the descriptions do not mention.
+    let evidence = meaning.scores(&text, &all).map(|names| match meaning.senses(&text, &all) {
+        Some(senses) => names.iter().zip(senses).map(|(n, s)| (n + s) / 2.0).collect(),
+        None => names,
+    });
+    if let Some(s) = evidence {
         // Only a category that could be like the noun counts as evidence that it is a
         // thing: not one named for it or after its modifiers, nor one that shares only a
         // modifier with it ("a birthday party" is near the birthday cake by "birthday").
@@ -344,13 +369,22 @@ fn shares_only_a_modifier(words: &[String], cat: &Category) -> bool {
 /// for or after the noun rather than like it ([`related_not_alike`]) neither vote nor size.
 fn proxy_by_meaning(text: &str, meaning: &dyn Meaning, known: Option<Kind>) -> Resolution {
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
-    let Some(s) = meaning.scores(text, &all) else {
+    let Some(names) = meaning.scores(text, &all) else {
         return Resolution::Proxy { kind: known, size: None, nearest: None };
     };
-    let words = noun_words(text);
+    // A neighbour tells the noun's kind by what it *is* as well as by its name (the mean
+    // of its name and sense scores, as for the evidence of a thing): near by name alone is near by spelling or by
+    // shared sub-words ("chaise longue" and the chalice, "moka pot" and the lasagne), which
+    // says nothing about the kind of thing or its size.
+    let s: Vec<f32> = match meaning.senses(text, &all) {
+        Some(senses) => senses.iter().zip(&names).map(|(a, b)| (a + b) / 2.0).collect(),
+        None => names.clone(),
+    };
+    let words = phrase_parts(text).0;
     let mut order: Vec<usize> = (0..all.len()).collect();
+    order.sort_by(|&a, &b| names[b].total_cmp(&names[a]));
+    let nearest = order.first().map(|&i| (all[i].name, names[i]));
     order.sort_by(|&a, &b| s[b].total_cmp(&s[a]));
-    let nearest = order.first().map(|&i| (all[i].name, s[i]));
     order.retain(|&i| !related_not_alike(&words, all[i]));
     let kind = known.or_else(|| {
         let mut votes: BTreeMap<Kind, f32> = BTreeMap::new();
@@ -443,6 +477,21 @@ pub fn resolve_plan(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warning>
                 });
                 warnings.push(Warning::new(Stage::Forge, "noun_proxy", reason.clone()));
                 group.proxy = Some(sized);
+            }
+            // A noun the prompt sets on or under something ("four parts on the bench") is
+            // an object whatever its words are nearest: a labelled proxy of its said kind.
+            Resolution::NotAThing { .. } if proxy.prior != sw_planner::FALLBACK_PRIOR => {
+                let reason = format!(
+                    "no catalog asset for '{noun}'; a labelled proxy sized as a {} (as the prompt puts it)",
+                    proxy.prior
+                );
+                approximated.retain(|a| !planners_line(a));
+                approximated.push(Approximation {
+                    text: group.phrase.clone(),
+                    became: format!("labelled proxy '{noun}'"),
+                    reason: reason.clone(),
+                });
+                warnings.push(Warning::new(Stage::Forge, "noun_proxy", reason));
             }
             Resolution::NotAThing { nearest } => {
                 let near = nearest.map_or(String::new(), |(n, s)| format!(" (nearest category {n} at {s:.2})"));
@@ -690,16 +739,42 @@ fn write_cache(file: &Path, rows: &[Vec<f32>]) {
     }
 }
 
-/// The noun words of a group's phrase: without counts, colours and size words.
-fn phrase_noun(phrase: &str) -> Vec<String> {
-    noun_words(phrase)
-        .into_iter()
-        .filter(|w| {
-            sw_planner::vocab::color(w).is_none()
-                && sw_planner::vocab::size_word(w).is_none()
-                && sw_planner::vocab::number_word(w).is_none()
-        })
-        .collect()
+/// The noun of a phrase, in two parts: the words before "of" (the head phrase: "tin" of "a
+/// tin of beans") and those after it (the of-complement: "beans"), each without counts,
+/// colours and size words. Both stop at a measure — a number or number word after the noun
+/// has begun ("a TV stand 250 cm wide", "a rug two metres long") — and the complement at a
+/// second "of": a measure or a complement is said *of* the thing, never part of its name.
+pub fn phrase_parts(phrase: &str) -> (Vec<String>, Vec<String>) {
+    let keep = |w: &String| {
+        sw_planner::vocab::color(w).is_none()
+            && sw_planner::vocab::size_word(w).is_none()
+            && sw_planner::vocab::number_word(w).is_none()
+    };
+    let (mut head, mut complement) = (Vec::new(), Vec::new());
+    let mut in_complement = false;
+    for token in phrase.split(|c: char| !(c.is_alphanumeric() || c == '\'')).filter(|t| !t.is_empty()) {
+        let token = token.to_lowercase();
+        let measure =
+            token.starts_with(|c: char| c.is_ascii_digit()) || sw_planner::vocab::number_word(&token).is_some();
+        if measure && (in_complement || !head.is_empty()) {
+            break;
+        }
+        if token == "of" {
+            if in_complement {
+                break;
+            }
+            in_complement = !head.is_empty();
+            continue;
+        }
+        let part = if in_complement { &mut complement } else { &mut head };
+        part.extend(noun_words(&token).into_iter().filter(keep));
+    }
+    (head, complement)
+}
+
+/// The phrase's noun as one string for the model: "bag of feed", "tv stand".
+fn phrase_text(head: &[String], complement: &[String]) -> String {
+    if complement.is_empty() { head.join(" ") } else { format!("{} of {}", head.join(" "), complement.join(" ")) }
 }
 
 /// The head nouns of a category's names ("knife" of "chef's knife").
@@ -772,12 +847,16 @@ pub fn check_readings(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warnin
         .collect();
     for group in plan.objects.iter_mut().filter(|o| o.proxy.is_none()) {
         let Some(cat) = sw_catalog::find(&group.category) else { continue };
-        let words = phrase_noun(&group.phrase);
-        if words.is_empty() {
+        let (head, complement) = phrase_parts(&group.phrase);
+        if head.is_empty() {
             continue;
         }
-        if let Some(why) = misreading(&words, cat, meaning) {
-            let label = words.join(" ");
+        // The planner may have read the head phrase ("a tin of beans" as a tin) or its
+        // complement ("a bottle of water" as a water bottle): either reading stands.
+        let readings = [&head, &complement];
+        let standing = readings.iter().find(|w| !w.is_empty() && misreading(w, cat, meaning).is_none());
+        if let (None, Some(why)) = (standing, misreading(&head, cat, meaning)) {
+            let label = phrase_text(&head, &complement);
             warnings.push(Warning::new(
                 Stage::Forge,
                 "noun_reread",
@@ -790,7 +869,7 @@ pub fn check_readings(plan: &mut ScenePlan, meaning: &dyn Meaning) -> Vec<Warnin
             group.category = "proxy".to_string();
             continue;
         }
-        let said = words.join(" ");
+        let said = phrase_text(&head, &complement);
         let own = [cat.display.to_lowercase(), cat.name.replace('_', " ")];
         let names = [cat.display.to_string(), cat.name.to_string(), cat.name.replace('_', " ")];
         // One line per reading: the planner may have said it already, of a word of the phrase.

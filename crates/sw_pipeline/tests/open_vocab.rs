@@ -5,7 +5,7 @@
 //! fallback, always) and with the real MiniLM when its weights are installed.
 
 use sw_catalog::{Category, Kind};
-use sw_pipeline::open_vocab::{Meaning, MiniLmMeaning, Resolution, resolve_noun};
+use sw_pipeline::open_vocab::{Meaning, MiniLmMeaning, Resolution, phrase_parts, resolve_noun};
 use sw_pipeline::{Options, generate};
 
 /// Matching by meaning switched off: what a machine without the MiniLM weights does.
@@ -211,6 +211,89 @@ fn by_meaning_homonyms_stay_proxies_and_kinds_are_sized_like_their_kind() {
             r => eprintln!("{noun}: {r:?} (not a sized proxy; not checked)"),
         }
     }
+    // Big things the model does not know, each near a small category by spelling only
+    // ("chaise longue" and the chalice): never sized or kinded as a small thing.
+    for noun in ["chaise longue", "church pew"] {
+        match resolve_noun(noun, m) {
+            Resolution::Proxy { kind, size, .. } => {
+                let small = [Kind::Container, Kind::HandHeld, Kind::Tabletop, Kind::Food, Kind::Toy];
+                assert!(!kind.is_some_and(|k| small.contains(&k)), "{noun}: {kind:?}");
+                assert!(size.is_none_or(|s| s.iter().copied().fold(0.0, f64::max) >= 0.5), "{noun}: {size:?}");
+            }
+            r => panic!("{noun}: {r:?}"),
+        }
+    }
+}
+
+#[test]
+fn a_neighbour_near_by_spelling_only_tells_no_kind() {
+    // Near by name (shared sub-words) but far by sense: it neither votes nor sizes.
+    let spelling = Fixed { near: &[("chalice", 0.6, 0.2)] };
+    let Resolution::Proxy { kind, size, nearest } = resolve_noun("chaise longue", &spelling) else { panic!() };
+    assert_eq!((kind, size), (None, None));
+    // It is still reported as the nearest name.
+    assert_eq!(nearest.map(|n| n.0), Some("chalice"));
+    // Near by both: it tells the kind.
+    let both = Fixed { near: &[("sofa", 0.6, 0.55), ("armchair", 0.55, 0.5)] };
+    let Resolution::Proxy { kind, .. } = resolve_noun("chaise longue", &both) else { panic!() };
+    assert_eq!(kind, Some(Kind::Furniture));
+}
+
+/// [`Fixed`] with a fixed nearness to the abstract nouns.
+struct Abstract {
+    near: &'static [(&'static str, f32, f32)],
+    abstractness: f32,
+}
+
+impl Meaning for Abstract {
+    fn scores(&self, noun: &str, among: &[&'static Category]) -> Option<Vec<f32>> {
+        Fixed { near: self.near }.scores(noun, among)
+    }
+    fn senses(&self, noun: &str, among: &[&'static Category]) -> Option<Vec<f32>> {
+        Fixed { near: self.near }.senses(noun, among)
+    }
+    fn abstractness(&self, _noun: &str) -> Option<f32> {
+        Some(self.abstractness)
+    }
+}
+
+#[test]
+fn a_noun_near_a_category_by_name_only_is_not_thereby_a_thing() {
+    // Nearer the abstract nouns than to any category by name and sense together: not a
+    // thing, even though one category's name alone is nearer (shared sub-words).
+    let by_name = Abstract { near: &[("banknotes", 0.55, 0.15)], abstractness: 0.4 };
+    assert!(matches!(resolve_noun("zorbulation", &by_name), Resolution::NotAThing { .. }));
+    // Near a category by both: a thing.
+    let thing = Abstract { near: &[("banknotes", 0.55, 0.45)], abstractness: 0.4 };
+    assert!(matches!(resolve_noun("zorbulation", &thing), Resolution::Proxy { .. }));
+}
+
+#[test]
+fn measures_and_of_complements_are_said_of_the_noun_not_part_of_it() {
+    let w = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    assert_eq!(phrase_parts("a TV stand 250 cm wide"), (w(&["tv", "stand"]), w(&[])));
+    assert_eq!(phrase_parts("two red TV stands, 6 ft long"), (w(&["tv", "stand"]), w(&[])));
+    assert_eq!(phrase_parts("a rug two metres long"), (w(&["rug"]), w(&[])));
+    assert_eq!(phrase_parts("a bag of feed"), (w(&["bag"]), w(&["feed"])));
+    assert_eq!(phrase_parts("a tin of beans of 400 g"), (w(&["tin"]), w(&["bean"])));
+    // A number before the noun is part of its name or a count.
+    assert_eq!(phrase_parts("a 3d printer 40 cm wide"), (w(&["3d", "printer"]), w(&[])));
+    // A kind of the head phrase, not of the complement's last word.
+    assert_eq!(category_of(&resolve_noun("kettle of soup", &Off)), Some("kettle"));
+}
+
+#[test]
+fn a_measure_in_the_phrase_never_becomes_part_of_an_object_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("m");
+    let prompt = "a living room with a TV stand 250 cm wide and a bag of feed";
+    let o = generate(prompt, &out, &Options { verify: true, ..Options::default() }, &mut |_| {}).unwrap();
+    assert!(sw_pipeline::succeeded(&o.report), "{:?}", o.report.verification);
+    for p in &o.layout.objects {
+        let words: Vec<&str> = p.label.split_whitespace().collect();
+        assert!(!words.contains(&"cm") && p.label != "bag feed", "{:?}", o.layout.objects);
+    }
+    assert!(o.layout.objects.iter().any(|p| p.category == "tv_stand"), "{:?}", o.layout.objects);
 }
 
 #[test]

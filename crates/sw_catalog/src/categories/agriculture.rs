@@ -211,7 +211,7 @@ fn build_planter_box(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const SEEDLING_TRAY: Category = Category {
     name: "seedling_tray",
     display: "seedling tray",
-    synonyms: &["seed tray", "plant tray", "propagation tray", "cell tray", "plug tray", "seedlings"],
+    synonyms: &["seed tray", "plant tray", "propagation tray", "cell tray", "plug tray"],
     tags: &["agriculture", "greenhouse", "tabletop", "small"],
     description: "a tray of seedlings",
     is_a: &["tray", "plant"],

@@ -196,7 +196,7 @@ fn build_centrifuge(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const TEST_TUBE_RACK: Category = Category {
     name: "test_tube_rack",
     display: "test tube rack",
-    synonyms: &["test-tube rack", "tube rack", "test tubes", "sample rack", "vial rack", "test tube holder"],
+    synonyms: &["test-tube rack", "tube rack", "sample rack", "vial rack", "test tube holder"],
     tags: &["lab", "tabletop", "hospital", "small", "graspable"],
     description: "a rack holding test tubes",
     is_a: &["rack", "holder", "lab equipment"],
