@@ -279,6 +279,22 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
     for (ri, kind) in &d.robot_relations {
         let Some(id) = robot_id_of.get(ri) else { continue };
         plan.relations.push(Relation { subject: id.clone(), kind: kind.clone() });
+        // An arm between two things works on both ("a robot arm between the mixer and
+        // the blender", "a cobot between two conveyors").
+        let arm = plan
+            .robots
+            .iter()
+            .any(|r| &r.id == id && sw_robots::find(&r.model).is_some_and(|x| x.kind == sw_robots::RobotKind::Arm));
+        if let RelationKind::Between { first, second } = kind
+            && arm
+        {
+            for t in [first, second] {
+                let r = Relation { subject: id.clone(), kind: RelationKind::Reach { target: t.clone() } };
+                if !t.starts_with('@') && !plan.relations.contains(&r) {
+                    plan.relations.push(r);
+                }
+            }
+        }
     }
     let robot_ref = |t: &str| -> Option<String> {
         match t.strip_prefix("@robot:") {
@@ -542,7 +558,14 @@ fn shared_support(plan: &mut ScenePlan, on_floor: &[String]) {
         }
     }
     let mut reach = Vec::new();
-    for (arm, _) in &arms {
+    for (arm, surface) in &arms {
+        // Nothing said of the arm, one work surface ("a cabinet on a table …. Franka."): it
+        // works there.
+        if let Some(s) = surface
+            && !plan.relations.iter().any(|x| &x.subject == arm)
+        {
+            reach.push(Relation { subject: arm.clone(), kind: RelationKind::Reach { target: s.clone() } });
+        }
         for id in &loose_work {
             reach.push(Relation { subject: arm.clone(), kind: RelationKind::Reach { target: id.clone() } });
         }

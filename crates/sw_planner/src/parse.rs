@@ -293,6 +293,30 @@ impl<'a> Parser<'a> {
             // Read on as before: the verb only opens the robot's work (a word that is also a
             // noun, "a Panda, screws and a bin", stays a noun).
             self.note_handling_verb(i);
+            self.pronoun_worked_on(i);
+            if let Some(next) = self.try_possessive_side(i) {
+                i = next;
+                continue;
+            }
+            if let Some(next) = self.try_bare_place_of_robot(i) {
+                i = next;
+                continue;
+            }
+            // "boxes onto two pallets, one either side of the robot": "one" before a place is
+            // one of the group counted last, not of the clause's subject.
+            if self.word(i) == "one"
+                && i >= 1
+                && self.toks[i - 1].kind == TokenKind::Comma
+                && crate::cues::cue_at(&self.toks, i + 1).is_some()
+                && !matches!(self.subject, Some(Subject::Robot(_)))
+                && let Some(g) =
+                    self.draft.groups.iter().rev().find(|g| g.count.is_some_and(|c| c >= 2.0)).map(|g| g.id.clone())
+            {
+                self.subject = Some(Subject::Group(g));
+                self.used[i] = true;
+                i += 1;
+                continue;
+            }
             if let Some(next) = self.try_dims(i)? {
                 i = next;
                 continue;
@@ -431,10 +455,23 @@ impl<'a> Parser<'a> {
             let robot = format!("@robot:{r}");
             self.draft.relations.iter().any(|(s, k)| s == g && k.targets().contains(&robot.as_str()))
         };
+        // What the robot's other work is put on ("boxes onto two pallets, one either side of
+        // the robot") is its work all the same.
+        let carries_work = |g: &str, r: usize| {
+            self.work.iter().any(|(x, w)| {
+                *x == r
+                    && w != g
+                    && self
+                        .draft
+                        .relations
+                        .iter()
+                        .any(|(s, k)| s == w && matches!(k, RelationKind::On { target } if target == g))
+            })
+        };
         let work: Vec<(usize, RelationKind)> = self
             .work
             .iter()
-            .filter(|(r, g)| !placed_by(g, *r))
+            .filter(|(r, g)| !placed_by(g, *r) || carries_work(g, *r))
             .map(|(r, g)| (*r, RelationKind::Reach { target: g.clone() }))
             .filter(|w| !self.draft.robot_relations.contains(w))
             .collect();
@@ -781,6 +818,20 @@ impl<'a> Parser<'a> {
                     r.word = word;
                     return;
                 }
+                // "a mobile robot with an arm", "a mobile base carrying a UR5e": one robot,
+                // an arm on a base that drives.
+                let after_with = start >= 1 && matches!(self.word(start - 1), "with" | "carrying");
+                if after_with
+                    && word.kind == sw_robots::RobotKind::Arm
+                    && let Some(Subject::Robot(prev)) = self.subject.clone()
+                    && let Some(r) = self.draft.robots.get_mut(prev)
+                    && r.word.kind == sw_robots::RobotKind::MobileBase
+                {
+                    r.word = word;
+                    r.phrase = format!("{} with {}", r.phrase, p.text);
+                    self.make_mobile_manipulator(prev);
+                    return;
+                }
                 // "the robot", "the arm": the robot already introduced.
                 if self.is_definite(start)
                     && let Some(idx) = self.resolve_robot(word.wants, word.kind, !word.exact)
@@ -833,6 +884,13 @@ impl<'a> Parser<'a> {
                     } else if self.draft.robots[idx].word.kind == sw_robots::RobotKind::Arm {
                         self.draft.robots[idx].near = Some(host);
                     }
+                } else if after_with
+                    && let Some(g) = self.with_subject.clone()
+                    && self.draft.robots[idx].word.kind == sw_robots::RobotKind::Arm
+                {
+                    // "a lathe with a robot arm", "packing station with a cobot": the thing
+                    // it comes with is its work.
+                    self.draft.robots[idx].near = Some(g);
                 }
                 self.subject = Some(Subject::Robot(idx));
                 self.mentions.push(Subject::Robot(idx));
@@ -1154,7 +1212,9 @@ impl<'a> Parser<'a> {
     /// A verb of handling said of a robot ("a Panda sorts …", "a UR5e picking …", "…, and
     /// places them …"): what the clause names from here on is the robot's work.
     fn note_handling_verb(&mut self, i: usize) {
-        if !crate::phrase::is_handling_verb(self.word(i)) {
+        // "… a robot arm to stand it upright", "… it to close the fridge door": after "to", a
+        // verb of doing something to a thing (which elsewhere is an adjective or a noun).
+        if !self.handling_verb_at(i) {
             return;
         }
         // "the sorting", "two stacks": after an article, a possessive or a count the word is a
@@ -1184,6 +1244,109 @@ impl<'a> Parser<'a> {
         };
         self.working = Some(r);
         self.last_worker = Some(r);
+        // A mobile robot said to handle things has an arm: the mobile manipulator (a
+        // TurtleBot named as such stays one, and one that only carries things, "brings a
+        // shelf pod", "delivers parcels", needs none).
+        if !crate::phrase::is_transport_verb(self.word(i))
+            && self
+                .draft
+                .robots
+                .get(r)
+                .is_some_and(|x| x.word.kind == sw_robots::RobotKind::MobileBase && !x.word.exact)
+        {
+            self.make_mobile_manipulator(r);
+        }
+    }
+
+    /// "…, franka nearby", "a robot arm close by": a robot placed by an adverb
+    /// with nothing after it is placed by the scene's first thing, and works at it.
+    fn try_bare_place_of_robot(&mut self, i: usize) -> Option<usize> {
+        let Some(Subject::Robot(r)) = self.subject.clone() else { return None };
+        let ends = |k: usize| self.toks.get(k).is_none_or(|t| matches!(t.kind, TokenKind::Stop | TokenKind::Comma));
+        // (A bare "behind" is read with the arm's mount: "a panda mounted behind".)
+        let len = match self.word(i) {
+            "nearby" | "alongside" => 1,
+            "close" | "near" if self.word(i + 1) == "by" => 2,
+            _ => return None,
+        };
+        if !ends(i + len) {
+            return None;
+        }
+        let first = self.draft.groups.first()?.id.clone();
+        let robot = self.draft.robots.get_mut(r)?;
+        if robot.near.is_some() {
+            return None;
+        }
+        let mounted = matches!(robot.mount, Mount::OnSurface { .. });
+        if !mounted {
+            robot.near = Some(first.clone());
+        }
+        self.draft.robot_relations.push((r, RelationKind::Near { target: first }));
+        self.mark(i, i + len);
+        Some(i + len)
+    }
+
+    /// "a tote to its left", "parts table on its left", "bins at their right-hand side": beside
+    /// what the possessive refers to (a robot included).
+    fn try_possessive_side(&mut self, i: usize) -> Option<usize> {
+        if !matches!(self.word(i), "to" | "on" | "at" | "by") || !matches!(self.word(i + 2), "left" | "right" | "side")
+        {
+            return None;
+        }
+        let pronoun = match self.word(i + 1) {
+            "its" => "it",
+            "their" => "they",
+            _ => return None,
+        };
+        let mut end = i + 3;
+        if self.word(end) == "hand" {
+            end += 1;
+        }
+        if self.word(end) == "side" && self.word(i + 2) != "side" {
+            end += 1;
+        }
+        let subject = self.subject.clone()?;
+        let target = match self.resolve_pronoun(pronoun)? {
+            Subject::Group(g) => g,
+            Subject::Robot(r) => format!("@robot:{r}"),
+        };
+        self.mark(i, end);
+        // "a desk with … a book to its left": a side of the host it stands on, where it stays.
+        let on_it =
+            matches!(&subject, Subject::Group(g) if self.implicit_on.iter().any(|(x, h)| x == g && *h == target));
+        if !on_it {
+            self.apply(&subject, Cue::NextTo, vec![target]);
+        }
+        Some(end)
+    }
+
+    /// Whether the word at `i` is a verb of handling: one of the known verbs, or after "to"
+    /// a verb of operating a thing ("to open it", "to stand it upright").
+    fn handling_verb_at(&self, i: usize) -> bool {
+        let w = self.word(i);
+        if crate::phrase::is_handling_verb(w) {
+            return true;
+        }
+        i >= 1
+            && self.word(i - 1) == "to"
+            && crate::phrase::is_operating_verb(w)
+            && self.toks.get(i + 1).is_some_and(|t| t.kind == TokenKind::Word)
+    }
+
+    /// "a sawyer arm to open it", "a UR5e unloading them": the thing a pronoun after a verb
+    /// of handling refers to is the robot's work.
+    fn pronoun_worked_on(&mut self, i: usize) {
+        if self.working.is_none() || self.used[i] || i == 0 || !self.handling_verb_at(i - 1) {
+            return;
+        }
+        let w = self.word(i).to_string();
+        if !matches!(w.as_str(), "it" | "them") {
+            return;
+        }
+        if let Some(Subject::Group(g)) = self.resolve_pronoun(&w) {
+            self.worked_on(&g);
+            self.used[i] = true;
+        }
     }
 
     /// A thing named in a robot's clause of handling is its work: the robot reaches it.

@@ -153,6 +153,10 @@ const HANDLING_VERBS: &[&str] = &[
     "shelve",
     "drop",
     "deposit",
+    "wash",
+    "rinse",
+    "scrub",
+    "pull",
 ];
 
 /// Whether `w` is a verb of handling in any of its forms but the past participle ("placed
@@ -170,6 +174,44 @@ pub(crate) fn is_handling_verb(w: &str) -> bool {
         return known(&format!("{stem}y"));
     }
     w.strip_suffix("es").is_some_and(known) || w.strip_suffix('s').is_some_and(known)
+}
+
+/// Verbs of handling that a base without an arm does too: moving loads about ("brings",
+/// "delivering", "carries"), in any of the forms [`is_handling_verb`] takes.
+pub(crate) fn is_transport_verb(w: &str) -> bool {
+    ["bring", "carry", "carri", "deliver", "move", "mov", "transfer", "take", "tak", "serv", "serve"]
+        .iter()
+        .any(|stem| w == *stem || w.strip_prefix(stem).is_some_and(|rest| matches!(rest, "s" | "es" | "ies" | "ing")))
+}
+
+/// Verbs of operating a thing that are as often adjectives or nouns ("open", "close",
+/// "press"): a verb of handling only as a purpose after "to" ("a robot to open the box").
+pub(crate) fn is_operating_verb(w: &str) -> bool {
+    matches!(
+        w,
+        "open"
+            | "close"
+            | "shut"
+            | "turn"
+            | "switch"
+            | "press"
+            | "push"
+            | "pull"
+            | "stand"
+            | "empty"
+            | "fill"
+            | "clean"
+            | "wash"
+            | "water"
+            | "cut"
+            | "hang"
+            | "plug"
+            | "unplug"
+            | "flip"
+            | "rotate"
+            | "slide"
+            | "hit"
+    )
 }
 
 /// Adverbs and particles that end a phrase and are never its noun: "4 m apart", "a mirror

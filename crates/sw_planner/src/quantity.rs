@@ -159,7 +159,51 @@ pub(crate) fn quantity_at(toks: &[Token], i: usize) -> Option<Quantity> {
         q.more = true;
         q.len += 1;
     }
+    // "a pair of scissors", "two pairs of pliers": a pair of a thing named only in the
+    // plural is one thing, not two.
+    let paired = (i..i + q.len).any(|k| matches!(word(toks, k), "pair" | "pairs"));
+    if paired && (0..3).map(|k| word(toks, i + q.len + k)).take_while(|w| !is_joint(w)).any(is_pair_noun) {
+        q.value /= 2.0;
+    }
     Some(q)
+}
+
+/// Words that end the noun phrase after a quantity ("a pair of pliers and …").
+fn is_joint(w: &str) -> bool {
+    w.is_empty() || matches!(w, "and" | "or" | "with" | "on" | "in" | "at" | "by" | "of" | "next" | "beside")
+}
+
+/// Nouns used only in the plural for one thing made of two halves.
+fn is_pair_noun(w: &str) -> bool {
+    matches!(
+        w,
+        "scissors"
+            | "pliers"
+            | "tongs"
+            | "tweezers"
+            | "shears"
+            | "clippers"
+            | "snips"
+            | "cutters"
+            | "pincers"
+            | "secateurs"
+            | "glasses"
+            | "spectacles"
+            | "goggles"
+            | "binoculars"
+            | "headphones"
+            | "earphones"
+            | "trousers"
+            | "pants"
+            | "jeans"
+            | "shorts"
+            | "tights"
+            | "leggings"
+            | "pyjamas"
+            | "pajamas"
+            | "overalls"
+            | "dungarees"
+    )
 }
 
 #[cfg(test)]
@@ -189,6 +233,12 @@ mod tests {
         assert_eq!(q("two dozen mugs"), Some((24.0, 2, true, false)));
         assert_eq!(q("a pair of mugs"), Some((2.0, 3, true, false)));
         assert_eq!(q("three pairs of gloves"), Some((6.0, 3, true, false)));
+        // A pair of a thing named only in the plural is one thing.
+        assert_eq!(q("a pair of scissors"), Some((1.0, 3, true, false)));
+        assert_eq!(q("a pair of sharp pliers"), Some((1.0, 3, true, false)));
+        assert_eq!(q("two pairs of safety goggles"), Some((2.0, 3, true, false)));
+        assert_eq!(q("3 pairs of Tongs"), Some((3.0, 3, true, false)));
+        assert_eq!(q("a pair of mugs and scissors"), Some((2.0, 3, true, false)));
         assert_eq!(q("a couple of mugs"), Some((2.0, 3, true, false)));
         assert_eq!(q("a few mugs").map(|x| (x.0, x.2)), Some((3.0, false)));
         assert_eq!(q("several mugs").map(|x| (x.0, x.2)), Some((4.0, false)));

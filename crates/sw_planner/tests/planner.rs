@@ -935,9 +935,11 @@ fn robots_and_objects_in_one_prompt() {
     assert_rel(&p, "cardboard_box", on("workbench"));
     assert!(p.understanding.not_understood.is_empty() && p.understanding.approximated.is_empty(), "{}", dump(&p));
 
+    // A named arm on a base that drives is the catalog's mobile manipulator, said so.
     let p = ok("a warehouse with a turtlebot and a UR5 on a mobile base");
     assert_eq!(robot(&p, "turtlebot3").mount, Mount::Floor);
-    assert_eq!(robot(&p, "ur5e").mount, Mount::MobileBase);
+    assert_eq!(robot(&p, "mobile_manipulator").mount, Mount::Floor);
+    assert!(approximated(&p, "UR5"), "{}", dump(&p));
 }
 
 // ------------------------------------------------------------------------ unknown nouns
@@ -1720,4 +1722,171 @@ fn one_thing_along_each_of_two_walls_is_one_per_wall() {
     let p = ok("a store room with 6 crates along both long walls");
     assert_eq!(group(&p, "crate").count, 6, "{}", dump(&p));
     assert_rel(&p, "crate", RelationKind::OnOppositeWalls { long: true });
+}
+
+// ------------------------------------------------------------------------ s7: arms and their work
+
+/// Whether robot `arm` has a reach relation to the group `target`.
+fn reaches(p: &ScenePlan, arm: &str, target: &str) -> bool {
+    p.relations.iter().any(|r| r.subject == arm && r.kind == RelationKind::Reach { target: target.into() })
+}
+
+#[test]
+fn an_arm_reaches_the_work_its_phrase_is_linked_to() {
+    // "X with an arm": the thing it comes with (not a surface it stands on) is its work.
+    for (prompt, cat, model) in [
+        ("an injection moulding machine with a UR10e", "machine", "ur10e"),
+        ("lathe with robotic arm", "lathe", "ur5e"),
+        ("A CNC MILL WITH A COBOT", "machine", "ur5e"),
+    ] {
+        let p = ok(prompt);
+        let arm = robot(&p, model).id.clone();
+        assert!(reaches(&p, &arm, &group(&p, cat).id), "{prompt:?}\n{}", dump(&p));
+    }
+    // A verb of handling, in any form, or a purpose after "to", with its object named or
+    // referred to: the robot's work.
+    let p = ok("a kinova arm beside the sink rinsing two mugs");
+    assert!(reaches(&p, &robot(&p, "kinova_gen3").id, &group(&p, "mug").id), "{}", dump(&p));
+    let p = ok("a 3d printer on a bench and a robotic arm to empty it");
+    assert!(reaches(&p, &robot(&p, "ur5e").id, &group(&p, "fdm_printer").id), "{}", dump(&p));
+    let p = ok("mug on the table, the panda to push it off");
+    assert!(reaches(&p, &robot(&p, "panda").id, &group(&p, "mug").id), "{}", dump(&p));
+    // An arm between two things works on both.
+    let p = ok("a robot arm in between the lathe and the mill");
+    let arm = robot(&p, "ur5e").id.clone();
+    assert!(reaches(&p, &arm, &group(&p, "lathe").id), "{}", dump(&p));
+    assert!(reaches(&p, &arm, &group(&p, "machine").id), "{}", dump(&p));
+    // Nothing said of the arm and one work surface: it works there.
+    let p = ok("Two bowls on a table. Franka.");
+    assert!(reaches(&p, &robot(&p, "panda").id, &group(&p, "table").id), "{}", dump(&p));
+    // Not every "to" is a purpose: "next to", "close to" stay places.
+    let p = ok("a chair next to the desk and a panda close to the shelf");
+    let arm = robot(&p, "panda").id.clone();
+    assert!(!reaches(&p, &arm, &group(&p, "chair").id), "{}", dump(&p));
+}
+
+#[test]
+fn an_arm_on_a_base_that_drives_is_the_mobile_manipulator() {
+    for prompt in [
+        "a Kinova on a mobile base beside the shelving",
+        "kinova gen3 mounted on an AGV",
+        "a mobile robot with a robotic arm next to the fridge",
+        "mobile robot carrying a UR5e by the shelf",
+        "a mobile robot in front of the cupboard to open it",
+        "a robot on a mobile platform",
+    ] {
+        let p = ok(prompt);
+        assert_eq!(p.robots.len(), 1, "{prompt:?}: one robot\n{}", dump(&p));
+        assert_eq!(p.robots[0].model, "mobile_manipulator", "{prompt:?}\n{}", dump(&p));
+    }
+    // A named arm other than the one it carries is said so; its own arm is not.
+    let p = ok("a Kinova on a mobile base");
+    assert!(approximated(&p, "Kinova"), "{}", dump(&p));
+    let p = ok("a Panda on a mobile base");
+    assert_eq!(robot(&p, "mobile_manipulator").count, 1);
+    assert!(!p.understanding.approximated.iter().any(|a| a.reason.contains("has no")), "{}", dump(&p));
+    // A cart does not drive; a TurtleBot named as such, or a base that only carries loads,
+    // stays a base.
+    let p = ok("a UR5 on a mobile cart");
+    assert_eq!(robot(&p, "ur5e").mount, Mount::MobileBase);
+    let p = ok("a TurtleBot to push the box");
+    assert_eq!(robot(&p, "turtlebot3").mount, Mount::Floor);
+    let p = ok("a mobile robot delivering parcels to the desk");
+    assert_eq!(robot(&p, "turtlebot3").mount, Mount::Floor);
+}
+
+#[test]
+fn a_robot_on_each_of_several_things_is_one_per_thing() {
+    for (prompt, model, n) in [
+        ("a 4 x 6 m lab with one bench along each long wall and a Panda on each bench", "panda", 2),
+        ("3 workbenches, a franka on each", "panda", 3),
+        ("two tables and a UR5e on both", "ur5e", 2),
+        ("a cobot at each of the four workstations", "ur5e", 4),
+        ("four work benches in a row with a kinova at every bench", "kinova_gen3", 4),
+    ] {
+        let p = ok(prompt);
+        assert_eq!(robot(&p, model).count, n, "{prompt:?}\n{}", dump(&p));
+    }
+    // "loading both", "tending each": one robot's work, not one robot each.
+    for prompt in [
+        "2 CNC machines side by side, a UR10e on a pedestal in front of them loading both",
+        "two lathes and a robot arm tending each",
+    ] {
+        let p = ok(prompt);
+        assert_eq!(p.robots.iter().map(|r| r.count).sum::<u32>(), 1, "{prompt:?}\n{}", dump(&p));
+    }
+    // One host: one robot.
+    let p = ok("a bench and a Panda on each side of it");
+    assert!(p.robots.iter().map(|r| r.count).sum::<u32>() <= 2, "{}", dump(&p));
+    let p = ok("a table with a panda on it");
+    assert_eq!(robot(&p, "panda").count, 1);
+}
+
+#[test]
+fn one_before_a_place_is_one_of_the_group_counted_last() {
+    // "one either side of" after a counted group that is not the clause's subject: one of
+    // that group, and the count said is not carried over to another noun.
+    let p = ok("a UR10 palletizing cartons off a conveyor onto 2 pallets, one on either side of the robot");
+    let arm = robot(&p, "ur10e").id.clone();
+    let pallet = group(&p, "pallet").id.clone();
+    assert_rel(&p, &pallet, RelationKind::OnEachSideOf { target: arm.clone() });
+    assert!(reaches(&p, &arm, &pallet), "{}", dump(&p));
+    assert_eq!(group(&p, "conveyor").count, 1, "{}", dump(&p));
+    let p = ok("a robot arm stacking crates on two pallets, one either side of it");
+    assert_rel(&p, &group(&p, "pallet").id, RelationKind::OnEachSideOf { target: robot(&p, "ur5e").id.clone() });
+    // The subject itself counted: unchanged.
+    let p = ok("4 beds, one in each corner");
+    assert_eq!(group(&p, "bed").count, 4);
+    // Things merely placed round a robot are not its work.
+    let p = ok("a UR5e picking parts, three fences around the robot");
+    assert!(!reaches(&p, &robot(&p, "ur5e").id, &group(&p, "safety_fence").id), "{}", dump(&p));
+}
+
+#[test]
+fn a_robot_placed_nearby_works_at_the_scenes_first_thing() {
+    for (prompt, cat, model) in [
+        ("basket on the rug, franka nearby", "shopping_basket", "panda"),
+        ("a lathe against the wall. A robot arm close by.", "lathe", "ur5e"),
+        ("cnc machine, ur10 alongside", "machine", "ur10e"),
+    ] {
+        let p = ok(prompt);
+        let arm = robot(&p, model).id.clone();
+        assert!(reaches(&p, &arm, &group(&p, cat).id), "{prompt:?}\n{}", dump(&p));
+        assert!(not_understood(&p).is_empty(), "{prompt:?}: {:?}", not_understood(&p));
+    }
+    // An adverb with a target of its own is that relation, not this one.
+    let p = ok("a lathe and a mill, a robot arm close by the mill");
+    assert!(reaches(&p, &robot(&p, "ur5e").id, &group(&p, "machine").id), "{}", dump(&p));
+    assert!(!reaches(&p, &robot(&p, "ur5e").id, &group(&p, "lathe").id), "{}", dump(&p));
+}
+
+#[test]
+fn a_possessive_side_is_beside_what_it_refers_to() {
+    // "to its left", "on its right-hand side": next to the thing (or robot) "its" names.
+    let p = ok("UR5e on a table, a tote to its left");
+    let arm = robot(&p, "ur5e").id.clone();
+    let beside: Vec<&str> = p
+        .relations
+        .iter()
+        .filter(|r| r.kind == RelationKind::NextTo { target: arm.clone() })
+        .map(|r| r.subject.as_str())
+        .collect();
+    assert!(!beside.is_empty(), "{}", dump(&p));
+    for b in beside {
+        assert!(reaches(&p, &arm, b), "the arm reaches what stands beside it on its table\n{}", dump(&p));
+    }
+    // Said of the robot's clause, the table is beside the arm either way round: its work.
+    let p = ok("ur10 bolted to the floor tending a cnc machine, parts table on its left hand side");
+    let arm = robot(&p, "ur10e").id.clone();
+    let table = group(&p, "table").id.clone();
+    let beside =
+        p.relations.iter().any(|r| r.subject == table && r.kind == RelationKind::NextTo { target: arm.clone() })
+            || robot(&p, "ur10e").near.as_deref() == Some(table.as_str());
+    assert!(beside && reaches(&p, &arm, &table), "{}", dump(&p));
+    assert!(not_understood(&p).is_empty(), "{:?}", not_understood(&p));
+    // A side of the host a thing stands on is a place on it.
+    let p = ok("a study desk with a pencil case in the middle, a book to its left");
+    assert_rel(&p, &group(&p, "book").id, on(&group(&p, "desk").id));
+    let p = ok("a sofa, a floor lamp on its right side");
+    assert_rel(&p, &group(&p, "floor_lamp").id, RelationKind::NextTo { target: group(&p, "sofa").id.clone() });
 }

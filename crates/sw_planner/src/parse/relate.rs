@@ -130,23 +130,35 @@ impl Parser<'_> {
                 self.used[j] = true;
                 j = target_start(&self.toks, j + 1);
             }
-            if (self.each_before(j) || matches!(self.word(j), "each" | "both"))
+            let distributive = self.each_before(j) || matches!(self.word(j), "each" | "both");
+            // "a Panda on each bench", "two tables, a UR5e at each", "an arm at every one of
+            // the 4 stations": one robot (or the count said) for every instance.
+            // A verb's object is not a place: "loading both", "tending each" are one robot's
+            // work on all of them.
+            let place = cue != Cue::Tend || self.word(i) == "at";
+            if distributive
+                && place
+                && matches!(cue, Cue::Tend | Cue::NextTo | Cue::InFront | Cue::On | Cue::Near | Cue::Behind)
+                && let Some(Subject::Robot(r)) = self.subject.clone()
+            {
+                let (target, next) = self.distributed_over(j, &cue)?;
+                if !target.starts_with('@') {
+                    self.mark(i, next);
+                    let hosts = self.group(&target).and_then(|g| g.count).filter(|c| *c > 1.0);
+                    if let (Some(n), Some(robot)) = (hosts, self.draft.robots.get_mut(r)) {
+                        robot.count = Some(robot.count.unwrap_or(1.0) * n);
+                        robot.plural = true;
+                        self.relate(&target, RelationKind::EachWith { target: format!("@robot:{r}") });
+                    }
+                    self.apply(&Subject::Robot(r), cue, vec![target]);
+                    return Some(next);
+                }
+            }
+            if distributive
                 && matches!(cue, Cue::Tend | Cue::NextTo | Cue::InFront | Cue::On | Cue::Near | Cue::In | Cue::Behind)
                 && let Some(Subject::Group(g)) = self.subject.clone()
             {
-                // "on each", "on both": the plural group named before.
-                let pronoun = j > 0
-                    && matches!(self.word(j - 1), "each" | "both" | "all")
-                    && self.phrase_at(j, true, Bare::Target).ok().flatten().is_none();
-                let found = if pronoun {
-                    match self.resolve_pronoun("they") {
-                        Some(Subject::Group(h)) => Some((h, j)),
-                        _ => None,
-                    }
-                } else {
-                    self.target_at(j, &cue)
-                };
-                let (target, next) = found?;
+                let (target, next) = self.distributed_over(j, &cue)?;
                 if !target.starts_with('@') && target != g {
                     self.mark(i, next);
                     self.add_companion(&target, &g);
@@ -315,6 +327,21 @@ impl Parser<'_> {
         {
             group.count = Some(group.count.unwrap_or(1.0) * n);
             group.plural = true;
+        }
+    }
+
+    /// The group a distributive target at `j` names ("each of the desks", "every bench"), or
+    /// with the noun left out ("on each", "on both") the plural group named before.
+    fn distributed_over(&mut self, j: usize, cue: &Cue) -> Option<(String, usize)> {
+        let pronoun = j > 0
+            && matches!(self.word(j - 1), "each" | "both" | "all")
+            && self.phrase_at(j, true, Bare::Target).ok().flatten().is_none();
+        if !pronoun {
+            return self.target_at(j, cue);
+        }
+        match self.resolve_pronoun("they") {
+            Some(Subject::Group(h)) => Some((h, j)),
+            _ => None,
         }
     }
 
@@ -899,41 +926,11 @@ impl Parser<'_> {
                 self.set_mount(idx, Mount::MobileBase);
                 return;
             }
-            // "a robot arm on an AGV" is a mobile manipulator; a named model ("a UR5 on a
-            // mobile base") keeps its model and rides a mobile cart.
+            // An arm on a base that drives ("a robot arm on an AGV", "a Kinova on a mobile
+            // base") is the catalog's mobile manipulator; a named arm other than its own is
+            // said so. (A cart, which does not drive, keeps the named arm on it.)
             (Cue::On, [t]) if t == "@mount:manipulator" => {
-                let generic = self.draft.robots.get(idx).is_some_and(|r| {
-                    r.phrase.to_lowercase().split_whitespace().all(|w| {
-                        matches!(
-                            w,
-                            "a" | "an"
-                                | "the"
-                                | "one"
-                                | "robot"
-                                | "robotic"
-                                | "arm"
-                                | "industrial"
-                                | "collaborative"
-                                | "cobot"
-                                | "manipulator"
-                        )
-                    })
-                });
-                if !generic {
-                    self.set_mount(idx, Mount::MobileBase);
-                    return;
-                }
-                if let Some(r) = self.draft.robots.get_mut(idx)
-                    && r.word.kind == sw_robots::RobotKind::Arm
-                {
-                    r.word = crate::lexicon::RobotWord {
-                        wants: "mobile_manipulator",
-                        kind: sw_robots::RobotKind::MobileManipulator,
-                        exact: false,
-                        on_mobile_base: false,
-                    };
-                    r.mount = Mount::Auto;
-                }
+                self.make_mobile_manipulator(idx);
                 return;
             }
             (Cue::On, [t]) if t == "@mount:floor" => {
@@ -1033,6 +1030,31 @@ impl Parser<'_> {
         if !self.draft.robot_relations.contains(&(idx, rel.clone())) {
             self.draft.robot_relations.push((idx, rel));
         }
+    }
+
+    /// Robot `idx` becomes the catalog's mobile manipulator: an arm said to ride a base
+    /// that drives, or a mobile robot said to handle things. A named model other than the
+    /// one the catalog's mobile manipulator carries is listed as approximated.
+    pub(super) fn make_mobile_manipulator(&mut self, idx: usize) {
+        let Some(r) = self.draft.robots.get_mut(idx) else { return };
+        if r.word.kind == sw_robots::RobotKind::MobileManipulator {
+            return;
+        }
+        let carried = sw_robots::find("mobile_manipulator").map(|d| d.display).unwrap_or("mobile manipulator");
+        let named = r.word.exact && r.word.kind == sw_robots::RobotKind::Arm;
+        let own_arm = named && carried.to_lowercase().contains(&r.word.wants.to_lowercase());
+        if named && !own_arm {
+            let reason = format!("the robot catalog has no {} on a mobile base; it has {carried}", r.phrase);
+            let text = r.phrase.clone();
+            self.draft.approximated.push(sw_plan::Approximation { text, became: "mobile_manipulator".into(), reason });
+        }
+        r.word = crate::lexicon::RobotWord {
+            wants: "mobile_manipulator",
+            kind: sw_robots::RobotKind::MobileManipulator,
+            exact: false,
+            on_mobile_base: false,
+        };
+        r.mount = Mount::Auto;
     }
 
     fn set_mount(&mut self, idx: usize, mount: Mount) {
