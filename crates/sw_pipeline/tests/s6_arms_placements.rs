@@ -13,22 +13,12 @@
 
 mod common;
 
-use common::{Expect, plan};
+use common::plan;
 use serde_json::{Value, json};
 use sw_plan::ScenePlan;
 
-/// Generates `plan` on three seeds and judges each package against `line`; the report's
-/// own relation checks must hold too. Panics with every failure.
 fn check(name: &str, plan: &ScenePlan, line: Value) {
-    let f = common::run(
-        name,
-        plan,
-        &line,
-        &[1, 2, 3],
-        "S6_ARMS_KEEP",
-        Expect { unmet: &[], warns: &[], sizes_and_room: false },
-    );
-    assert!(f.is_empty(), "{} failures:\n{}", f.len(), f.join("\n"));
+    common::assert_holds_on_three_seeds(name, plan, &line, "S6_ARMS_KEEP");
 }
 
 fn arm_on_pedestal(model: &str) -> Value {

@@ -10,20 +10,12 @@
 
 mod common;
 
-use common::{Expect, plan};
+use common::plan;
 use serde_json::{Value, json};
 use sw_plan::ScenePlan;
 
 fn check(name: &str, plan: &ScenePlan, line: Value) {
-    let f = common::run(
-        name,
-        plan,
-        &line,
-        &[1, 2, 3],
-        "S7_LAYOUT_KEEP",
-        Expect { unmet: &[], warns: &[], sizes_and_room: false },
-    );
-    assert!(f.is_empty(), "{} failures:\n{}", f.len(), f.join("\n"));
+    common::assert_holds_on_three_seeds(name, plan, &line, "S7_LAYOUT_KEEP");
 }
 
 #[test]

@@ -67,6 +67,14 @@ pub struct Expect<'a> {
     pub sizes_and_room: bool,
 }
 
+/// Generates `plan` on seeds 1, 2 and 3 and judges each package against `line`; the
+/// report's own relation checks must hold too (nothing unmet, no warning required). Panics
+/// with every failure. `keep_env` as for [`run`].
+pub fn assert_holds_on_three_seeds(name: &str, plan: &ScenePlan, line: &Value, keep_env: &str) {
+    let f = run(name, plan, line, &[1, 2, 3], keep_env, Expect { unmet: &[], warns: &[], sizes_and_room: false });
+    assert!(f.is_empty(), "{} failures:\n{}", f.len(), f.join("\n"));
+}
+
 /// Generates `plan` on `seeds` (each verified in MuJoCo), judges each package against
 /// `line` and checks the report's own verdicts; returns the failures. `KEEP_ENV=DIR` (the
 /// variable a suite names) keeps the packages there, to render and look at them.
