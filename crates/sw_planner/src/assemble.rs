@@ -654,14 +654,31 @@ fn group_count(
     counts: &BTreeMap<String, u32>,
     notes: &mut Vec<Approximation>,
 ) -> Option<u32> {
+    // A host whose own count is unknown (it was left out): the group keeps the count its
+    // own words give, and says why, never vanishing without a word.
+    let host_count = |host: &str, notes: &mut Vec<Approximation>| {
+        let n = counts.get(host).copied();
+        if n.is_none() {
+            notes.push(Approximation {
+                text: g.phrase.clone(),
+                became: "counted on its own".into(),
+                reason: format!("it was counted per '{host}', which is not in the scene"),
+            });
+        }
+        n
+    };
     match &g.count_rule {
         Some(CountRule::EachOf { host, per }) => {
-            let hosts = counts.get(host).copied()?;
+            let Some(hosts) = host_count(host, notes) else {
+                return resolve_count(g.count, g.plural, &g.phrase, notes);
+            };
             let n = (f64::from(hosts) * per).round().clamp(1.0, f64::from(MAX_COUNT)) as u32;
             Some(n)
         }
         Some(CountRule::Fill { host, levels }) if g.count.is_none() => {
-            let hosts = counts.get(host).copied()?;
+            let Some(hosts) = host_count(host, notes) else {
+                return resolve_count(g.count, g.plural, &g.phrase, notes);
+            };
             let host_cat = d.groups.iter().find(|x| &x.id == host).and_then(|x| x.category).and_then(sw_catalog::find);
             // Two on every level of every shelf (as many levels as the category's default
             // has; the forge keeps that number); three on every pallet.

@@ -1890,3 +1890,52 @@ fn a_possessive_side_is_beside_what_it_refers_to() {
     let p = ok("a sofa, a floor lamp on its right side");
     assert_rel(&p, &group(&p, "floor_lamp").id, RelationKind::NextTo { target: group(&p, "sofa").id.clone() });
 }
+
+/// A distribution said before its hosts are counted ("a stool at each bench, 3 benches"):
+/// the hosts named first are the counted ones, and the things go with every one of them.
+/// Was: the first mention of the hosts, merged into the counted group, took the things'
+/// count with it and the things vanished from the plan without a word.
+#[test]
+fn a_distribution_said_before_its_hosts_are_counted_covers_every_host() {
+    let cases: &[(&str, &str, &str, u32)] = &[
+        ("a workshop with a stool at each bench and 3 benches", "stool", "workbench", 3),
+        ("a lamp on each desk, 4 desks", "desk_lamp", "desk", 4),
+        ("A chair at every table; five tables.", "chair", "table", 5),
+        ("office: a monitor on each desk. there are 6 desks", "monitor", "desk", 6),
+    ];
+    for &(prompt, thing, host, n) in cases {
+        let p = ok(prompt);
+        let h = group(&p, host);
+        let t = group(&p, thing);
+        assert_eq!(h.count, n, "{prompt:?}: hosts\n{}", dump(&p));
+        assert_eq!(t.count, n, "{prompt:?}: one {thing} per {host}\n{}", dump(&p));
+        assert_rel(&p, &h.id, RelationKind::EachWith { target: t.id.clone() });
+    }
+}
+
+/// No group the reader made leaves the plan without a word: every phrase of the prompt
+/// that named a thing is in the plan, or in `understanding` saying why not.
+#[test]
+fn a_thing_counted_per_host_is_never_dropped_silently() {
+    for prompt in [
+        "a stool at each bench, 3 benches",
+        "a lamp on every desk and no desks",
+        "boxes on each shelf, two shelves, then remove the shelves",
+    ] {
+        let p = ok(prompt);
+        for word in ["stool", "lamp", "box"] {
+            if !prompt.contains(word) {
+                continue;
+            }
+            let placed = p.objects.iter().any(|o| o.phrase.contains(word) && o.count > 0);
+            let said = p
+                .understanding
+                .approximated
+                .iter()
+                .map(|a| a.text.as_str())
+                .chain(not_understood(&p))
+                .any(|t| t.contains(word));
+            assert!(placed || said, "{prompt:?}: '{word}' vanished\n{}", dump(&p));
+        }
+    }
+}

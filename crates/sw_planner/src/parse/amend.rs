@@ -5,7 +5,7 @@
 
 use sw_plan::{Approximation, RelationKind};
 
-use super::{Parser, Subject};
+use super::{CountRule, Parser, Subject};
 use crate::quantity::numeral_at;
 use crate::text::TokenKind;
 
@@ -167,6 +167,12 @@ impl Parser<'_> {
                 seen.push(r.clone());
                 fresh
             });
+            // "a stool at each bench, 3 benches": the stools are counted per counted bench.
+            for g in &mut self.draft.groups {
+                if let Some(CountRule::EachOf { host, .. } | CountRule::Fill { host, .. }) = &mut g.count_rule {
+                    redirect(host);
+                }
+            }
             for r in &mut self.draft.robots {
                 if let sw_plan::Mount::OnSurface { target } = &mut r.mount {
                     redirect(target);
