@@ -113,13 +113,8 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
             *n += 1;
             let name = format!("{}_{n}", def.name);
             let is_arm = def.kind == RobotKind::Arm;
-            let mut carrier = |category: &str, work: Option<&str>, out: &mut Forged| -> RobotMount {
-                let mut req = AssetRequest::new(category, instance_seed(seed, &name, 0));
-                if category == "pedestal"
-                    && let Some(h) = pedestal_height(plan, &r.id, work, &out.objects)
-                {
-                    req.overrides.push(("height".into(), h));
-                }
+            let mut carrier = |category: &str, out: &mut Forged| -> RobotMount {
+                let req = AssetRequest::new(category, instance_seed(seed, &name, 0));
                 let asset = sw_catalog::generate(&req)
                     .unwrap_or_else(|_| sw_catalog::proxy_asset(category, [0.5, 0.5, 0.7], false, None, 0));
                 let tags = sw_catalog::find(category)
@@ -150,12 +145,12 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                     RobotMount::Surface { group: said_surface.clone().unwrap_or_default() }
                 }
                 (Mount::OnSurface { target }, true) => RobotMount::Surface { group: target.clone() },
-                (Mount::Pedestal, true) => carrier("pedestal", r.near.as_deref(), &mut out),
-                (Mount::MobileBase, true) => carrier("mobile_cart", None, &mut out),
+                (Mount::Pedestal, true) => carrier("pedestal", &mut out),
+                (Mount::MobileBase, true) => carrier("mobile_cart", &mut out),
                 (Mount::Floor, true) => RobotMount::Floor,
                 (Mount::Auto, true) => match (&surface_group, &r.near) {
                     (Some(g), None) => RobotMount::Surface { group: g.clone() },
-                    _ => carrier("pedestal", r.near.as_deref(), &mut out),
+                    _ => carrier("pedestal", &mut out),
                 },
             };
             // One arm per work surface: the arms beyond that stand on pedestals beside it.
@@ -189,9 +184,8 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                             "robot_on_pedestal",
                             format!("{name}: every {group} already carries an arm; it stands on a pedestal beside one"),
                         ));
-                        let mount = carrier("pedestal", Some(&group), &mut out);
                         near = Some(group);
-                        mount
+                        carrier("pedestal", &mut out)
                     } else {
                         RobotMount::Surface { group }
                     }
@@ -213,45 +207,6 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
         }
     }
     out
-}
-
-/// How tall a pedestal stands for robot group `robot`: its mounting plate 0.1 m below the
-/// height it works at — the highest top surface of what it is said to reach (and `near`),
-/// else that thing's top — within 0.3–0.8 m: an arm among floor bins stands low enough to
-/// reach into them, one at a conveyor high enough to reach across it, one tending a tall
-/// machine no higher than a bench. `None` (the catalog's height) with no work.
-fn pedestal_height(plan: &ScenePlan, robot: &str, near: Option<&str>, objects: &[ForgedObject]) -> Option<f64> {
-    let mut work: Vec<&str> = plan
-        .relations
-        .iter()
-        .filter(|x| x.subject == robot)
-        .filter_map(|x| match &x.kind {
-            RelationKind::Reach { target } => Some(target.as_str()),
-            _ => None,
-        })
-        .collect();
-    work.extend(near);
-    // A thing resting on another stands at its host's top surface.
-    let top_of = |group: &str| -> Option<f64> {
-        objects
-            .iter()
-            .filter(|o| o.group == group)
-            .map(|o| o.asset.top_surface().map_or_else(|| o.asset.bounds().max[2], |s| s.z))
-            .reduce(f64::max)
-    };
-    let base_of = |group: &str| -> f64 {
-        plan.relations
-            .iter()
-            .find_map(|x| match &x.kind {
-                RelationKind::On { target } | RelationKind::Inside { target } if x.subject == group => {
-                    objects.iter().filter(|o| &o.group == target).find_map(|o| o.asset.top_surface().map(|s| s.z))
-                }
-                _ => None,
-            })
-            .unwrap_or(0.0)
-    };
-    let top = work.iter().filter_map(|g| top_of(g).map(|t| base_of(g) + t)).reduce(f64::max)?;
-    Some((top - 0.1).clamp(0.3, 0.8))
 }
 
 /// Whether a robot group is said to stand on each side of an object group.
