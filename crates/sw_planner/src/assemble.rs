@@ -662,7 +662,10 @@ fn group_count(
             notes.push(Approximation {
                 text: g.phrase.clone(),
                 became: "counted on its own".into(),
-                reason: format!("it was counted per '{host}', which is not in the scene"),
+                reason: format!(
+                    "it was counted per '{}', which is not in the scene",
+                    d.groups.iter().find(|x| x.id == host).map_or(host, |x| x.phrase.as_str())
+                ),
             });
         }
         n
