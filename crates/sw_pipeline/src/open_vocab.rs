@@ -228,6 +228,16 @@ fn nearest_sense(noun: &str, meaning: &dyn Meaning) -> Option<(&'static Category
     all.into_iter().zip(s).max_by(|a, b| a.1.total_cmp(&b.1))
 }
 
+/// Per category of `cats`, the mean of `text`'s name score (`names`) and its sense score:
+/// how near it is by name *and* by what the category is; the name scores alone where the
+/// model gives no senses.
+fn name_and_sense(text: &str, names: &[f32], cats: &[&'static Category], meaning: &dyn Meaning) -> Vec<f32> {
+    match meaning.senses(text, cats) {
+        Some(senses) => names.iter().zip(senses).map(|(n, s)| (n + s) / 2.0).collect(),
+        None => names.to_vec(),
+    }
+}
+
 /// The largest sense score of `noun` over every category (`None` without the model).
 fn best_sense(noun: &str, meaning: &dyn Meaning) -> Option<f32> {
     nearest_sense(noun, meaning).map(|(_, s)| s)
@@ -312,10 +322,7 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
     // by sense (its name with its description), the mean of the two: a name alone is near
     // by spelling and shared sub-words ("a hunch" and the ottoman, "a traffic jam" and the
     // forklift), a sense alone is low for a real thing the descriptions do not mention.
-    let evidence = meaning.scores(&text, &all).map(|names| match meaning.senses(&text, &all) {
-        Some(senses) => names.iter().zip(senses).map(|(n, s)| (n + s) / 2.0).collect(),
-        None => names,
-    });
+    let evidence = meaning.scores(&text, &all).map(|names| name_and_sense(&text, &names, &all, meaning));
     if let Some(s) = evidence {
         // Only a category that could be like the noun counts as evidence that it is a
         // thing: not one named for it or after its modifiers, nor one that shares only a
@@ -376,10 +383,7 @@ fn proxy_by_meaning(text: &str, meaning: &dyn Meaning, known: Option<Kind>) -> R
     // of its name and sense scores, as for the evidence of a thing): near by name alone is near by spelling or by
     // shared sub-words ("chaise longue" and the chalice, "moka pot" and the lasagne), which
     // says nothing about the kind of thing or its size.
-    let s: Vec<f32> = match meaning.senses(text, &all) {
-        Some(senses) => senses.iter().zip(&names).map(|(a, b)| (a + b) / 2.0).collect(),
-        None => names.clone(),
-    };
+    let s = name_and_sense(text, &names, &all, meaning);
     let words = phrase_parts(text).0;
     let mut order: Vec<usize> = (0..all.len()).collect();
     order.sort_by(|&a, &b| names[b].total_cmp(&names[a]));
