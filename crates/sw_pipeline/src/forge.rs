@@ -225,10 +225,9 @@ pub(crate) fn carrier_asset(category: &str, seed: u64, height: Option<f64>) -> A
 }
 
 /// How tall the pedestal of robot group `robot` stands: its mounting plate 0.1 m below
-/// the height it works at — the highest of the things it is said to reach (and `work`,
+/// the height it works at — the lowest of the things it is said to reach (and `work`,
 /// the group it tends), each at its lowest surface open above, else its top, raised by
-/// what it rests on —
-/// within 0.3–0.8 m, to the centimetre: an arm among bins on the floor stands low enough
+/// what it rests on — within 0.3–0.8 m, to the centimetre: an arm among bins on the floor stands low enough
 /// to reach into them, one at a conveyor high enough to reach across its belt, one
 /// tending a tall machine no higher than a bench. `None` (the catalog's height) when it
 /// has no work among the forged objects.
@@ -273,7 +272,10 @@ pub(crate) fn pedestal_height(
             })
             .unwrap_or(0.0)
     };
-    let top = groups.iter().filter_map(|g| top_of(g).map(|t| base_of(g) + t)).reduce(f64::max)?;
+    // The lowest of its work: reaching up to a belt or a rack from a low stand is kept
+    // within reach more easily than reaching down into a basin or a floor bin from a
+    // stand as tall as the highest thing it tends.
+    let top = groups.iter().filter_map(|g| top_of(g).map(|t| base_of(g) + t)).reduce(f64::min)?;
     Some(((top - 0.1).clamp(0.3, 0.8) * 100.0).round() / 100.0)
 }
 
