@@ -226,8 +226,8 @@ pub(crate) fn carrier_asset(category: &str, seed: u64, height: Option<f64>) -> A
 
 /// How tall the pedestal of robot group `robot` stands: its mounting plate 0.1 m below
 /// the height it works at — the lowest of the things it is said to reach (and `work`,
-/// the group it tends), each at its lowest surface open above, else its top, raised by
-/// what it rests on — within 0.3–0.8 m, to the centimetre: an arm among bins on the floor stands low enough
+/// the group it tends), each at its top surface, else its top, raised by what it rests
+/// on — within 0.3–0.75 m, to the centimetre: an arm among bins on the floor stands low enough
 /// to reach into them, one at a conveyor high enough to reach across its belt, one
 /// tending a tall machine no higher than a bench. `None` (the catalog's height) when it
 /// has no work among the forged objects.
@@ -247,26 +247,25 @@ pub(crate) fn pedestal_height(
         })
         .collect();
     groups.extend(work);
-    // Where on a thing the arm works: its lowest surface open above (a sink's basin below
-    // its drainboard, a table's top — not a shelf under it), else its top.
+    // Where on a thing the arm works: its top surface (not a shelf under it), else its top.
     let top_of = |group: &str| -> Option<f64> {
         objects
             .iter()
             .filter(|o| o.group == group)
-            .map(|o| {
-                let open = o.asset.surfaces.iter().filter(|s| s.clearance.is_none()).map(|s| s.z);
-                open.reduce(f64::min).unwrap_or_else(|| o.asset.bounds().max[2])
-            })
+            .map(|o| o.asset.top_surface().map_or_else(|| o.asset.bounds().max[2], |s| s.z))
             .reduce(f64::max)
     };
-    // A thing resting on (or in) another stands at its host's top surface.
+    // A thing resting on (or in) another stands at its host's highest surface open above
+    // (a sink's drainboard: its tap stands above it, so it has no top surface).
     let base_of = |group: &str| -> f64 {
         plan.relations
             .iter()
             .filter(|x| x.subject == group)
             .find_map(|x| match &x.kind {
                 RelationKind::On { target } | RelationKind::Inside { target } if target != group => {
-                    objects.iter().filter(|o| &o.group == target).find_map(|o| o.asset.top_surface().map(|s| s.z))
+                    objects.iter().filter(|o| &o.group == target).find_map(|o| {
+                        o.asset.surfaces.iter().filter(|s| s.clearance.is_none()).map(|s| s.z).reduce(f64::max)
+                    })
                 }
                 _ => None,
             })
@@ -276,7 +275,7 @@ pub(crate) fn pedestal_height(
     // within reach more easily than reaching down into a basin or a floor bin from a
     // stand as tall as the highest thing it tends.
     let top = groups.iter().filter_map(|g| top_of(g).map(|t| base_of(g) + t)).reduce(f64::min)?;
-    Some(((top - 0.1).clamp(0.3, 0.8) * 100.0).round() / 100.0)
+    Some(((top - 0.1).clamp(0.3, 0.75) * 100.0).round() / 100.0)
 }
 
 /// Whether a robot group is said to stand on each side of an object group.
