@@ -4,7 +4,7 @@
 
 use sw_plan::{EndOf, Mount, RelationKind};
 
-use super::{Bare, CountRule, Head, Parser, Subject};
+use super::{Bare, CountRule, Head, Parser, Phrase, Subject};
 use crate::cues::{Cue, cue_at, target_start};
 use crate::lexicon::Meaning;
 use crate::phrase::PlaceKind;
@@ -57,8 +57,12 @@ impl Parser<'_> {
                     .take(2)
                     .collect();
                 let plural_first = before.first().is_some_and(|g| self.group_is_plural(g));
+                // "a mixer and a blender on the worktop with the lid beside it, an arm between
+                // them": the two said together, not the last two named.
+                let together = self.coordination_still_in_view(current.as_ref());
                 let targets = match before.as_slice() {
                     [a, ..] if plural_first => Some(vec![a.clone(), a.clone()]),
+                    _ if together.is_some() => together,
                     [a, b] => Some(vec![b.clone(), a.clone()]),
                     _ => None,
                 };
@@ -208,12 +212,26 @@ impl Parser<'_> {
                 for t in &coordinated {
                     self.apply(&s, cue.clone(), vec![t.clone()]);
                 }
+                // "a white mug and a red mug to the right of the caddy", "a sofa and two
+                // armchairs around a table": a relation after phrases joined by "and" is
+                // said of each of them.
+                if cue != Cue::On && !matches!(cue, Cue::Between) {
+                    for c in self.conjuncts_of(&s) {
+                        if !targets.contains(&c) && !coordinated.contains(&c) {
+                            self.apply(&Subject::Group(c.clone()), cue.clone(), targets.clone());
+                            for t in &coordinated {
+                                self.apply(&Subject::Group(c.clone()), cue.clone(), vec![t.clone()]);
+                            }
+                        }
+                    }
+                }
                 // "three mugs and a bowl on the table": small things listed together rest
                 // on the same thing; "a table and four chairs in a row" both stand so.
                 // "a hob with a kettle and two mugs next to it": whatever the "with" lists
                 // stands so to its host.
                 let to_with_host = std::mem::take(&mut self.it_is_with_host);
-                if (cue == Cue::On || to_with_host) && targets.iter().all(|t| !t.starts_with('@')) {
+                let all_of = std::mem::take(&mut self.all_of);
+                if (cue == Cue::On || to_with_host || all_of) && targets.iter().all(|t| !t.starts_with('@')) {
                     let others: Vec<String> = self
                         .list
                         .iter()
@@ -224,13 +242,40 @@ impl Parser<'_> {
                         })
                         .collect();
                     for g in others {
-                        let has_on =
-                            self.draft.relations.iter().any(|(x, k)| x == &g && matches!(k, RelationKind::On { .. }));
+                        // Already on, in, under or set into something: it stays there.
+                        let has_on = self.draft.relations.iter().any(|(x, k)| {
+                            x == &g
+                                && matches!(
+                                    k,
+                                    RelationKind::On { .. }
+                                        | RelationKind::Inside { .. }
+                                        | RelationKind::Under { .. }
+                                        | RelationKind::SetInto { .. }
+                                )
+                        });
                         let small = self.group_is_small(&g) && !has_on;
-                        if (small || (to_with_host && cue != Cue::On)) && !targets.contains(&g) {
+                        if (small || all_of || (to_with_host && cue != Cue::On)) && !targets.contains(&g) {
                             self.apply(&Subject::Group(g), cue.clone(), targets.clone());
                         }
                     }
+                }
+                // What the relation was said of together, for a later "between them".
+                let together: Vec<String> = self
+                    .list
+                    .iter()
+                    .chain(std::iter::once(&s))
+                    .filter_map(|m| match m {
+                        Subject::Group(g) if !targets.contains(g) && !coordinated.contains(g) => Some(g.clone()),
+                        _ => None,
+                    })
+                    .fold(Vec::new(), |mut v, g| {
+                        if !v.contains(&g) {
+                            v.push(g);
+                        }
+                        v
+                    });
+                if together.len() >= 2 {
+                    self.last_coordination = together;
                 }
                 self.list.clear();
                 self.pending.clear();
@@ -243,6 +288,45 @@ impl Parser<'_> {
             }
         }
         Some(end)
+    }
+
+    /// The first and last of the things last said together of one relation, when nothing
+    /// named since stands apart from them (what came after is placed by them or they on
+    /// it): the antecedent of a plural "them" that no plural group is nearer to.
+    fn coordination_still_in_view(&self, current: Option<&Subject>) -> Option<Vec<String>> {
+        let members = &self.last_coordination;
+        let (a, b) = (members.first()?, members.last()?);
+        if members.len() < 2 || current.is_some_and(|c| members.iter().any(|m| *c == Subject::Group(m.clone()))) {
+            return None;
+        }
+        let last_seen = self.mentions.iter().rposition(|m| matches!(m, Subject::Group(g) if members.contains(g)))?;
+        let related = |g: &str| {
+            self.draft.relations.iter().any(|(s, k)| {
+                (s == g && k.targets().iter().any(|t| members.iter().any(|m| m == t)))
+                    || (members.contains(s) && k.targets().contains(&g))
+            })
+        };
+        let apart = self.mentions[last_seen + 1..].iter().any(|m| match m {
+            Subject::Group(g) => Some(m) != current && !members.contains(g) && !related(g),
+            Subject::Robot(_) => false,
+        });
+        (!apart).then(|| vec![a.clone(), b.clone()])
+    }
+
+    /// The groups joined to the subject `s` by a bare "and", still in the clause's list.
+    fn conjuncts_of(&self, s: &Subject) -> Vec<String> {
+        let Subject::Group(g) = s else { return Vec::new() };
+        let in_list = |x: &String| self.list.iter().any(|m| *m == Subject::Group(x.clone()));
+        let mut out: Vec<String> = Vec::new();
+        let mut cur = g.clone();
+        while let Some((a, _)) = self.and_pairs.iter().rev().find(|(_, b)| *b == cur) {
+            if !in_list(a) || out.contains(a) || a == g {
+                break;
+            }
+            out.push(a.clone());
+            cur = a.clone();
+        }
+        out
     }
 
     /// The target after "and" at `j` when it is coordinated with the one before: a definite
@@ -314,7 +398,16 @@ impl Parser<'_> {
             return None;
         }
         self.mark(i, next);
-        self.apply(&Subject::Group(pieces), cue, vec![target]);
+        self.apply(&Subject::Group(pieces.clone()), cue, vec![target]);
+        // "a UR10e on a pedestal surrounded by 4 bins on the floor": a placement right after
+        // the pieces is theirs when the robot's own stand was already said.
+        let mounted = match self.subject.clone() {
+            Some(Subject::Robot(r)) => self.draft.robots.get(r).is_some_and(|x| !matches!(x.mount, Mount::Auto)),
+            _ => false,
+        };
+        if mounted && cue_at(&self.toks, next).is_some() {
+            self.subject = Some(Subject::Group(pieces));
+        }
         Some(next)
     }
 
@@ -469,6 +562,24 @@ impl Parser<'_> {
                 self.place_of = Some((kind, Some(inner.clone())));
                 return Some((inner, end));
             }
+            // "in the bottom drawer", "under the shelf": a part named with a thing before is
+            // a place of that thing.
+            // "the bottom drawer", "the top shelf": which of the parts, read as one.
+            if matches!(
+                kind,
+                PlaceKind::Top | PlaceKind::Bottom | PlaceKind::Middle | PlaceKind::Front | PlaceKind::Back
+            ) && let Some(q) = self.phrase_at(p.end, true, Bare::Target).ok().flatten()
+                && let Some((owner, place)) = self.owner_of_part(&q)
+            {
+                self.mark(j, q.end);
+                self.place_of = Some((place, Some(owner.clone())));
+                return Some((owner, q.end));
+            }
+            if let Some((owner, place)) = self.owner_of_part(&p) {
+                self.mark(j, p.end);
+                self.place_of = Some((place, Some(owner.clone())));
+                return Some((owner, p.end));
+            }
             // "a place, not an object": a bare place ("near the window") is where the room's
             // walls are.
             self.one_at_each_place(p.count, j);
@@ -477,6 +588,14 @@ impl Parser<'_> {
             return Some((String::from("@place"), p.end));
         }
         let indefinite = p.quantity.is_some() || (j > 0 && matches!(self.word(j - 1), "a" | "an" | "another"));
+        if definite
+            && !indefinite
+            && let Some((owner, place)) = self.owner_of_part(&p)
+        {
+            self.mark(j, p.end);
+            self.place_of = Some((place, Some(owner.clone())));
+            return Some((owner, p.end));
+        }
         let end = p.end;
         // A new group for a plural target without a count ("next to tables") gets two;
         // the pieces of a turned-round relation ("surrounded by screens") the usual default.
@@ -623,7 +742,7 @@ impl Parser<'_> {
 
     pub(super) fn apply(&mut self, subject: &Subject, cue: Cue, targets: Vec<String>) {
         // A relation closes the "with" list: a later "it" is no longer its host.
-        self.with_it = None;
+        let listed_with = self.with_it.take();
         // A cue whose target was a place ("on the edge of the table", "at the end of the
         // conveyor", "in the corners of the room") says something else.
         if let Some((place, of)) = self.place_of.take()
@@ -647,6 +766,14 @@ impl Parser<'_> {
                 {
                     robot.near = Some(g.clone());
                     return;
+                }
+                // A place noun's scope is the nearest host that holds the thing: "a desk with
+                // a caddy in the middle" is the desk's middle, "a lamp in the corner" of the
+                // bench it was listed on is that bench's corner. A small thing with no host
+                // said is in the middle of the last work surface named, not of the room.
+                if let Some(host) = self.host_of_place(g, &cue, &targets, listed_with.as_deref()) {
+                    let cue = if cue == Cue::Center { Cue::On } else { Cue::OnEdge };
+                    return self.apply(subject, cue, vec![host]);
                 }
                 // "a mug on the table next to the door": placement words after an "on"
                 // describe where the table stands.
@@ -825,6 +952,10 @@ impl Parser<'_> {
         let thing = of.map(|t| vec![t]);
         Some(match (place, thing) {
             (PlaceKind::Edge, Some(t)) => (Cue::OnEdge, t),
+            // A part of a thing: in, on or under a shelf, a drawer, a compartment is inside
+            // the thing; on its lid or seat is on it; by it is by the thing.
+            (PlaceKind::Part, Some(t)) if matches!(cue, Cue::On | Cue::In | Cue::Under) => (Cue::In, t),
+            (PlaceKind::Part, Some(t)) => (cue.clone(), t),
             // "bolted to one of the ends of the table", "on the corner of the desk".
             (PlaceKind::End | PlaceKind::Start | PlaceKind::Corner, Some(t)) if *cue == Cue::On => (Cue::OnEdge, t),
             (PlaceKind::Start, Some(t)) => (Cue::EndOf(Some(EndOf::Start)), t),
@@ -846,6 +977,48 @@ impl Parser<'_> {
             (PlaceKind::Floor, None) => (Cue::Floor, Vec::new()),
             _ => return None,
         })
+    }
+
+    /// The host whose middle or corner a small thing's "in the middle" / "in the corner"
+    /// names: the thing a "with" listed it on, else (for the middle only, with no host of
+    /// its own) the last work surface named. `None` for the room's.
+    fn host_of_place(&self, g: &str, cue: &Cue, targets: &[String], listed_with: Option<&str>) -> Option<String> {
+        if !targets.is_empty() || !matches!(cue, Cue::Center | Cue::Corner(None)) {
+            return None;
+        }
+        // A thing of no known kind listed with a surface ("a desk with a book caddy in the
+        // middle") is on it as a small thing would be; furniture is not.
+        let on_surface = self.group_is_small(g) || self.group(g).is_some_and(|x| x.category.is_none());
+        if !on_surface {
+            return None;
+        }
+        let listed_on = self.implicit_on.iter().rev().find(|(s, _)| s == g).map(|(_, h)| h.clone()).or_else(|| {
+            listed_with
+                .filter(|h| *h != g && self.group_has_surface(h) && !self.group(h).is_some_and(|x| x.plural))
+                .map(str::to_string)
+        });
+        if listed_on.is_some() {
+            return listed_on;
+        }
+        if !self.group_is_small(g) {
+            return None;
+        }
+        // Said to be on something ("a mug on the table in the middle"): the words place
+        // that host.
+        if self.on_host.iter().any(|(s, _)| s == g) || *cue != Cue::Center {
+            return None;
+        }
+        self.draft.groups.iter().rev().map(|x| x.id.clone()).find(|x| x != g && self.group_is_work_surface(x))
+    }
+
+    /// The thing a part phrase ("the shelf", "the bottom drawer") belongs to: the latest
+    /// thing named with a part of that head, and the place the part is of it — inside it
+    /// (a shelf, a drawer, a compartment) or its top (a lid, a seat).
+    fn owner_of_part(&self, p: &Phrase) -> Option<(String, PlaceKind)> {
+        let head = singular(&p.text.split_whitespace().last()?.to_lowercase());
+        let owner = self.parts.iter().rev().find(|(h, _)| *h == head).map(|(_, owner)| owner.clone())?;
+        let top = matches!(head.as_str(), "lid" | "seat" | "top" | "tabletop" | "worktop");
+        Some((owner, if top { PlaceKind::Top } else { PlaceKind::Part }))
     }
 
     /// A group standing in a row (or several of them): its end is the row's end.
