@@ -1083,10 +1083,13 @@ impl<'a> Parser<'a> {
         // "with a shelf above", "with a tray beside it": a thing placed by the host, not a part.
         let placed =
             crate::cues::cue_at(&self.toks, p.end).is_some() || crate::phrase::is_adverb_particle(self.word(p.end));
+        // (A door is never placed by its thing: "a cabinet with a door on the table".)
+        let door = matches!(p.head, Head::Place(PlaceKind::Door));
         after_with
-            && !placed
+            && (!placed || door)
             && self.group(host).is_some_and(|g| g.category.is_some())
-            && matches!(p.head, Head::Known(Meaning::Category(_)) | Head::Unknown(_))
+            // "a cabinet with a door": a thing's door, not the room's.
+            && matches!(p.head, Head::Known(Meaning::Category(_)) | Head::Unknown(_) | Head::Place(PlaceKind::Door))
             && crate::tables::rows(crate::tables::PARTS).any(|r| r[0] == head)
     }
 

@@ -2120,3 +2120,54 @@ fn a_stated_mount_is_kept_when_a_placement_follows_the_pieces() {
     let p = ok("a UR10e on a pedestal surrounded by 4 bins");
     assert_eq!(robot(&p, "ur10e").mount, Mount::Pedestal, "{}", dump(&p));
 }
+
+/// A support named only by a word for supports ("a stand", "a unit") is the kind that
+/// carries the thing on it: a TV's stand is a TV stand, a grinder's stand a pedestal.
+/// Was: "on a stand" vanished without a word.
+#[test]
+fn a_support_is_the_kind_that_carries_its_load() {
+    for (prompt, load, support) in [
+        ("living room, tv on a stand, a sofa", "television", "tv_stand"),
+        ("a TV opposite the sofa on a low unit", "television", "tv_stand"),
+        ("workshop with a drill press, a bandsaw and a bench grinder on a stand", "bench_grinder", "pedestal"),
+        ("a monitor on a stand by the door", "monitor", "pedestal"),
+    ] {
+        let p = ok(prompt);
+        assert_rel(&p, &group(&p, load).id, on(&group(&p, support).id));
+        assert!(approximated(&p, "stand") || approximated(&p, "unit"), "{prompt:?}: the reading is said\n{}", dump(&p));
+    }
+    // A noun after "stand" makes another thing.
+    let p = ok("a kitchen with a stand mixer on the counter");
+    assert!(!p.objects.iter().any(|o| o.category == "pedestal"), "{}", dump(&p));
+}
+
+/// A place noun after a thing's noun ("the table top", "the desk corner", "the table
+/// edge") is a place of that thing; a door named with a thing is its part. Was: "on the
+/// table top" was the room's kind and the cabinet stood on the floor.
+#[test]
+fn a_place_noun_after_a_things_noun_is_a_place_of_it() {
+    let p = ok("a cabinet with a door on the table top, a panda in front of it");
+    assert_rel(&p, &group(&p, "cabinet").id, on(&group(&p, "table").id));
+    let p = ok("a lamp on the desk corner");
+    assert_rel(&p, &group(&p, "desk_lamp").id, on(&group(&p, "desk").id));
+    let p = ok("a mug at the table edge");
+    assert_rel(&p, &group(&p, "mug").id, RelationKind::OnEdgeOf { target: group(&p, "table").id.clone() });
+}
+
+/// What an arm is mounted on is a work surface: "two bowls and a tray on a table, arm
+/// mounted on it" is on the table, not the tray named last as a subject.
+#[test]
+fn an_arm_mounted_on_it_stands_on_the_latest_surface() {
+    let p = ok("two bowls and a tray on a table, arm mounted on it");
+    let table = group(&p, "table").id.clone();
+    assert_eq!(robot(&p, "ur5e").mount, Mount::OnSurface { target: table }, "{}", dump(&p));
+}
+
+/// A relation is said of phrases joined by "and" only where it follows them directly:
+/// "a table with four candles and a box of matches, clear them up into the box" leaves
+/// the candles on the table.
+#[test]
+fn a_relation_not_following_the_joined_phrases_is_not_theirs() {
+    let p = ok("table with four candles and a box of matches, clear them up into the box");
+    assert_rel(&p, &group(&p, "candle").id, on(&group(&p, "table").id));
+}

@@ -215,7 +215,10 @@ impl Parser<'_> {
                 // "a white mug and a red mug to the right of the caddy", "a sofa and two
                 // armchairs around a table": a relation after phrases joined by "and" is
                 // said of each of them.
-                if cue != Cue::On && !matches!(cue, Cue::Between) {
+                // Only where the relation follows the phrases directly ("…, clear them up into
+                // the box" says nothing of the candles listed before).
+                let follows = self.last_phrase.as_ref().is_some_and(|(e, g)| *e == i && s == Subject::Group(g.clone()));
+                if follows && cue != Cue::On && !matches!(cue, Cue::Between) {
                     for c in self.conjuncts_of(&s) {
                         if !targets.contains(&c) && !coordinated.contains(&c) {
                             self.apply(&Subject::Group(c.clone()), cue.clone(), targets.clone());
@@ -499,6 +502,16 @@ impl Parser<'_> {
                 self.it_is_with_host = with_it.as_ref() == Some(&host);
                 return Some((host, j + 1));
             }
+            // "two bowls and a tray on a table, arm mounted on it": what an arm stands on is a
+            // work surface, the latest one named (a target included).
+            if w == "it"
+                && *cue == Cue::On
+                && matches!(self.subject, Some(Subject::Robot(_)))
+                && let Some(surface) =
+                    self.draft.groups.iter().rev().map(|g| g.id.clone()).find(|g| self.group_is_work_surface(g))
+            {
+                return Some((surface, j + 1));
+            }
             let previous = self.resolve_pronoun(w)?;
             return Some((
                 match previous {
@@ -514,6 +527,14 @@ impl Parser<'_> {
             && let Some(m) = self.mount_word(j)
         {
             return Some(m);
+        }
+        // "a TV on a stand", "a bench grinder on a stand": a support named only by a word
+        // for supports is the kind that carries that thing (a TV stand), else a stand.
+        if *cue == Cue::On
+            && let Some(Subject::Group(g)) = self.subject.clone()
+            && let Some(found) = self.support_by_load(j, &g)
+        {
+            return Some(found);
         }
         let definite = self.is_definite(j);
         let p = self.phrase_at(j, true, Bare::Target).ok().flatten()?;
@@ -575,6 +596,12 @@ impl Parser<'_> {
                 self.place_of = Some((place, Some(owner.clone())));
                 return Some((owner, q.end));
             }
+            // "on the table top", "at the bench end": a place of the thing its modifier names.
+            if let Some(thing) = self.thing_before_place(j, p.end) {
+                self.mark(j, p.end);
+                self.place_of = Some((kind, Some(thing.clone())));
+                return Some((thing, p.end));
+            }
             if let Some((owner, place)) = self.owner_of_part(&p) {
                 self.mark(j, p.end);
                 self.place_of = Some((place, Some(owner.clone())));
@@ -586,6 +613,23 @@ impl Parser<'_> {
             self.mark(j, p.end);
             self.place_of = Some((kind, None));
             return Some((String::from("@place"), p.end));
+        }
+        // "on the table top", "on the tabletop": the top of a table, not the room's kind.
+        if *cue == Cue::On && definite && matches!(p.head, Head::Known(Meaning::Room(sw_plan::RoomKind::Tabletop))) {
+            let table = match self.draft.groups.iter().rev().find(|g| self.group_is_work_surface(&g.id)) {
+                Some(g) => g.id.clone(),
+                None => {
+                    let mut q = p.clone();
+                    q.head = Head::Known(Meaning::Category("table"));
+                    let id = self.new_group(Some("table"), "table".into(), &q, q.explicit);
+                    if let Some(g) = self.draft.groups.last_mut() {
+                        g.accommodated = true;
+                    }
+                    id
+                }
+            };
+            self.mark(j, p.end);
+            return Some((table, p.end));
         }
         let indefinite = p.quantity.is_some() || (j > 0 && matches!(self.word(j - 1), "a" | "an" | "another"));
         if definite
@@ -1009,6 +1053,131 @@ impl Parser<'_> {
             return None;
         }
         self.draft.groups.iter().rev().map(|x| x.id.clone()).find(|x| x != g && self.group_is_work_surface(x))
+    }
+
+    /// The thing a place noun's modifier names ("the table top", "the bench end"): the
+    /// latest group of that kind, else one added (and noted). The place word is the last
+    /// token before `end`; the modifier is the known noun right before it.
+    fn thing_before_place(&mut self, j: usize, end: usize) -> Option<String> {
+        let place = end.checked_sub(1)?;
+        let mut k = j;
+        while k < place && matches!(self.word(k), "a" | "an" | "the" | "its" | "their" | "one" | "each" | "every") {
+            k += 1;
+        }
+        if k >= place {
+            return None;
+        }
+        let (meaning, n) = self.lookup(k, crate::lexicon::is_head)?;
+        let Meaning::Category(cat) = meaning else { return None };
+        if k + n != place {
+            return None;
+        }
+        if let Some(g) = self.draft.groups.iter().rev().find(|g| g.category == Some(cat)) {
+            return Some(g.id.clone());
+        }
+        let p = Phrase {
+            end: place,
+            count: None,
+            quantity: None,
+            color: None,
+            sizes: Vec::new(),
+            explicit: sw_plan::ExplicitSize::default(),
+            descriptors: Vec::new(),
+            room_modifier: None,
+            head: Head::Known(Meaning::Category(cat)),
+            plural: false,
+            text: self.span(k, place),
+            fuzzy_from: None,
+        };
+        let id = self.new_group(Some(cat), cat.replace('_', " "), &p, p.explicit);
+        if let Some(g) = self.draft.groups.last_mut() {
+            g.accommodated = true;
+        }
+        Some(id)
+    }
+
+    /// "a stand", "a low unit", "a base" after `g`'s "on": a word that names only a
+    /// support. Its kind is the catalog's support named by what it carries ("tv" + "stand"
+    /// is a TV stand; "television" + "unit" a TV unit), else for a stand, base or plinth a
+    /// pedestal. The group made (or the stand named before, for "the stand") and the end.
+    fn support_by_load(&mut self, j: usize, g: &str) -> Option<(String, usize)> {
+        let mut k = j;
+        let definite = matches!(self.word(k), "the" | "its" | "their");
+        while matches!(
+            self.word(k),
+            "a" | "an"
+                | "the"
+                | "its"
+                | "their"
+                | "low"
+                | "small"
+                | "tall"
+                | "high"
+                | "wooden"
+                | "metal"
+                | "steel"
+                | "sturdy"
+        ) {
+            k += 1;
+        }
+        let support = self.word(k).to_string();
+        if !matches!(support.as_str(), "stand" | "unit" | "base" | "plinth" | "riser" | "cabinet") {
+            return None;
+        }
+        // "a stand mixer", "a unit heater": a noun after it makes another thing.
+        let ends = self.toks.get(k + 1).is_none_or(|t| t.kind != TokenKind::Word)
+            || cue_at(&self.toks, k + 1).is_some()
+            || matches!(self.word(k + 1), "and" | "with" | "by" | "near" | "beside" | "opposite" | "facing");
+        if !ends {
+            return None;
+        }
+        let load = self.group(g)?.category.and_then(sw_catalog::find)?;
+        let mut names: Vec<&str> = std::iter::once(load.display).chain(load.synonyms.iter().copied()).collect();
+        names.retain(|n| !n.is_empty());
+        let by_load = names.iter().find_map(|n| {
+            let compound = format!("{n} {support}");
+            sw_catalog::categories()
+                .iter()
+                .find(|c| c.display == compound || c.synonyms.contains(&compound.as_str()))
+                .map(|c| c.name)
+        });
+        let cat = match by_load {
+            Some(c) => c,
+            None if matches!(support.as_str(), "stand" | "base" | "plinth" | "riser") => "pedestal",
+            None => return None,
+        };
+        let text = self.span(j, k + 1);
+        if definite && let Some(x) = self.draft.groups.iter().rev().find(|x| x.category == Some(cat)) {
+            let id = x.id.clone();
+            self.mark(j, k + 1);
+            return Some((id, k + 1));
+        }
+        let p = Phrase {
+            end: k + 1,
+            count: None,
+            quantity: None,
+            color: None,
+            sizes: Vec::new(),
+            explicit: sw_plan::ExplicitSize::default(),
+            descriptors: Vec::new(),
+            room_modifier: None,
+            head: Head::Known(Meaning::Category(cat)),
+            plural: false,
+            text: text.clone(),
+            fuzzy_from: None,
+        };
+        let id = self.new_group(Some(cat), cat.replace('_', " "), &p, p.explicit);
+        self.draft.approximated.push(sw_plan::Approximation {
+            text,
+            became: cat.to_string(),
+            reason: format!(
+                "a {support} that carries a {} is read as the catalog's {}",
+                load.display,
+                cat.replace('_', " ")
+            ),
+        });
+        self.mark(j, k + 1);
+        Some((id, k + 1))
     }
 
     /// The thing a part phrase ("the shelf", "the bottom drawer") belongs to: the latest
