@@ -449,11 +449,38 @@ impl<'a> Parser<'a> {
                     && self.last_phrase.as_ref().is_some_and(|(e, _)| *e + 1 == i);
                 let before = self.last_phrase.take().map(|(_, g)| g);
                 let groups = self.draft.groups.len();
+                // "red, blue and pink blocks": one of each colour, each its own group.
+                let colours = self.colours_listed_before(i, &p);
+                let coloured = !colours.is_empty();
+                let mut previous: Option<String> = None;
+                for (k, name, rgba) in colours {
+                    let mut one = p.clone();
+                    one.color = Some(NamedColor { name: name.to_string(), rgba });
+                    one.count = Some(1.0);
+                    one.quantity = None;
+                    one.plural = false;
+                    one.text =
+                        format!("{} {}", self.word(k), p.text.split_whitespace().skip(1).collect::<Vec<_>>().join(" "));
+                    self.mark(k, k + 1);
+                    self.take_phrase(one, k);
+                    // The colours are a list joined as "and" joins: what follows is said of each.
+                    if let Some(Subject::Group(g)) = self.subject.clone()
+                        && let Some(b) = previous.replace(g.clone())
+                    {
+                        self.and_pairs.push((b, g));
+                    }
+                }
+                if coloured {
+                    p.count = Some(1.0);
+                    p.plural = false;
+                }
                 self.take_phrase(p, i);
                 if self.draft.groups.len() > groups
                     && let Some(Subject::Group(g)) = self.subject.clone()
                 {
-                    if joined && let Some(b) = before.filter(|b| *b != g) {
+                    if let Some(b) = previous.filter(|b| *b != g) {
+                        self.and_pairs.push((b, g.clone()));
+                    } else if joined && let Some(b) = before.filter(|b| *b != g) {
                         self.and_pairs.push((b, g.clone()));
                     }
                     self.last_phrase = Some((end, g));
@@ -1091,6 +1118,39 @@ impl<'a> Parser<'a> {
             // "a cabinet with a door": a thing's door, not the room's.
             && matches!(p.head, Head::Known(Meaning::Category(_)) | Head::Unknown(_) | Head::Place(PlaceKind::Door))
             && crate::tables::rows(crate::tables::PARTS).any(|r| r[0] == head)
+    }
+
+    /// The colour words listed before a phrase that starts with a colour and names a
+    /// plural with no count ("red, blue and pink blocks"): (token, name, rgba) in order.
+    /// Empty when there is no such list.
+    fn colours_listed_before(&self, i: usize, p: &Phrase) -> Vec<(usize, &'static str, [f64; 4])> {
+        if p.color.is_none() || !p.plural || p.count.is_some() || p.quantity.is_some() {
+            return Vec::new();
+        }
+        if !matches!(self.lookup(i, |m| matches!(m, Meaning::Color(..))), Some((Meaning::Color(..), 1))) {
+            return Vec::new();
+        }
+        let mut out = Vec::new();
+        let mut k = i;
+        // "and" (or "or") before the last colour, commas between the others.
+        if k < 2 || !matches!(self.word(k - 1), "and" | "&" | "or") {
+            return Vec::new();
+        }
+        k -= 1;
+        while let Some(c) = k.checked_sub(1) {
+            match self.lookup(c, |m| matches!(m, Meaning::Color(..))) {
+                Some((Meaning::Color(name, rgba), 1)) if !self.used[c] => out.push((c, name, rgba)),
+                _ => break,
+            }
+            k = c;
+            if k >= 1 && self.toks[k - 1].kind == TokenKind::Comma {
+                k -= 1;
+            } else {
+                break;
+            }
+        }
+        out.reverse();
+        out
     }
 
     /// "a bunch of grapes", "two slices of bread", "a pint of milk": a measure noun

@@ -2171,3 +2171,34 @@ fn a_relation_not_following_the_joined_phrases_is_not_theirs() {
     let p = ok("table with four candles and a box of matches, clear them up into the box");
     assert_rel(&p, &group(&p, "candle").id, on(&group(&p, "table").id));
 }
+
+/// A list of colours before a plural with no count ("red, blue and pink blocks") is one
+/// thing of each colour, each its own group, and what follows is said of each; a thing of
+/// one colour is not restated by things of another. Was: four pink blocks, the red and
+/// blue ones lost, and "the pink block" merged into the "red and blue blocks".
+#[test]
+fn a_list_of_colours_before_a_plural_is_one_of_each() {
+    let p = ok("a desk with red, blue and pink blocks, panda mounted behind");
+    let desk = group(&p, "desk").id.clone();
+    let cubes: Vec<&ObjectPlan> = p.objects.iter().filter(|o| o.category == "cube").collect();
+    assert_eq!(cubes.len(), 3, "{}", dump(&p));
+    let mut colours: Vec<&str> = cubes.iter().filter_map(|c| c.color.as_ref().map(|x| x.name.as_str())).collect();
+    colours.sort_unstable();
+    assert_eq!(colours, ["blue", "pink", "red"], "{}", dump(&p));
+    for c in &cubes {
+        assert_eq!(c.count, 1, "{}", dump(&p));
+        assert_rel(&p, &c.id, on(&desk));
+    }
+    let p = ok("red and green apples in a bowl");
+    let bowl = group(&p, "bowl").id.clone();
+    let apples: Vec<&ObjectPlan> = p.objects.iter().filter(|o| o.category == "apple").collect();
+    assert_eq!(apples.len(), 2, "{}", dump(&p));
+    for a in apples {
+        assert_rel(&p, &a.id, RelationKind::Inside { target: bowl.clone() });
+    }
+    let p = ok("the pink block inside the open drawer, red and blue blocks on the table top");
+    assert_eq!(p.objects.iter().filter(|o| o.category == "cube").count(), 3, "{}", dump(&p));
+    // Counted plurals keep their count and colour.
+    let p = ok("a table with three red cubes");
+    assert_eq!(group(&p, "cube").count, 3);
+}
