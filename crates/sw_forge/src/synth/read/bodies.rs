@@ -212,7 +212,8 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
     }
     // Stacked on the body before it along the same axis, when one is there and the
     // words say on top (or nothing says otherwise); the first body from 0 (or centred).
-    let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == axis && !b.cut).map(|b| b.span));
+    let prev_el = (0..e).rev().find(|p| r.built[*p].as_ref().is_some_and(|b| b.axis == axis && !b.cut));
+    let prev = prev_el.and_then(|p| r.built[p].as_ref().map(|b| b.span));
     // "A plate with four posts": a body the part is said to have stands on the one before.
     let with = r.els[e].mentions.first().is_some_and(|m| r.mentions[*m].prep.as_deref() == Some("with"));
     let on_top = with || r.says(e, "top") || r.says(e, "topped") || r.says(e, "above") || r.says(e, "on");
@@ -225,7 +226,26 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
             Ok([p[1], p[1] + l])
         }
         _ if r.centered && prev.is_none() => Ok([-l / 2.0, l / 2.0]),
-        _ => Ok([0.0, l]),
+        // The same noun again ("a block 80 x 40 x 20 … one block"), or a part whose length
+        // is said to be overall ("flange 24 dia x 3, overall length 20"): from the same end.
+        Some(_)
+            if prev_el.is_some_and(|p| r.els[p].noun == r.els[e].noun)
+                || (0..r.doc.len()).any(|i| matches!(r.doc.word(i), Some("overall" | "total"))) =>
+        {
+            Ok([0.0, l])
+        }
+        // A second body on the same axis that no word places ("flange 40 dia x 5, body 25
+        // dia x 20 long"): stacked end to end or overlapping are different parts, and the
+        // words do not say which.
+        Some(_) => Err(Refusal::new(
+            r.quote_element(e),
+            format!(
+                "nothing says where the {} sits along the {} axis of the body before it (on top of it, below it, at one end)",
+                r.els[e].noun,
+                axis.name()
+            ),
+        )),
+        None => Ok([0.0, l]),
     }
 }
 
