@@ -452,3 +452,30 @@ fn bodies_nothing_places_and_treatments_nothing_sizes_are_refused() {
         made("Disc 50 dia x 20 thick, no chamfers", [50.0, 50.0, 20.0], PI * 625.0 * 20.0),
     ]);
 }
+
+#[test]
+fn diameter_pairs_written_with_a_slash_under_a_title_noun() {
+    let mut out = Vec::new();
+    for (od, id, t) in [(140.0, 60.0, 12.0), (30.0, 17.0, 3.0), (80.0, 42.0, 10.0)] {
+        let v = tube(od, id, t);
+        for p in [
+            format!("FLANGE OD {od} / ID {id} x {t} THK"),
+            format!("WASHER OD {od} / ID {id} x {t} THK"),
+            format!("RING {od} OD / {id} ID x {t} THK"),
+            format!("Flange, OD {od}, ID {id}, {t} thick"),
+        ] {
+            out.push(made(&p, [od, od, t], v));
+        }
+        // Holes on a pitch circle between the two.
+        let pcd = (od + id) / 2.0;
+        let h = (od - id) / 5.0;
+        out.push(made(
+            &format!("FLANGE OD {od} / ID {id} x {t} THK, 4X Ø{h} THRU EQ SP ON {pcd} PCD"),
+            [od, od, t],
+            v - 4.0 * PI * h * h / 4.0 * t,
+        ));
+    }
+    out.push(refused("Disc OD 80 / ID 90 x 10 thick", &["90"]));
+    out.push(refused("WASHER OD 20 / ID 22 x 2 THK", &["22"]));
+    check(out);
+}

@@ -505,9 +505,29 @@ pub fn tokenize(text: &str) -> Vec<Token> {
         toks.push(Token { kind: Tk::Word(role.into()), start: from, end: e });
     }
     compounds(&mut toks);
+    slash_pairs(&mut toks);
     inherit_units(&mut toks);
     notes(&mut toks, text);
     toks
+}
+
+/// "OD 140 / ID 60", "30 OD / 17 ID", "Ø40 / Ø20": a slash between two sizes that each
+/// carry their role is a list of them, read as a comma.
+fn slash_pairs(toks: &mut [Token]) {
+    let role = |t: Option<&Token>| t.and_then(Token::word).is_some_and(|w| super::doc::role_of(w).is_some());
+    let num = |t: Option<&Token>| t.is_some_and(|t| matches!(t.kind, Tk::Num { .. }));
+    for i in 1..toks.len() {
+        if !toks[i].is_sym('/') {
+            continue;
+        }
+        // Before: "140" after its role word, or "30 OD"; after: "ID 60", "17 ID" or "Ø20".
+        let left = num(toks.get(i - 1)) && i >= 2 && role(toks.get(i - 2))
+            || role(toks.get(i - 1)) && i >= 2 && num(toks.get(i - 2));
+        let right = role(toks.get(i + 1)) && num(toks.get(i + 2)) || num(toks.get(i + 1)) && role(toks.get(i + 2));
+        if left && right {
+            toks[i].kind = Tk::Sym(',');
+        }
+    }
 }
 
 /// Two words written apart that name one thing when hyphenated: a section's letter and its
