@@ -479,3 +479,32 @@ fn diameter_pairs_written_with_a_slash_under_a_title_noun() {
     out.push(refused("WASHER OD 20 / ID 22 x 2 THK", &["22"]));
     check(out);
 }
+
+#[test]
+fn a_square_bar_by_its_side_and_length_and_how_a_part_rests() {
+    let inch = 25.4;
+    let mut out = Vec::new();
+    for (a, l) in [(1.5, 6.0), (0.75, 4.0), (2.0, 12.0)] {
+        let (a, l) = (a * inch, l * inch);
+        for p in
+            [format!("Square bar {}\" x {}\" long", a / inch, l / inch), format!("square bar {a} mm x {l} mm long")]
+        {
+            out.push(made(&p, [l, a, a], a * a * l));
+        }
+    }
+    for (d, l) in [(30.0, 60.0), (20.0, 100.0)] {
+        let v = PI * d * d / 4.0 * l;
+        for p in [
+            format!("A {l} mm long cylinder of {d} mm diameter, standing upright on its end. Just the one cylinder."),
+            format!("A cylinder {d} mm diameter, {l} mm long, standing on end"),
+            format!("A cylinder {d} mm diameter, {l} mm long, lying on its side"),
+        ] {
+            out.push(made(&p, [d, d, l], v));
+        }
+    }
+    // A cube has one size, whatever role says another.
+    out.push(refused("how would I model a 40 mm cube that is 30 mm tall?", &["30 mm tall"]));
+    out.push(refused("A 40 mm cube, 30 mm tall", &["30 mm tall"]));
+    out.push(made("A 40 mm cube, 40 mm tall", [40.0, 40.0, 40.0], 64_000.0));
+    check(out);
+}

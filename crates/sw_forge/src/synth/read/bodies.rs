@@ -338,7 +338,17 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
             && r.dim(*k).list.is_none()
             && matches!(r.dim(*k).role, Role::Length | Role::Width | Role::Height | Role::Thickness | Role::Depth)
     });
-    if list.len() >= 3 || (list.len() == 2 && !roles_named) {
+    // "square bar 1-1/2\" x 6\" long", "40 sq x 200 lg": a square section's side and its
+    // length, the length said by its role.
+    let lengths: Vec<usize> = list.iter().copied().filter(|k| r.dim(*k).role == Role::Length).collect();
+    if r.els[e].has_mod("square") && list.len() == 2 && lengths.len() == 1 && s.iter().all(Option::is_none) {
+        let side = list.iter().copied().find(|k| *k != lengths[0]).map(|k| r.dim(k).mm);
+        s = [Some(r.dim(lengths[0]).mm), side, side];
+        for k in &list {
+            r.used_dims[*k] = true;
+        }
+    }
+    if s.iter().all(Option::is_none) && (list.len() >= 3 || (list.len() == 2 && !roles_named)) {
         fill_list(r, &mut s);
     }
     let role = |roles: &[Role], axis: usize, r: &mut Reader<'_>, s: &mut [Option<f64>; 3]| {
@@ -394,6 +404,19 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
     {
         let v = r.dim(k).mm;
         r.used_dims[k] = true;
+        s = [Some(v); 3];
+    }
+    // "a 40 mm cube, 40 mm tall": a cube's one size, said again by a role.
+    if r.els[e].noun == "cube"
+        && let Some(v) = s.iter().flatten().copied().next()
+        && s.iter().flatten().all(|x| (x - v).abs() <= 1e-9 * v.max(1.0))
+    {
+        for k in r.free_dims(e) {
+            let x = r.dim(k);
+            if matches!(x.role, Role::Bare | Role::Side) && (x.mm - v).abs() <= 1e-9 * v.max(1.0) {
+                r.used_dims[k] = true;
+            }
+        }
         s = [Some(v); 3];
     }
     s

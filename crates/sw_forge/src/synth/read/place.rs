@@ -115,6 +115,25 @@ pub fn read_frame(r: &mut Reader<'_>) {
                 d.mark(j);
             }
         }
+        // "standing upright on its end", "stood on end", "lying on its side": how the part
+        // rests, which its extents do not depend on.
+        if matches!(
+            d.word(i),
+            Some(
+                "standing" | "stood" | "stands" | "stand" | "upright" | "lying" | "lies" | "laid" | "resting" | "rests"
+            )
+        ) {
+            let mut j = i + 1;
+            if matches!(d.word(j), Some("upright" | "up" | "vertically" | "flat")) {
+                j += 1;
+            }
+            if d.is(j, "on") {
+                let k = if matches!(d.word(j + 1), Some("its" | "one" | "an" | "the")) { j + 2 } else { j + 1 };
+                if matches!(d.word(k), Some("end" | "side" | "base" | "face" | "edge")) {
+                    d.mark_range(i, k + 1);
+                }
+            }
+        }
         // "centroid at the origin".
         if d.is(i, "centroid") && d.is(i + 1, "at") {
             let end = (i + 1..(i + 4).min(d.len())).find(|j| d.is(*j, "origin"));
