@@ -508,3 +508,39 @@ fn a_square_bar_by_its_side_and_length_and_how_a_part_rests() {
     out.push(made("A 40 mm cube, 40 mm tall", [40.0, 40.0, 40.0], 64_000.0));
     check(out);
 }
+
+#[test]
+fn holes_no_word_places_are_in_the_middle_of_a_part_that_runs_from_its_origin() {
+    // A channel is made from X=0 along its length: a hole or a row of holes in its web sits
+    // about the middle of the length, never half off its end.
+    let mut out = Vec::new();
+    for (web, fl, t, l, d, n, p) in [(50.0, 25.0, 3.0, 300.0, 6.5, 5, 50.0), (80.0, 40.0, 5.0, 400.0, 9.0, 3, 100.0)] {
+        let section = web * t + 2.0 * (fl - t) * t;
+        let hole = PI * d * d / 4.0 * t;
+        out.push(made(
+            &format!("U channel {web} x {fl} x {t}, {l} long, with a row of {n} holes {d} dia in the web at {p} ctrs"),
+            [l, web, fl],
+            section * l - f64::from(n) * hole,
+        ));
+        // Its volume is not known to the forge (a hole through a section's web), so where
+        // the holes are is checked on the code: centred on the length at the pitch.
+        let prompt = format!("U channel {web} x {fl} x {t}, {l} long, with {n} holes {d} dia in the web at {p} ctrs");
+        let code = synthesize(&prompt).map(|s| s.code).unwrap_or_default();
+        let mut xs: Vec<f64> = code
+            .split(".translate((")
+            .skip(1)
+            .filter_map(|c| c.split(',').next()?.trim().parse::<f64>().ok())
+            .collect();
+        xs.sort_by(f64::total_cmp);
+        let want: Vec<f64> = (0..n).map(|i| l / 2.0 + (f64::from(i) - f64::from(n - 1) / 2.0) * p).collect();
+        if xs != want {
+            out.push(Err(format!("{prompt}\n  holes at X {xs:?}, the words say {want:?}\n{code}")));
+        }
+        out.push(made(
+            &format!("flat bar {l} x {web} x {t}, with a row of {n} holes {d} dia at {p} ctrs"),
+            [l, web, t],
+            web * t * l - f64::from(n) * hole,
+        ));
+    }
+    check(out);
+}

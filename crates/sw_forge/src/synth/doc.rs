@@ -623,7 +623,12 @@ impl Doc {
             // "extruded to a height of", "pitch circle diameter": the later, more specific word wins.
             let role = match role {
                 Role::Length if before.iter().any(|(_, w)| w == "height") => Role::Height,
-                Role::Spacing if after.iter().chain(before.iter()).any(|(_, w)| w == "circle" || w == "diameter") => {
+                // (Not a hole's "6.5 dia" before the spacing: "6.5 dia at 50 ctrs".)
+                Role::Spacing
+                    if after.iter().any(|(_, w)| w == "circle" || w == "diameter")
+                        || before.iter().any(|(_, w)| w == "circle")
+                        || before.last().is_some_and(|(_, w)| w == "diameter") =>
+                {
                     if after.iter().chain(before.iter()).any(|(_, w)| w == "radius") {
                         Role::Radius
                     } else {
