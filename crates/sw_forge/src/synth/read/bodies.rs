@@ -732,7 +732,20 @@ pub fn add(
     id: Option<f64>,
     size: Option<[f64; 2]>,
 ) -> Built {
-    let at = positions(r, e, axis).unwrap_or_else(|_| vec![[0.0, 0.0]]);
+    let mut at = positions(r, e, axis).unwrap_or_else(|_| vec![[0.0, 0.0]]);
+    // "a boss lying along Y, its axis 30 above the base underside": a body across the part
+    // stands with its axis that high above the part's bottom.
+    if axis != Axis::Z
+        && at.len() == 1
+        && let Some(k) = r.find(e, &[Role::Inset], &["from-bottom"], &[])
+    {
+        let bottom = if r.model.adds.is_empty() { 0.0 } else { r.model.bounds()[0][2] };
+        let z = if axis == Axis::X { 1 } else { 0 };
+        at[0][z] = bottom + r.dim(k).mm;
+        r.used_dims[k] = true;
+        let dm = r.doc.dims[k].clone();
+        r.doc.mark_range(dm.phrase.0, dm.phrase.1 + 3);
+    }
     let mut bodies = Vec::new();
     for p in &at {
         bodies.push(r.model.adds.len());
