@@ -41,7 +41,8 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
             // elsewhere.
             let said_made = r.els[e].mentions.iter().all(|mi| {
                 let x = &r.mentions[*mi];
-                !x.definite && !(x.start > 0 && matches!(d.word(x.start - 1), Some("no" | "without" | "not")))
+                let negated = x.start > 0 && matches!(d.word(x.start - 1), Some("no" | "without" | "not"));
+                !(x.definite || negated)
             });
             if said_made {
                 bare.push((e, kind, d.sent[r.mentions[*m].head]));
