@@ -129,20 +129,32 @@ pub(crate) fn assemble(prompt: &str, d: Draft, leftovers: Vec<String>) -> Result
             order.append(&mut waiting);
         }
     }
+    // The scene's bound is applied in the same order, hosts first: a host keeps room for
+    // what is counted per each of it ("a stool at each bench, 99999999 benches" is as many
+    // benches as leave a stool for each), and the things counted per host follow from the
+    // hosts kept.
     let mut resolved_counts: BTreeMap<String, Option<u32>> = BTreeMap::new();
+    let mut total: u32 = 0;
     for g in &order {
-        let c = group_count(g, &d, &counts, &mut approximated);
+        let per_each: f64 = d
+            .groups
+            .iter()
+            .filter_map(|x| match &x.count_rule {
+                Some(CountRule::EachOf { host, per }) if *host == g.id && per.is_finite() && *per > 0.0 => Some(*per),
+                _ => None,
+            })
+            .sum();
+        let c = group_count(g, &d, &counts, &mut approximated)
+            .and_then(|c| fit_hosts(c, per_each, total, &g.phrase, &mut approximated))
+            .and_then(|c| cap(c, total, MAX_TOTAL, "objects", &g.phrase, &mut approximated));
         if let Some(c) = c {
             counts.insert(g.id.clone(), c);
+            total += c;
         }
         resolved_counts.insert(g.id.clone(), c);
     }
     for g in &d.groups {
         let Some(count) = resolved_counts.get(&g.id).copied().flatten() else {
-            dropped.push(g.id.clone());
-            continue;
-        };
-        let Some(count) = cap(count, plan.object_count(), MAX_TOTAL, "objects", &g.phrase, &mut approximated) else {
             dropped.push(g.id.clone());
             continue;
         };
@@ -825,6 +837,28 @@ fn cap(count: u32, so_far: u32, max: u32, what: &str, phrase: &str, notes: &mut 
         reason: format!("at most {max} {what} per scene"),
     });
     (allowed > 0).then_some(allowed)
+}
+
+/// How many of a host fit in the scene's bound when each keeps `per_each` things counted
+/// per host ("a stool at each bench"): hosts × (1 + per_each) within what is left, noted
+/// when cut. `None` when not one fits.
+fn fit_hosts(count: u32, per_each: f64, so_far: u32, phrase: &str, notes: &mut Vec<Approximation>) -> Option<u32> {
+    if per_each <= 0.0 {
+        return Some(count);
+    }
+    let left = f64::from(MAX_TOTAL.saturating_sub(so_far));
+    let fits = (left / (1.0 + per_each)).floor().max(0.0) as u32;
+    if count <= fits {
+        return Some(count);
+    }
+    notes.push(Approximation {
+        text: phrase.to_string(),
+        became: if fits == 0 { "left out".into() } else { format!("{fits}") },
+        reason: format!(
+            "at most {MAX_TOTAL} objects per scene, counting what each of them has ({per_each} per one); the hosts were bounded first"
+        ),
+    });
+    (fits > 0).then_some(fits)
 }
 
 fn proxy_for(g: &GroupDraft, resting: bool, notes: &mut Vec<Approximation>) -> ProxyPlan {

@@ -156,6 +156,23 @@ pub(crate) struct Parser<'a> {
     last_worker: Option<usize>,
     /// What robots handle, by robot: (robot, group), in the order named.
     work: Vec<(usize, String)>,
+    /// The list is everything named so far ("put it all on a table"): the relation that
+    /// follows is said of every thing in it, not only the small ones.
+    all_of: bool,
+    /// The last "to its left"-style side in the sentence: (what was placed, what "its" was).
+    /// A parallel one that follows ("…, another tote to its right") has the same referent.
+    last_possessive: Option<(Subject, String)>,
+    /// The things last said together of one relation ("a mixer and a blender on the
+    /// worktop"): what a later "between them" names when no plural group is nearer.
+    last_coordination: Vec<String>,
+    /// Parts named with a thing ("a cabinet with a shelf", "a box with a lid"), by their
+    /// singular head: (part, the thing). "the shelf", "the bottom drawer" refer to them.
+    parts: Vec<(String, String)>,
+    /// Where the last object phrase read as a subject ended, and its group.
+    last_phrase: Option<(usize, String)>,
+    /// Groups whose phrases were joined by a bare "and" ("a white mug and a red mug"):
+    /// (first, second). A relation said after the second is said of both.
+    and_pairs: Vec<(String, String)>,
 }
 
 /// A collective noun before a phrase: "a row of", "two rows of", "a stack of", "an aisle of".
@@ -206,6 +223,12 @@ impl<'a> Parser<'a> {
             working: None,
             last_worker: None,
             work: Vec::new(),
+            all_of: false,
+            last_possessive: None,
+            last_coordination: Vec::new(),
+            parts: Vec::new(),
+            last_phrase: None,
+            and_pairs: Vec::new(),
             place_of: None,
             implicit_on: Vec::new(),
             place_counts: std::collections::HashMap::new(),
@@ -420,7 +443,48 @@ impl<'a> Parser<'a> {
                 if self.part_after_with(i, &p) {
                     p.head = Head::Place(PlaceKind::Part);
                 }
+                // "a white mug and a red mug": joined by a bare "and" to the phrase before.
+                let joined = i >= 1
+                    && matches!(self.word(i - 1), "and" | "&")
+                    && self.last_phrase.as_ref().is_some_and(|(e, _)| *e + 1 == i);
+                let before = self.last_phrase.take().map(|(_, g)| g);
+                let groups = self.draft.groups.len();
+                // "red, blue and pink blocks": one of each colour, each its own group.
+                let colours = self.colours_listed_before(i, &p);
+                let coloured = !colours.is_empty();
+                let mut previous: Option<String> = None;
+                for (k, name, rgba) in colours {
+                    let mut one = p.clone();
+                    one.color = Some(NamedColor { name: name.to_string(), rgba });
+                    one.count = Some(1.0);
+                    one.quantity = None;
+                    one.plural = false;
+                    one.text =
+                        format!("{} {}", self.word(k), p.text.split_whitespace().skip(1).collect::<Vec<_>>().join(" "));
+                    self.mark(k, k + 1);
+                    self.take_phrase(one, k);
+                    // The colours are a list joined as "and" joins: what follows is said of each.
+                    if let Some(Subject::Group(g)) = self.subject.clone()
+                        && let Some(b) = previous.replace(g.clone())
+                    {
+                        self.and_pairs.push((b, g));
+                    }
+                }
+                if coloured {
+                    p.count = Some(1.0);
+                    p.plural = false;
+                }
                 self.take_phrase(p, i);
+                if self.draft.groups.len() > groups
+                    && let Some(Subject::Group(g)) = self.subject.clone()
+                {
+                    if let Some(b) = previous.filter(|b| *b != g) {
+                        self.and_pairs.push((b, g.clone()));
+                    } else if joined && let Some(b) = before.filter(|b| *b != g) {
+                        self.and_pairs.push((b, g.clone()));
+                    }
+                    self.last_phrase = Some((end, g));
+                }
                 i = end;
                 continue;
             }
@@ -499,6 +563,8 @@ impl<'a> Parser<'a> {
         self.subject = None;
         self.in_place_clause = false;
         self.list.clear();
+        self.all_of = false;
+        self.last_possessive = None;
         self.with_host = None;
         self.support = None;
         self.each_host = None;
@@ -1044,11 +1110,47 @@ impl<'a> Parser<'a> {
         // "with a shelf above", "with a tray beside it": a thing placed by the host, not a part.
         let placed =
             crate::cues::cue_at(&self.toks, p.end).is_some() || crate::phrase::is_adverb_particle(self.word(p.end));
+        // (A door is never placed by its thing: "a cabinet with a door on the table".)
+        let door = matches!(p.head, Head::Place(PlaceKind::Door));
         after_with
-            && !placed
+            && (!placed || door)
             && self.group(host).is_some_and(|g| g.category.is_some())
-            && matches!(p.head, Head::Known(Meaning::Category(_)) | Head::Unknown(_))
+            // "a cabinet with a door": a thing's door, not the room's.
+            && matches!(p.head, Head::Known(Meaning::Category(_)) | Head::Unknown(_) | Head::Place(PlaceKind::Door))
             && crate::tables::rows(crate::tables::PARTS).any(|r| r[0] == head)
+    }
+
+    /// The colour words listed before a phrase that starts with a colour and names a
+    /// plural with no count ("red, blue and pink blocks"): (token, name, rgba) in order.
+    /// Empty when there is no such list.
+    fn colours_listed_before(&self, i: usize, p: &Phrase) -> Vec<(usize, &'static str, [f64; 4])> {
+        if p.color.is_none() || !p.plural || p.count.is_some() || p.quantity.is_some() {
+            return Vec::new();
+        }
+        if !matches!(self.lookup(i, |m| matches!(m, Meaning::Color(..))), Some((Meaning::Color(..), 1))) {
+            return Vec::new();
+        }
+        let mut out = Vec::new();
+        let mut k = i;
+        // "and" (or "or") before the last colour, commas between the others.
+        if k < 2 || !matches!(self.word(k - 1), "and" | "&" | "or") {
+            return Vec::new();
+        }
+        k -= 1;
+        while let Some(c) = k.checked_sub(1) {
+            match self.lookup(c, |m| matches!(m, Meaning::Color(..))) {
+                Some((Meaning::Color(name, rgba), 1)) if !self.used[c] => out.push((c, name, rgba)),
+                _ => break,
+            }
+            k = c;
+            if k >= 1 && self.toks[k - 1].kind == TokenKind::Comma {
+                k -= 1;
+            } else {
+                break;
+            }
+        }
+        out.reverse();
+        out
     }
 
     /// "a bunch of grapes", "two slices of bread", "a pint of milk": a measure noun
@@ -1112,6 +1214,9 @@ impl<'a> Parser<'a> {
     fn take_place(&mut self, p: &Phrase, kind: PlaceKind, start: usize) {
         // A part of a thing ("three drawers", "its lid"): the sentence stays about the thing.
         if kind == PlaceKind::Part {
+            if let (Some(Subject::Group(owner)), Some(head)) = (&self.subject, p.text.split_whitespace().last()) {
+                self.parts.push((singular(&head.to_lowercase()), owner.clone()));
+            }
             self.draft.approximated.push(Approximation {
                 text: p.text.clone(),
                 became: "a part, not an object".into(),
@@ -1306,10 +1411,26 @@ impl<'a> Parser<'a> {
             end += 1;
         }
         let subject = self.subject.clone()?;
-        let target = match self.resolve_pronoun(pronoun)? {
+        let mut target = match self.resolve_pronoun(pronoun)? {
             Subject::Group(g) => g,
             Subject::Robot(r) => format!("@robot:{r}"),
         };
+        // Parallel sides share their referent: "a tote to its left and another tote to its
+        // right" are both beside what the first "its" was, not the second beside the first.
+        if let Some((placed, before)) = &self.last_possessive {
+            let placed_id = match placed {
+                Subject::Group(g) => g.clone(),
+                Subject::Robot(r) => format!("@robot:{r}"),
+            };
+            let own = match &subject {
+                Subject::Group(g) => g.clone(),
+                Subject::Robot(r) => format!("@robot:{r}"),
+            };
+            if placed_id == target && *before != own && *placed != subject {
+                target = before.clone();
+            }
+        }
+        self.last_possessive = Some((subject.clone(), target.clone()));
         self.mark(i, end);
         // "a desk with … a book to its left": a side of the host it stands on, where it stays.
         let on_it =

@@ -140,7 +140,14 @@ impl Parser<'_> {
             let loose = a.count_rule.is_none() && (a.count.is_none() || a.accommodated) && a.category.is_some();
             let later = self.draft.groups[k + 1..]
                 .iter()
-                .find(|b| b.category == a.category && b.count.is_some() && !b.accommodated && b.count_rule.is_none())
+                // A thing of another colour is another thing ("the pink block", "red blocks").
+                .find(|b| {
+                    b.category == a.category
+                        && b.count.is_some()
+                        && !b.accommodated
+                        && b.count_rule.is_none()
+                        && (a.color.is_none() || b.color.is_none() || a.color == b.color)
+                })
                 .map(|b| b.id.clone());
             let (Some(b), true) = (later, loose) else {
                 k += 1;

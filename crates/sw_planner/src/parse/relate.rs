@@ -4,7 +4,7 @@
 
 use sw_plan::{EndOf, Mount, RelationKind};
 
-use super::{Bare, CountRule, Head, Parser, Subject};
+use super::{Bare, CountRule, Head, Parser, Phrase, Subject};
 use crate::cues::{Cue, cue_at, target_start};
 use crate::lexicon::Meaning;
 use crate::phrase::PlaceKind;
@@ -57,8 +57,12 @@ impl Parser<'_> {
                     .take(2)
                     .collect();
                 let plural_first = before.first().is_some_and(|g| self.group_is_plural(g));
+                // "a mixer and a blender on the worktop with the lid beside it, an arm between
+                // them": the two said together, not the last two named.
+                let together = self.coordination_still_in_view(current.as_ref());
                 let targets = match before.as_slice() {
                     [a, ..] if plural_first => Some(vec![a.clone(), a.clone()]),
+                    _ if together.is_some() => together,
                     [a, b] => Some(vec![b.clone(), a.clone()]),
                     _ => None,
                 };
@@ -208,12 +212,29 @@ impl Parser<'_> {
                 for t in &coordinated {
                     self.apply(&s, cue.clone(), vec![t.clone()]);
                 }
+                // "a white mug and a red mug to the right of the caddy", "a sofa and two
+                // armchairs around a table": a relation after phrases joined by "and" is
+                // said of each of them.
+                // Only where the relation follows the phrases directly ("…, clear them up into
+                // the box" says nothing of the candles listed before).
+                let follows = self.last_phrase.as_ref().is_some_and(|(e, g)| *e == i && s == Subject::Group(g.clone()));
+                if follows && cue != Cue::On && !matches!(cue, Cue::Between) {
+                    for c in self.conjuncts_of(&s) {
+                        if !targets.contains(&c) && !coordinated.contains(&c) {
+                            self.apply(&Subject::Group(c.clone()), cue.clone(), targets.clone());
+                            for t in &coordinated {
+                                self.apply(&Subject::Group(c.clone()), cue.clone(), vec![t.clone()]);
+                            }
+                        }
+                    }
+                }
                 // "three mugs and a bowl on the table": small things listed together rest
                 // on the same thing; "a table and four chairs in a row" both stand so.
                 // "a hob with a kettle and two mugs next to it": whatever the "with" lists
                 // stands so to its host.
                 let to_with_host = std::mem::take(&mut self.it_is_with_host);
-                if (cue == Cue::On || to_with_host) && targets.iter().all(|t| !t.starts_with('@')) {
+                let all_of = std::mem::take(&mut self.all_of);
+                if (cue == Cue::On || to_with_host || all_of) && targets.iter().all(|t| !t.starts_with('@')) {
                     let others: Vec<String> = self
                         .list
                         .iter()
@@ -224,13 +245,40 @@ impl Parser<'_> {
                         })
                         .collect();
                     for g in others {
-                        let has_on =
-                            self.draft.relations.iter().any(|(x, k)| x == &g && matches!(k, RelationKind::On { .. }));
+                        // Already on, in, under or set into something: it stays there.
+                        let has_on = self.draft.relations.iter().any(|(x, k)| {
+                            x == &g
+                                && matches!(
+                                    k,
+                                    RelationKind::On { .. }
+                                        | RelationKind::Inside { .. }
+                                        | RelationKind::Under { .. }
+                                        | RelationKind::SetInto { .. }
+                                )
+                        });
                         let small = self.group_is_small(&g) && !has_on;
-                        if (small || (to_with_host && cue != Cue::On)) && !targets.contains(&g) {
+                        if (small || all_of || (to_with_host && cue != Cue::On)) && !targets.contains(&g) {
                             self.apply(&Subject::Group(g), cue.clone(), targets.clone());
                         }
                     }
+                }
+                // What the relation was said of together, for a later "between them".
+                let together: Vec<String> = self
+                    .list
+                    .iter()
+                    .chain(std::iter::once(&s))
+                    .filter_map(|m| match m {
+                        Subject::Group(g) if !targets.contains(g) && !coordinated.contains(g) => Some(g.clone()),
+                        _ => None,
+                    })
+                    .fold(Vec::new(), |mut v, g| {
+                        if !v.contains(&g) {
+                            v.push(g);
+                        }
+                        v
+                    });
+                if together.len() >= 2 {
+                    self.last_coordination = together;
                 }
                 self.list.clear();
                 self.pending.clear();
@@ -243,6 +291,45 @@ impl Parser<'_> {
             }
         }
         Some(end)
+    }
+
+    /// The first and last of the things last said together of one relation, when nothing
+    /// named since stands apart from them (what came after is placed by them or they on
+    /// it): the antecedent of a plural "them" that no plural group is nearer to.
+    fn coordination_still_in_view(&self, current: Option<&Subject>) -> Option<Vec<String>> {
+        let members = &self.last_coordination;
+        let (a, b) = (members.first()?, members.last()?);
+        if members.len() < 2 || current.is_some_and(|c| members.iter().any(|m| *c == Subject::Group(m.clone()))) {
+            return None;
+        }
+        let last_seen = self.mentions.iter().rposition(|m| matches!(m, Subject::Group(g) if members.contains(g)))?;
+        let related = |g: &str| {
+            self.draft.relations.iter().any(|(s, k)| {
+                (s == g && k.targets().iter().any(|t| members.iter().any(|m| m == t)))
+                    || (members.contains(s) && k.targets().contains(&g))
+            })
+        };
+        let apart = self.mentions[last_seen + 1..].iter().any(|m| match m {
+            Subject::Group(g) => Some(m) != current && !members.contains(g) && !related(g),
+            Subject::Robot(_) => false,
+        });
+        (!apart).then(|| vec![a.clone(), b.clone()])
+    }
+
+    /// The groups joined to the subject `s` by a bare "and", still in the clause's list.
+    fn conjuncts_of(&self, s: &Subject) -> Vec<String> {
+        let Subject::Group(g) = s else { return Vec::new() };
+        let in_list = |x: &String| self.list.iter().any(|m| *m == Subject::Group(x.clone()));
+        let mut out: Vec<String> = Vec::new();
+        let mut cur = g.clone();
+        while let Some((a, _)) = self.and_pairs.iter().rev().find(|(_, b)| *b == cur) {
+            if !in_list(a) || out.contains(a) || a == g {
+                break;
+            }
+            out.push(a.clone());
+            cur = a.clone();
+        }
+        out
     }
 
     /// The target after "and" at `j` when it is coordinated with the one before: a definite
@@ -314,7 +401,16 @@ impl Parser<'_> {
             return None;
         }
         self.mark(i, next);
-        self.apply(&Subject::Group(pieces), cue, vec![target]);
+        self.apply(&Subject::Group(pieces.clone()), cue, vec![target]);
+        // "a UR10e on a pedestal surrounded by 4 bins on the floor": a placement right after
+        // the pieces is theirs when the robot's own stand was already said.
+        let mounted = match self.subject.clone() {
+            Some(Subject::Robot(r)) => self.draft.robots.get(r).is_some_and(|x| !matches!(x.mount, Mount::Auto)),
+            _ => false,
+        };
+        if mounted && cue_at(&self.toks, next).is_some() {
+            self.subject = Some(Subject::Group(pieces));
+        }
         Some(next)
     }
 
@@ -406,6 +502,16 @@ impl Parser<'_> {
                 self.it_is_with_host = with_it.as_ref() == Some(&host);
                 return Some((host, j + 1));
             }
+            // "two bowls and a tray on a table, arm mounted on it": what an arm stands on is a
+            // work surface, the latest one named (a target included).
+            if w == "it"
+                && *cue == Cue::On
+                && matches!(self.subject, Some(Subject::Robot(_)))
+                && let Some(surface) =
+                    self.draft.groups.iter().rev().map(|g| g.id.clone()).find(|g| self.group_is_work_surface(g))
+            {
+                return Some((surface, j + 1));
+            }
             let previous = self.resolve_pronoun(w)?;
             return Some((
                 match previous {
@@ -421,6 +527,14 @@ impl Parser<'_> {
             && let Some(m) = self.mount_word(j)
         {
             return Some(m);
+        }
+        // "a TV on a stand", "a bench grinder on a stand": a support named only by a word
+        // for supports is the kind that carries that thing (a TV stand), else a stand.
+        if *cue == Cue::On
+            && let Some(Subject::Group(g)) = self.subject.clone()
+            && let Some(found) = self.support_by_load(j, &g)
+        {
+            return Some(found);
         }
         let definite = self.is_definite(j);
         let p = self.phrase_at(j, true, Bare::Target).ok().flatten()?;
@@ -469,6 +583,30 @@ impl Parser<'_> {
                 self.place_of = Some((kind, Some(inner.clone())));
                 return Some((inner, end));
             }
+            // "in the bottom drawer", "under the shelf": a part named with a thing before is
+            // a place of that thing.
+            // "the bottom drawer", "the top shelf": which of the parts, read as one.
+            if matches!(
+                kind,
+                PlaceKind::Top | PlaceKind::Bottom | PlaceKind::Middle | PlaceKind::Front | PlaceKind::Back
+            ) && let Some(q) = self.phrase_at(p.end, true, Bare::Target).ok().flatten()
+                && let Some((owner, place)) = self.owner_of_part(&q)
+            {
+                self.mark(j, q.end);
+                self.place_of = Some((place, Some(owner.clone())));
+                return Some((owner, q.end));
+            }
+            // "on the table top", "at the bench end": a place of the thing its modifier names.
+            if let Some(thing) = self.thing_before_place(j, p.end) {
+                self.mark(j, p.end);
+                self.place_of = Some((kind, Some(thing.clone())));
+                return Some((thing, p.end));
+            }
+            if let Some((owner, place)) = self.owner_of_part(&p) {
+                self.mark(j, p.end);
+                self.place_of = Some((place, Some(owner.clone())));
+                return Some((owner, p.end));
+            }
             // "a place, not an object": a bare place ("near the window") is where the room's
             // walls are.
             self.one_at_each_place(p.count, j);
@@ -476,7 +614,32 @@ impl Parser<'_> {
             self.place_of = Some((kind, None));
             return Some((String::from("@place"), p.end));
         }
+        // "on the table top", "on the tabletop": the top of a table, not the room's kind.
+        if *cue == Cue::On && definite && matches!(p.head, Head::Known(Meaning::Room(sw_plan::RoomKind::Tabletop))) {
+            let table = match self.draft.groups.iter().rev().find(|g| self.group_is_work_surface(&g.id)) {
+                Some(g) => g.id.clone(),
+                None => {
+                    let mut q = p.clone();
+                    q.head = Head::Known(Meaning::Category("table"));
+                    let id = self.new_group(Some("table"), "table".into(), &q, q.explicit);
+                    if let Some(g) = self.draft.groups.last_mut() {
+                        g.accommodated = true;
+                    }
+                    id
+                }
+            };
+            self.mark(j, p.end);
+            return Some((table, p.end));
+        }
         let indefinite = p.quantity.is_some() || (j > 0 && matches!(self.word(j - 1), "a" | "an" | "another"));
+        if definite
+            && !indefinite
+            && let Some((owner, place)) = self.owner_of_part(&p)
+        {
+            self.mark(j, p.end);
+            self.place_of = Some((place, Some(owner.clone())));
+            return Some((owner, p.end));
+        }
         let end = p.end;
         // A new group for a plural target without a count ("next to tables") gets two;
         // the pieces of a turned-round relation ("surrounded by screens") the usual default.
@@ -623,7 +786,7 @@ impl Parser<'_> {
 
     pub(super) fn apply(&mut self, subject: &Subject, cue: Cue, targets: Vec<String>) {
         // A relation closes the "with" list: a later "it" is no longer its host.
-        self.with_it = None;
+        let listed_with = self.with_it.take();
         // A cue whose target was a place ("on the edge of the table", "at the end of the
         // conveyor", "in the corners of the room") says something else.
         if let Some((place, of)) = self.place_of.take()
@@ -647,6 +810,14 @@ impl Parser<'_> {
                 {
                     robot.near = Some(g.clone());
                     return;
+                }
+                // A place noun's scope is the nearest host that holds the thing: "a desk with
+                // a caddy in the middle" is the desk's middle, "a lamp in the corner" of the
+                // bench it was listed on is that bench's corner. A small thing with no host
+                // said is in the middle of the last work surface named, not of the room.
+                if let Some(host) = self.host_of_place(g, &cue, &targets, listed_with.as_deref()) {
+                    let cue = if cue == Cue::Center { Cue::On } else { Cue::OnEdge };
+                    return self.apply(subject, cue, vec![host]);
                 }
                 // "a mug on the table next to the door": placement words after an "on"
                 // describe where the table stands.
@@ -825,6 +996,10 @@ impl Parser<'_> {
         let thing = of.map(|t| vec![t]);
         Some(match (place, thing) {
             (PlaceKind::Edge, Some(t)) => (Cue::OnEdge, t),
+            // A part of a thing: in, on or under a shelf, a drawer, a compartment is inside
+            // the thing; on its lid or seat is on it; by it is by the thing.
+            (PlaceKind::Part, Some(t)) if matches!(cue, Cue::On | Cue::In | Cue::Under) => (Cue::In, t),
+            (PlaceKind::Part, Some(t)) => (cue.clone(), t),
             // "bolted to one of the ends of the table", "on the corner of the desk".
             (PlaceKind::End | PlaceKind::Start | PlaceKind::Corner, Some(t)) if *cue == Cue::On => (Cue::OnEdge, t),
             (PlaceKind::Start, Some(t)) => (Cue::EndOf(Some(EndOf::Start)), t),
@@ -846,6 +1021,173 @@ impl Parser<'_> {
             (PlaceKind::Floor, None) => (Cue::Floor, Vec::new()),
             _ => return None,
         })
+    }
+
+    /// The host whose middle or corner a small thing's "in the middle" / "in the corner"
+    /// names: the thing a "with" listed it on, else (for the middle only, with no host of
+    /// its own) the last work surface named. `None` for the room's.
+    fn host_of_place(&self, g: &str, cue: &Cue, targets: &[String], listed_with: Option<&str>) -> Option<String> {
+        if !targets.is_empty() || !matches!(cue, Cue::Center | Cue::Corner(None)) {
+            return None;
+        }
+        // A thing of no known kind listed with a surface ("a desk with a book caddy in the
+        // middle") is on it as a small thing would be; furniture is not.
+        let on_surface = self.group_is_small(g) || self.group(g).is_some_and(|x| x.category.is_none());
+        if !on_surface {
+            return None;
+        }
+        let listed_on = self.implicit_on.iter().rev().find(|(s, _)| s == g).map(|(_, h)| h.clone()).or_else(|| {
+            listed_with
+                .filter(|h| *h != g && self.group_has_surface(h) && !self.group(h).is_some_and(|x| x.plural))
+                .map(str::to_string)
+        });
+        if listed_on.is_some() {
+            return listed_on;
+        }
+        if !self.group_is_small(g) {
+            return None;
+        }
+        // Said to be on something ("a mug on the table in the middle"): the words place
+        // that host.
+        if self.on_host.iter().any(|(s, _)| s == g) || *cue != Cue::Center {
+            return None;
+        }
+        self.draft.groups.iter().rev().map(|x| x.id.clone()).find(|x| x != g && self.group_is_work_surface(x))
+    }
+
+    /// The thing a place noun's modifier names ("the table top", "the bench end"): the
+    /// latest group of that kind, else one added (and noted). The place word is the last
+    /// token before `end`; the modifier is the known noun right before it.
+    fn thing_before_place(&mut self, j: usize, end: usize) -> Option<String> {
+        let place = end.checked_sub(1)?;
+        let mut k = j;
+        while k < place && matches!(self.word(k), "a" | "an" | "the" | "its" | "their" | "one" | "each" | "every") {
+            k += 1;
+        }
+        if k >= place {
+            return None;
+        }
+        let (meaning, n) = self.lookup(k, crate::lexicon::is_head)?;
+        let Meaning::Category(cat) = meaning else { return None };
+        if k + n != place {
+            return None;
+        }
+        if let Some(g) = self.draft.groups.iter().rev().find(|g| g.category == Some(cat)) {
+            return Some(g.id.clone());
+        }
+        let p = Phrase {
+            end: place,
+            count: None,
+            quantity: None,
+            color: None,
+            sizes: Vec::new(),
+            explicit: sw_plan::ExplicitSize::default(),
+            descriptors: Vec::new(),
+            room_modifier: None,
+            head: Head::Known(Meaning::Category(cat)),
+            plural: false,
+            text: self.span(k, place),
+            fuzzy_from: None,
+        };
+        let id = self.new_group(Some(cat), cat.replace('_', " "), &p, p.explicit);
+        if let Some(g) = self.draft.groups.last_mut() {
+            g.accommodated = true;
+        }
+        Some(id)
+    }
+
+    /// "a stand", "a low unit", "a base" after `g`'s "on": a word that names only a
+    /// support. Its kind is the catalog's support named by what it carries ("tv" + "stand"
+    /// is a TV stand; "television" + "unit" a TV unit), else for a stand, base or plinth a
+    /// pedestal. The group made (or the stand named before, for "the stand") and the end.
+    fn support_by_load(&mut self, j: usize, g: &str) -> Option<(String, usize)> {
+        let mut k = j;
+        let definite = matches!(self.word(k), "the" | "its" | "their");
+        while matches!(
+            self.word(k),
+            "a" | "an"
+                | "the"
+                | "its"
+                | "their"
+                | "low"
+                | "small"
+                | "tall"
+                | "high"
+                | "wooden"
+                | "metal"
+                | "steel"
+                | "sturdy"
+        ) {
+            k += 1;
+        }
+        let support = self.word(k).to_string();
+        if !matches!(support.as_str(), "stand" | "unit" | "base" | "plinth" | "riser" | "cabinet") {
+            return None;
+        }
+        // "a stand mixer", "a unit heater": a noun after it makes another thing.
+        let ends = self.toks.get(k + 1).is_none_or(|t| t.kind != TokenKind::Word)
+            || cue_at(&self.toks, k + 1).is_some()
+            || matches!(self.word(k + 1), "and" | "with" | "by" | "near" | "beside" | "opposite" | "facing");
+        if !ends {
+            return None;
+        }
+        let load = self.group(g)?.category.and_then(sw_catalog::find)?;
+        let mut names: Vec<&str> = std::iter::once(load.display).chain(load.synonyms.iter().copied()).collect();
+        names.retain(|n| !n.is_empty());
+        let by_load = names.iter().find_map(|n| {
+            let compound = format!("{n} {support}");
+            sw_catalog::categories()
+                .iter()
+                .find(|c| c.display == compound || c.synonyms.contains(&compound.as_str()))
+                .map(|c| c.name)
+        });
+        let cat = match by_load {
+            Some(c) => c,
+            None if matches!(support.as_str(), "stand" | "base" | "plinth" | "riser") => "pedestal",
+            None => return None,
+        };
+        let text = self.span(j, k + 1);
+        if definite && let Some(x) = self.draft.groups.iter().rev().find(|x| x.category == Some(cat)) {
+            let id = x.id.clone();
+            self.mark(j, k + 1);
+            return Some((id, k + 1));
+        }
+        let p = Phrase {
+            end: k + 1,
+            count: None,
+            quantity: None,
+            color: None,
+            sizes: Vec::new(),
+            explicit: sw_plan::ExplicitSize::default(),
+            descriptors: Vec::new(),
+            room_modifier: None,
+            head: Head::Known(Meaning::Category(cat)),
+            plural: false,
+            text: text.clone(),
+            fuzzy_from: None,
+        };
+        let id = self.new_group(Some(cat), cat.replace('_', " "), &p, p.explicit);
+        self.draft.approximated.push(sw_plan::Approximation {
+            text,
+            became: cat.to_string(),
+            reason: format!(
+                "a {support} that carries a {} is read as the catalog's {}",
+                load.display,
+                cat.replace('_', " ")
+            ),
+        });
+        self.mark(j, k + 1);
+        Some((id, k + 1))
+    }
+
+    /// The thing a part phrase ("the shelf", "the bottom drawer") belongs to: the latest
+    /// thing named with a part of that head, and the place the part is of it — inside it
+    /// (a shelf, a drawer, a compartment) or its top (a lid, a seat).
+    fn owner_of_part(&self, p: &Phrase) -> Option<(String, PlaceKind)> {
+        let head = singular(&p.text.split_whitespace().last()?.to_lowercase());
+        let owner = self.parts.iter().rev().find(|(h, _)| *h == head).map(|(_, owner)| owner.clone())?;
+        let top = matches!(head.as_str(), "lid" | "seat" | "top" | "tabletop" | "worktop");
+        Some((owner, if top { PlaceKind::Top } else { PlaceKind::Part }))
     }
 
     /// A group standing in a row (or several of them): its end is the row's end.

@@ -322,7 +322,12 @@ impl Parser<'_> {
     /// sentence is the subject it refers to.
     pub(super) fn try_pronoun_subject(&mut self, i: usize) -> Option<usize> {
         let w = self.word(i);
-        if !matches!(w, "it" | "they" | "them" | "these" | "those" | "both") || self.subject.is_some() {
+        // "put it all on a table", "everything on the shelf", "all of them by the door":
+        // every thing named so far that rests on nothing else.
+        let collective = self.collective_pronoun(i);
+        if collective.is_none()
+            && (!matches!(w, "it" | "they" | "them" | "these" | "those" | "both") || self.subject.is_some())
+        {
             return None;
         }
         // At the start of a sentence, or after its imperative verb ("Put them on the bench").
@@ -354,6 +359,15 @@ impl Parser<'_> {
         if !sentence_start {
             return None;
         }
+        if let Some(len) = collective {
+            let all = self.free_standing_groups();
+            let last = all.last()?.clone();
+            self.mark(i, i + len);
+            self.list = all.into_iter().map(Subject::Group).collect();
+            self.all_of = true;
+            self.subject = Some(Subject::Group(last));
+            return Some(i + len);
+        }
         // "These racks …" is a phrase, not a pronoun.
         if self.phrase_at(i + 1, false, super::Bare::No).ok().flatten().is_some() {
             return None;
@@ -362,6 +376,39 @@ impl Parser<'_> {
         self.used[i] = true;
         self.subject = Some(s);
         Some(i + 1)
+    }
+
+    /// The length of a collective pronoun at `i` that stands for everything named so far:
+    /// "it all", "them all", "all of it", "all of them", "everything", "all this".
+    fn collective_pronoun(&self, i: usize) -> Option<usize> {
+        match (self.word(i), self.word(i + 1), self.word(i + 2)) {
+            ("it" | "them" | "these" | "those", "all", _) => Some(2),
+            ("all", "of", "it" | "them" | "these" | "those" | "this") => Some(3),
+            ("all", "this" | "that", _) => Some(2),
+            ("everything", _, _) => Some(1),
+            _ => None,
+        }
+    }
+
+    /// The groups named so far that rest on, in or under no other group: what "it all"
+    /// moves (the things on them go with them).
+    pub(super) fn free_standing_groups(&self) -> Vec<String> {
+        let held = |g: &str| {
+            self.draft.relations.iter().any(|(s, k)| {
+                s == g
+                    && matches!(
+                        k,
+                        RelationKind::On { .. }
+                            | RelationKind::Inside { .. }
+                            | RelationKind::Under { .. }
+                            | RelationKind::SetInto { .. }
+                            | RelationKind::Loaded { .. }
+                            | RelationKind::FullOf { .. }
+                    )
+                    && k.targets().iter().all(|t| !t.starts_with('@'))
+            })
+        };
+        self.draft.groups.iter().map(|g| g.id.clone()).filter(|g| !held(g)).collect()
     }
 }
 
