@@ -78,7 +78,7 @@ pub(crate) fn units(ctx: &Ctx<'_>, items: &[usize]) -> Vec<Unit> {
     // where it reaches — not the arm after all of it, beside the first.
     let split = |ri: usize| -> Option<(String, Vec<String>)> {
         let r = &ctx.input.robots[ri];
-        if !r.is_arm || matches!(r.mount, RobotMount::Surface { .. }) || ctx.robots[ri].is_some() {
+        if !crate::reach::has_arm(r) || matches!(r.mount, RobotMount::Surface { .. }) || ctx.robots[ri].is_some() {
             return None;
         }
         let rels = ctx.relations(&r.group);

@@ -19,6 +19,27 @@ pub(crate) const REACH_USE: f64 = 0.92;
 /// Height of the solver's shoulder point above the arm's base, m.
 pub(crate) const SHOULDER: f64 = 0.25;
 
+/// Whether a robot has an arm that works: a fixed arm, or a mobile manipulator (its arm
+/// on a wheeled base; `is_arm` is false for it, it drives on the floor).
+pub(crate) fn has_arm(robot: &RobotItem) -> bool {
+    robot.is_arm || robot.reach > 0.0
+}
+
+/// The base the solver's reach is measured from for a robot standing at `pos`: a fixed
+/// arm's own base; for a mobile manipulator, its arm's base on the deck — the registry
+/// has no deck heights, so its shoulder is taken at [`MOBILE_SHOULDER`] of the robot's
+/// height at home (the built-in one's is 0.66 m of 1.14 m).
+pub(crate) fn arm_base(robot: &RobotItem, pos: [f64; 3]) -> [f64; 3] {
+    if robot.is_arm {
+        return pos;
+    }
+    let height = robot.keepout.iter().map(|b| b.max[2]).fold(0.0, f64::max);
+    [pos[0], pos[1], pos[2] + (MOBILE_SHOULDER * height - SHOULDER).max(0.0)]
+}
+
+/// A mobile manipulator's shoulder height, as a share of its height at home.
+const MOBILE_SHOULDER: f64 = 0.55;
+
 /// The solver's shoulder point of an arm whose base is at `base`.
 pub(crate) fn shoulder(base: [f64; 3]) -> [f64; 3] {
     [base[0], base[1], base[2] + SHOULDER]
@@ -32,7 +53,7 @@ pub(crate) fn reaches(base: [f64; 3], reach: f64, p: [f64; 3]) -> bool {
 /// The group an arm works at: the surface it is mounted on, else the group it tends
 /// (`near`), else the target of a reach relation.
 pub(crate) fn work_group(ctx: &Ctx<'_>, robot: &RobotItem) -> Option<String> {
-    if !robot.is_arm {
+    if !has_arm(robot) {
         return None;
     }
     if let RobotMount::Surface { group } = &robot.mount {
@@ -198,7 +219,7 @@ pub(crate) fn work_point(ctx: &Ctx<'_>, base: [f64; 3], idx: usize) -> Option<[f
 /// the item's group (`reaching`), else those that work at `idx`'s group (any one will do).
 /// Returns the arms (base, reach) and whether all of them must reach.
 pub(crate) fn arms_for(ctx: &Ctx<'_>, idx: usize, item_group: &str) -> (Vec<([f64; 3], f64)>, bool) {
-    let placed = |ri: usize| ctx.robots[ri].as_ref().map(|p| (p.pos, ctx.input.robots[ri].reach));
+    let placed = |ri: usize| base_of(ctx, ri).map(|b| (b, ctx.input.robots[ri].reach));
     // Arms the item is said to be between ("bins between the two arms") reach it too.
     let between: Vec<&str> = ctx
         .relations(item_group)
@@ -215,7 +236,7 @@ pub(crate) fn arms_for(ctx: &Ctx<'_>, idx: usize, item_group: &str) -> (Vec<([f6
         .iter()
         .enumerate()
         .filter(|(_, r)| {
-            r.is_arm
+            has_arm(r)
                 && ctx
                     .relations(&r.group)
                     .iter()
@@ -232,7 +253,7 @@ pub(crate) fn arms_for(ctx: &Ctx<'_>, idx: usize, item_group: &str) -> (Vec<([f6
         .robots
         .iter()
         .enumerate()
-        .filter(|(_, r)| r.is_arm && between.contains(&r.group.as_str()))
+        .filter(|(_, r)| has_arm(r) && between.contains(&r.group.as_str()))
         .filter_map(|(ri, _)| placed(ri))
         .collect();
     if !flanking.is_empty() {
@@ -269,7 +290,7 @@ pub(crate) fn floor_arms_reaching(ctx: &Ctx<'_>, group: &str) -> Vec<usize> {
         .robots
         .iter()
         .enumerate()
-        .filter(|(_, r)| r.is_arm && !matches!(r.mount, RobotMount::Surface { .. }))
+        .filter(|(_, r)| has_arm(r) && !matches!(r.mount, RobotMount::Surface { .. }))
         .filter(|(_, r)| {
             ctx.relations(&r.group).iter().any(|k| matches!(k, RelationKind::Reach { target } if target == group))
         })
@@ -277,9 +298,9 @@ pub(crate) fn floor_arms_reaching(ctx: &Ctx<'_>, group: &str) -> Vec<usize> {
         .collect()
 }
 
-/// The base of a placed robot.
+/// The base of a placed robot's arm (see [`arm_base`]).
 pub(crate) fn base_of(ctx: &Ctx<'_>, ri: usize) -> Option<[f64; 3]> {
-    ctx.robots[ri].as_ref().map(|p| p.pos)
+    ctx.robots[ri].as_ref().map(|p| arm_base(&ctx.input.robots[ri], p.pos))
 }
 
 /// The names of the arms on the floor or on a stand said to reach `group`, and of their
@@ -294,4 +315,54 @@ pub(crate) fn operators(ctx: &Ctx<'_>, group: &str) -> Vec<String> {
         }
     }
     out
+}
+
+/// How well an arm at `base` reaches the work already placed for it: every placed
+/// instance of `work` (the group it stands at) and of each group it is said to reach.
+/// Returns the instances it cannot work at, and the share of the work surfaces' tops
+/// within its reach (sampled; 1 with no surface). A pose is chosen by the fewest misses,
+/// then the largest share: what goes on a surface later is placed within reach, and the
+/// more of the top is, the more of it fits there.
+pub(crate) fn work_in_reach(ctx: &Ctx<'_>, robot: &RobotItem, base: [f64; 3], work: Option<&str>) -> (usize, f64) {
+    let mut groups: Vec<&str> = work.into_iter().collect();
+    for r in ctx.relations(&robot.group) {
+        if let RelationKind::Reach { target } = r
+            && !groups.contains(&target.as_str())
+        {
+            groups.push(target);
+        }
+    }
+    let (mut misses, mut share, mut surfaces) = (0, 0.0, 0);
+    for g in groups {
+        for (i, spot) in ctx.placed_instances(g) {
+            if !can_work_at_pose(ctx, base, robot.reach, i, &spot) {
+                misses += 1;
+            }
+            if belt_line_at(ctx, i, &spot).is_none()
+                && !ctx.input.objects[i].asset.is_free()
+                && let Some(s) = top_surface(ctx, i)
+            {
+                surfaces += 1;
+                share += top_share(base, robot.reach, &spot, &s);
+            }
+        }
+    }
+    (misses, if surfaces == 0 { 1.0 } else { share / f64::from(surfaces) })
+}
+
+/// The share of a surface (of an object standing at `spot`) within the solver's reach
+/// of an arm at `base`, on an 8 × 8 grid.
+fn top_share(base: [f64; 3], reach: f64, spot: &Spot, s: &SupportSurface) -> f64 {
+    let n = 8;
+    let mut hit = 0u32;
+    for i in 0..n {
+        for j in 0..n {
+            let lx = s.min[0] + (s.max[0] - s.min[0]) * (f64::from(i) + 0.5) / f64::from(n);
+            let ly = s.min[1] + (s.max[1] - s.min[1]) * (f64::from(j) + 0.5) / f64::from(n);
+            if reaches(base, reach, spot.apply([lx, ly, s.z])) {
+                hit += 1;
+            }
+        }
+    }
+    f64::from(hit) / f64::from(n * n)
 }

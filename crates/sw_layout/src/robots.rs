@@ -266,6 +266,12 @@ fn surface_spots(
     out
 }
 
+/// How many poses beside its work that keep everything an arm on a stand is compared
+/// at, for the one that reaches most of its work.
+const GOOD_POSES: usize = 160;
+/// How much more of its work surfaces a pose must reach to be preferred to an earlier one.
+const SHARE_STEP: f64 = 0.05;
+
 /// A carrier's pose, the robot's on it, its boxes, the instance it works at, and whether
 /// the work is in reach and its relations hold.
 type CarrierSpot = (Spot, Spot, Vec<Aabb>, Option<usize>, bool, bool);
@@ -330,9 +336,11 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
         rels.iter().map(|r| crate::relate::Check::new(ctx, r).in_group(ctx, &robot.group)).collect();
     let mut fallback: Option<CarrierSpot> = None;
     let mut fallback_score = 0u8;
+    let mut best: Option<((usize, f64), CarrierSpot)> = None;
+    let mut tried = 0usize;
     for (spot, preferred) in candidates {
         // Past the places beside its work, a place in reach found there is the best left.
-        if !preferred && fallback_score >= 2 {
+        if !preferred && (fallback_score >= 2 || best.is_some()) {
             break;
         }
         if !fits_floor(ctx, ci, &spot, &ignore) {
@@ -370,11 +378,25 @@ fn on_carrier(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem, carrier: &str) ->
             fallback_score = score;
             continue;
         }
-        drop(checks);
+        // Of the poses beside its work, the one from which it reaches most of it: all of
+        // what it is said to reach, then the most of its work surfaces (the first pose
+        // beside a table may be at its far end).
+        let key = reach::work_in_reach(ctx, robot, base, named.as_deref());
+        // Among poses that reach about as much, the first (the preferred order: facing
+        // its work, centred on a side) stays.
+        if best.as_ref().is_none_or(|(k, _)| key.0 < k.0 || (key.0 == k.0 && key.1 > k.1 + SHARE_STEP)) {
+            best = Some((key, (spot, rspot, boxes, work, true, true)));
+        }
+        tried += 1;
+        if (key.0 == 0 && key.1 >= 0.999) || tried >= GOOD_POSES {
+            break;
+        }
+    }
+    drop(checks);
+    if let Some((_, (spot, rspot, boxes, work, ..))) = best {
         commit_carrier(ctx, ri, robot, ci, spot, rspot, boxes, work);
         return true;
     }
-    drop(checks);
     if let Some((spot, rspot, boxes, work, in_reach, holds)) = fallback {
         let plan = ctx.input.plan;
         let mut unmet: Vec<String> = Vec::new();
@@ -440,6 +462,22 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
     if let Some(g) = &robot.near {
         targets.extend(ctx.placed_instances(g).iter().map(|(_, s)| (s.x, s.y)));
     }
+    // A robot with an arm (a mobile manipulator, an arm on its own base plate) stands
+    // where its arm reaches its work: the group it works at, and all it is said to reach.
+    let work = reach::work_group(ctx, robot);
+    if robot.near.is_none()
+        && let Some(g) = &work
+    {
+        targets.extend(ctx.placed_instances(g).iter().map(|(i, s)| {
+            let c = s.apply(ctx.bounds[*i].center());
+            (c[0], c[1])
+        }));
+    }
+    let reaches_work = |ctx: &Ctx<'_>, x: f64, y: f64| {
+        (work.is_none()
+            && !ctx.relations(&robot.group).iter().any(|r| matches!(r, sw_plan::RelationKind::Reach { .. })))
+            || reach::work_in_reach(ctx, robot, reach::arm_base(robot, [x, y, 0.0]), work.as_deref()).0 == 0
+    };
     let [hw, hd] = ctx.space.half;
     let keep = crate::space::union(&robot.keepout);
     let mut pts: Vec<(f64, f64, Option<f64>)> = Vec::new();
@@ -505,7 +543,7 @@ fn on_floor(ctx: &mut Ctx<'_>, ri: usize, robot: &RobotItem) -> bool {
         let spot = Spot::new(x, y, 0.0, yaw);
         let boxes = robot_boxes(robot, &spot);
         let body = crate::relate::robot_body(robot, &spot);
-        let all_hold = checks.iter().all(|c| c.holds(ctx, &body, 1));
+        let all_hold = checks.iter().all(|c| c.holds(ctx, &body, 1)) && reaches_work(ctx, x, y);
         if !all_hold && fallback.is_some() {
             continue;
         }

@@ -113,10 +113,10 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
             *n += 1;
             let name = format!("{}_{n}", def.name);
             let is_arm = def.kind == RobotKind::Arm;
-            let mut carrier = |category: &str, out: &mut Forged| -> RobotMount {
-                let req = AssetRequest::new(category, instance_seed(seed, &name, 0));
-                let asset = sw_catalog::generate(&req)
-                    .unwrap_or_else(|_| sw_catalog::proxy_asset(category, [0.5, 0.5, 0.7], false, None, 0));
+            let mut carrier = |category: &str, work: Option<&str>, out: &mut Forged| -> RobotMount {
+                let height =
+                    (category == "pedestal").then(|| pedestal_height(plan, &r.id, work, &out.objects)).flatten();
+                let asset = carrier_asset(category, instance_seed(seed, &name, 0), height);
                 let tags = sw_catalog::find(category)
                     .map(|c| c.tags.iter().map(|t| t.to_string()).collect())
                     .unwrap_or_default();
@@ -145,12 +145,12 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                     RobotMount::Surface { group: said_surface.clone().unwrap_or_default() }
                 }
                 (Mount::OnSurface { target }, true) => RobotMount::Surface { group: target.clone() },
-                (Mount::Pedestal, true) => carrier("pedestal", &mut out),
-                (Mount::MobileBase, true) => carrier("mobile_cart", &mut out),
+                (Mount::Pedestal, true) => carrier("pedestal", r.near.as_deref(), &mut out),
+                (Mount::MobileBase, true) => carrier("mobile_cart", None, &mut out),
                 (Mount::Floor, true) => RobotMount::Floor,
                 (Mount::Auto, true) => match (&surface_group, &r.near) {
                     (Some(g), None) => RobotMount::Surface { group: g.clone() },
-                    _ => carrier("pedestal", &mut out),
+                    _ => carrier("pedestal", r.near.as_deref(), &mut out),
                 },
             };
             // One arm per work surface: the arms beyond that stand on pedestals beside it.
@@ -184,8 +184,9 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
                             "robot_on_pedestal",
                             format!("{name}: every {group} already carries an arm; it stands on a pedestal beside one"),
                         ));
+                        let mount = carrier("pedestal", Some(&group), &mut out);
                         near = Some(group);
-                        carrier("pedestal", &mut out)
+                        mount
                     } else {
                         RobotMount::Surface { group }
                     }
@@ -207,6 +208,74 @@ pub(crate) fn forge_with(plan: &ScenePlan, seed: u64, maker: &mut dyn FnMut(&Obj
         }
     }
     out
+}
+
+/// The asset of a robot's pedestal or cart, `height` tall (the catalog's height for its
+/// seed when `None`). The forge and the rebuild of a package both make carriers here: the
+/// forge with the height [`pedestal_height`] decides, the rebuild with the height the
+/// package's layout records, so that a rebuilt scene is the scene that was written.
+pub(crate) fn carrier_asset(category: &str, seed: u64, height: Option<f64>) -> Asset {
+    let mut req = AssetRequest::new(category, seed);
+    if let Some(h) = height
+        && sw_catalog::find(category).is_some_and(|c| c.param("height").is_some())
+    {
+        req.overrides.push(("height".into(), h));
+    }
+    sw_catalog::generate(&req).unwrap_or_else(|_| sw_catalog::proxy_asset(category, [0.5, 0.5, 0.7], false, None, 0))
+}
+
+/// How tall the pedestal of robot group `robot` stands: its mounting plate 0.1 m below
+/// the height it works at — the lowest of the things it is said to reach (and `work`,
+/// the group it tends), each at its top surface, else its top, raised by what it rests
+/// on — within 0.3–0.75 m, to the centimetre: an arm among bins on the floor stands low enough
+/// to reach into them, one at a conveyor high enough to reach across its belt, one
+/// tending a tall machine no higher than a bench. `None` (the catalog's height) when it
+/// has no work among the forged objects.
+pub(crate) fn pedestal_height(
+    plan: &ScenePlan,
+    robot: &str,
+    work: Option<&str>,
+    objects: &[ForgedObject],
+) -> Option<f64> {
+    let mut groups: Vec<&str> = plan
+        .relations
+        .iter()
+        .filter(|x| x.subject == robot)
+        .filter_map(|x| match &x.kind {
+            RelationKind::Reach { target } => Some(target.as_str()),
+            _ => None,
+        })
+        .collect();
+    groups.extend(work);
+    // Where on a thing the arm works: its top surface (not a shelf under it), else its top.
+    let top_of = |group: &str| -> Option<f64> {
+        objects
+            .iter()
+            .filter(|o| o.group == group)
+            .map(|o| o.asset.top_surface().map_or_else(|| o.asset.bounds().max[2], |s| s.z))
+            .reduce(f64::max)
+    };
+    // A thing resting on (or in) another stands at its host's highest surface open above
+    // (a sink's drainboard: its tap stands above it, so it has no top surface).
+    let base_of = |group: &str| -> f64 {
+        plan.relations
+            .iter()
+            .filter(|x| x.subject == group)
+            .find_map(|x| match &x.kind {
+                RelationKind::On { target } | RelationKind::Inside { target } if target != group => {
+                    objects.iter().filter(|o| &o.group == target).find_map(|o| {
+                        o.asset.surfaces.iter().filter(|s| s.clearance.is_none()).map(|s| s.z).reduce(f64::max)
+                    })
+                }
+                _ => None,
+            })
+            .unwrap_or(0.0)
+    };
+    // The lowest of its work: reaching up to a belt or a rack from a low stand is kept
+    // within reach more easily than reaching down into a basin or a floor bin from a
+    // stand as tall as the highest thing it tends.
+    let top = groups.iter().filter_map(|g| top_of(g).map(|t| base_of(g) + t)).reduce(f64::min)?;
+    Some(((top - 0.1).clamp(0.3, 0.75) * 100.0).round() / 100.0)
 }
 
 /// Whether a robot group is said to stand on each side of an object group.

@@ -7,11 +7,10 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use sw_catalog::AssetRequest;
 use sw_layout::{RobotItem, RobotMount};
 use sw_plan::{LaidOutScene, PlacedObject, ScenePlan};
 
-use crate::forge::{Forged, ForgedObject, make_seeded, shrunk};
+use crate::forge::{Forged, ForgedObject, carrier_asset, make_seeded, shrunk};
 use crate::loads::Sizing;
 
 /// Rebuilds the assets of a package; errors name the object.
@@ -63,9 +62,19 @@ fn object(
             (sizing.finish(plan, &g.id, first, asset), tags, label)
         }
         None => {
-            // A robot's pedestal or cart (its group is the robot's, with `_mount`).
-            let asset = sw_catalog::generate(&AssetRequest::new(&o.category, o.asset_seed))
-                .unwrap_or_else(|_| sw_catalog::proxy_asset(&o.category, [0.5, 0.5, 0.7], false, None, 0));
+            // A robot's pedestal or cart (its group is the robot's, with `_mount`), as tall
+            // as the layout records: the forge sets a pedestal's height by its work.
+            let plain = carrier_asset(&o.category, o.asset_seed, None);
+            // Its height as the layout records it: the collision geometry's, to 0.1 µm.
+            let tall = |a: &sw_geom::Asset| {
+                let z = a.collision_aabbs().iter().fold(sw_geom::Aabb::EMPTY, |acc, b| acc.union(b)).size()[2];
+                (z * 1e7).round() / 1e7
+            };
+            let asset = if tall(&plain) == o.size[2] {
+                plain
+            } else {
+                carrier_asset(&o.category, o.asset_seed, Some(o.size[2]))
+            };
             let tags = sw_catalog::find(&o.category)
                 .map(|c| c.tags.iter().map(|t| t.to_string()).collect())
                 .unwrap_or_default();
@@ -136,6 +145,7 @@ mod tests {
 
     use super::*;
     use crate::{Options, generate};
+    use sw_catalog::AssetRequest;
 
     /// Rebuilt assets bridged with the package's layout write its scene.xml exactly.
     #[test]
@@ -154,6 +164,45 @@ mod tests {
             let files = crate::package::bridge(&o.plan.prompt, &o.layout, &forged).unwrap();
             let on_disk = std::fs::read_to_string(out.join("scene.xml")).unwrap();
             assert!(files.scene_xml == on_disk, "prompt {i} ({p}): the rebuilt scene differs");
+        }
+    }
+
+    /// A pedestal the forge made as tall as its arm's work (bins on the floor: lower
+    /// than the catalog's) is rebuilt at that height, and the scene with it.
+    #[test]
+    fn a_pedestal_as_tall_as_its_work_is_rebuilt_at_its_height() {
+        let plan: ScenePlan = serde_json::from_value(serde_json::json!({
+            "schema_version": sw_plan::SCHEMA_VERSION,
+            "prompt": "a UR5e on a pedestal reaching four bins on the floor",
+            "room": {"kind": "warehouse", "size": {"width": 8.0, "depth": 8.0, "height": 4.0}, "size_fixed": true, "door": "south"},
+            "objects": [{"id": "bins", "category": "bin", "phrase": "four bins", "count": 4}],
+            "relations": [{"subject": "arm", "relation": "reach", "target": "bins"}],
+            "robots": [{"id": "arm", "model": "ur5e", "phrase": "a UR5e", "count": 1, "mount": {"mount": "pedestal"}}],
+            "rules_profile": "general",
+            "understanding": {"not_understood": [], "approximated": []}
+        }))
+        .unwrap();
+        let dir = tempfile::tempdir().unwrap();
+        for seed in [1, 2, 3] {
+            let out = dir.path().join(format!("s{seed}"));
+            let o = crate::generate_from_plan(
+                plan.clone(),
+                &out,
+                &Options { seed, verify: false, ..Options::default() },
+                &mut |_| {},
+            )
+            .unwrap();
+            let stand = o.layout.objects.iter().find(|x| x.category == "pedestal").unwrap();
+            let plain = sw_catalog::generate(&AssetRequest::new("pedestal", stand.asset_seed)).unwrap();
+            assert!(
+                (plain.bounds().size()[2] - stand.size[2]).abs() > 0.05,
+                "seed {seed}: the pedestal is the catalog's height ({:.2} m): the test proves nothing",
+                stand.size[2]
+            );
+            let rebuilt = rebuild(&o.plan, &o.layout).unwrap();
+            let files = crate::package::bridge(&o.plan.prompt, &o.layout, &rebuilt).unwrap();
+            let on_disk = std::fs::read_to_string(out.join("scene.xml")).unwrap();
+            assert!(files.scene_xml == on_disk, "seed {seed}: the rebuilt scene differs");
         }
     }
 
