@@ -340,3 +340,22 @@ fn a_proxy_the_prompt_sets_on_a_surface_keeps_a_surface_items_size() {
     assert!(s.width.max(s.depth).max(s.height) <= 0.2, "{s:?}");
     assert!(!o.report.warnings.iter().any(|w| w.message.contains("out of its reach")), "{:?}", o.report.warnings);
 }
+
+#[test]
+fn a_bare_noun_is_not_mapped_to_a_sub_kind_that_is_a_kind_of_something_else() {
+    // "a car": the toy car is named with "car" but its hypernyms say it is a toy (and a
+    // model), not a car; even very near by name and sense it is not what "a car" names.
+    let near = Fixed { near: &[("toy_car", 0.9, 0.8)] };
+    assert_ne!(category_of(&resolve_noun("car", &near)), Some("toy_car"));
+    assert_ne!(category_of(&resolve_noun("airplane", &Fixed { near: &[("toy_airplane", 0.9, 0.8)] })), Some("toy_airplane"));
+    // The sub-kind itself, or a noun that says it ("toy truck"), still maps.
+    assert_eq!(category_of(&resolve_noun("toy car", &near)), Some("toy_car"));
+    assert_eq!(category_of(&resolve_noun("toy truck", &near)), Some("toy_car"));
+    // A sub-kind that is a kind of its head is still taken for the bare head when near:
+    // the santoku, bread and chef's knives are knives (the chef's knife's hypernyms), and a
+    // mass noun goes to the pack it comes in ("bag of flour" names flour in its bag).
+    let knife = Fixed { near: &[("chefs_knife", 0.8, 0.7)] };
+    assert_eq!(category_of(&resolve_noun("santoku knife", &knife)), Some("chefs_knife"));
+    let flour = Fixed { near: &[("sugar_bag", 0.7, 0.6)] };
+    assert_eq!(category_of(&resolve_noun("flour", &flour)), Some("sugar_bag"));
+}
