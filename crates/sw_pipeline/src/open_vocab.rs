@@ -347,8 +347,29 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
         // head names that kind of thing), else what the nearest categories say.
         let kinds: Vec<Kind> = cands.iter().map(|(c, _)| c.kind).collect();
         let agreed = kinds.iter().all(|k| *k == kinds[0]).then_some(kinds[0]);
-        return proxy_by_meaning(&text, meaning, agreed);
+        // A head that names a category is a thing of that kind; one only shared with a
+        // longer name ("blind date" and the "box of dates") says nothing about the noun:
+        // it is weighed as a thing or not like a noun with no candidate at all.
+        if cands.iter().any(|(_, tie)| *tie == Tie::Named) {
+            return proxy_by_meaning(&text, meaning, agreed);
+        }
+        return thing_or_not(&words, &text, meaning, agreed, &cats);
     }
+    thing_or_not(&words, &text, meaning, None, &[])
+}
+
+/// A noun no category is: left out as not a thing when it is nearer the abstract anchors
+/// than any category like it, else a labelled proxy (of kind `known` when its head said).
+/// The `refused` candidates were judged not to be what the noun names and are no evidence
+/// that it is a thing.
+fn thing_or_not(
+    words: &[String],
+    text: &str,
+    meaning: &dyn Meaning,
+    known: Option<Kind>,
+    refused: &[&'static Category],
+) -> Resolution {
+    let text = text.to_string();
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
     // The evidence that the noun is a thing is its nearness to a category by name *and*
     // by sense (its name with its description), the mean of the two: a name alone is near
@@ -363,14 +384,18 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
             .iter()
             .copied()
             .enumerate()
-            .filter(|&(i, _)| !related_not_alike(&words, all[i]) && !shares_only_a_modifier(&words, all[i]))
+            .filter(|&(i, _)| {
+                !related_not_alike(words, all[i])
+                    && !shares_only_a_modifier(words, all[i])
+                    && !refused.iter().any(|r| r.name == all[i].name)
+            })
             .max_by(|a, b| a.1.total_cmp(&b.1))
             .unwrap_or((0, 0.0));
         if meaning.abstractness(&text).is_some_and(|a| a >= score + ABSTRACT_MARGIN) {
             return Resolution::NotAThing { nearest: all.get(i).map(|c| (c.name, score)) };
         }
     }
-    proxy_by_meaning(&text, meaning, None)
+    proxy_by_meaning(&text, meaning, known)
 }
 
 /// Whether `cat` is named as a thing *for* or *of* the noun rather than a thing like it
