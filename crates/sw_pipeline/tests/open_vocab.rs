@@ -348,7 +348,10 @@ fn a_bare_noun_is_not_mapped_to_a_sub_kind_that_is_a_kind_of_something_else() {
     // model), not a car; even very near by name and sense it is not what "a car" names.
     let near = Fixed { near: &[("toy_car", 0.9, 0.8)] };
     assert_ne!(category_of(&resolve_noun("car", &near)), Some("toy_car"));
-    assert_ne!(category_of(&resolve_noun("airplane", &Fixed { near: &[("toy_airplane", 0.9, 0.8)] })), Some("toy_airplane"));
+    assert_ne!(
+        category_of(&resolve_noun("airplane", &Fixed { near: &[("toy_airplane", 0.9, 0.8)] })),
+        Some("toy_airplane")
+    );
     // The sub-kind itself, or a noun that says it ("toy truck"), still maps.
     assert_eq!(category_of(&resolve_noun("toy car", &near)), Some("toy_car"));
     assert_eq!(category_of(&resolve_noun("toy truck", &near)), Some("toy_car"));

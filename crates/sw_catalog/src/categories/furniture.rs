@@ -321,7 +321,7 @@ pub(crate) const SOFA: Category = Category {
 pub(crate) const CHAISE_LONGUE: Category = Category {
     name: "chaise_longue",
     display: "chaise longue",
-    synonyms: &["chaise lounge", "chaise", "daybed", "day bed", "fainting couch", "lounger sofa"],
+    synonyms: &["chaise lounge", "chaise", "fainting couch", "lounger sofa"],
     tags: &["furniture", "seating", "home"],
     description: "an upholstered chaise longue: a long seat to lie on with a backrest",
     is_a: &["sofa", "seat", "furniture"],

@@ -3,10 +3,10 @@
 
 use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng};
 
+use super::forms::drop_door;
 use super::kit::{
     Axis, DARK, GLASS, INK, OFFICE_PAINT, STEEL, WOOD, collider_between, decal_between, fit, pick, rod, shade, slab,
 };
-use super::forms::drop_door;
 use super::parts::{Hinge, MOVING_GAP, carcass, decal_on, hinged_door};
 use super::shapes::{ROUND, revolve, rounded_ring_profile};
 use crate::{Category, Kind, ParamDef, Params};
@@ -313,7 +313,8 @@ fn build_stove(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
         b.visual_mesh_on(0, &ring, Pose::from_pos([sx * bx, yc + sy * by, 0.0]), burners);
     }
     // The oven door with its window; `drop_door` puts the handle bar across its top.
-    let door = drop_door(b, "oven_door", [-hw + 0.004, hw - 0.004], [dz0 + 0.002, dz1 - 0.002], yf, dt, [body, handles], 4.0);
+    let door =
+        drop_door(b, "oven_door", [-hw + 0.004, hw - 0.004], [dz0 + 0.002, dz1 - 0.002], yf, dt, [body, handles], 4.0);
     let dh = dz1 - dz0 - 0.004;
     decal_on(b, door, [-hw + 0.08, 0.0, 0.08], [hw - 0.08, 0.002, dh - 0.1], glass);
     for k in 0..4 {
@@ -321,7 +322,6 @@ fn build_stove(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
         rod(b, [x, yf + 0.01, top_h - 0.07], 0.018, 0.02, Axis::Y, handles);
     }
     b.surface("cooktop", top, [-hw, -hd + guard], [hw, yf], None);
-    b.surface("oven", dz0 + 0.02, [-hw + 0.03, -hd + 0.03], [hw - 0.03, opening - 0.02], Some(dz1 - dz0 - 0.04));
     0.0
 }
 
