@@ -69,7 +69,7 @@ pub(crate) const POTTED_PLANT: Category = Category {
 
 /// A tapered pot with a rim and soil, and the plant: a leafy bush on short plants, a stem
 /// and a crown on tall ones.
-pub(crate) fn build_potted_plant(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+fn build_potted_plant(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, h) = (p.get("width"), p.get("height"));
     let r = w / 2.0;
     let pot = b.material("pot", pick(rng, POTS), true);

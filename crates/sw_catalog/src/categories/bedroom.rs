@@ -217,13 +217,13 @@ pub(crate) const DRAWER_CABINET: Category = def(
         ParamDef::new("width", 0.6, 0.36, 0.9, 0.1, "along X"),
         ParamDef::new("depth", 0.55, 0.45, 0.62, 0.05, "along Y"),
         ParamDef::new("height", 0.86, 0.7, 0.92, 0.04, "floor to top"),
-        ParamDef::new("drawers", 3.0, 3.0, 4.0, 0.2, "drawers"),
+        ParamDef::new("drawers", 3.0, 2.0, 4.0, 0.2, "drawers"),
     ],
     build_drawer_cabinet,
 );
 
 fn build_drawer_cabinet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
-    chest(p, rng, b, p.count("drawers").clamp(3, 4))
+    chest(p, rng, b, p.count("drawers").clamp(2, 4))
 }
 
 pub(crate) const WARDROBE: Category = def(

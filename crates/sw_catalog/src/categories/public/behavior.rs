@@ -21,6 +21,9 @@ const CARE: &[&str] = &["bathroom", "personal_care", "tabletop", "small", "grasp
 const TECH: &[&str] = &["office", "electronics", "tabletop", "small", "graspable"];
 const PLAY: &[&str] = &["home", "toy", "sport", "graspable"];
 
+const TERRACOTTA: &[Rgba] = &[[0.75, 0.4, 0.25, 1.0], [0.92, 0.92, 0.9, 1.0]];
+/// A flower pot, narrower at its foot.
+const POT: &[[f64; 2]] = &[[0.0, 0.0], [0.8, 0.0], [1.0, 1.0], [0.0, 1.0]];
 const HERB: &[Rgba] = &[[0.25, 0.55, 0.2, 1.0], [0.2, 0.45, 0.15, 1.0]];
 const CHIVE: &[Rgba] = &[[0.3, 0.6, 0.22, 1.0]];
 const NUT_BROWN: &[Rgba] = &[[0.45, 0.25, 0.12, 1.0], [0.4, 0.22, 0.1, 1.0]];
@@ -81,11 +84,12 @@ thing!(HERB_BUNCH: "herb_bunch", "bunch of herbs", ["parsley", "bunch of parsley
     "a bunch of fresh leafy herbs such as parsley", ["herb", "vegetable", "food"], Food @ OnSurface, true, [0.25, 0.10, 0.05], 200.0,
     Look::Long { grip: 0.35, grip_w: 0.2, grip_h: 0.4, handle: CHIVE, head: [0.2, 0.5, 0.15, 1.0] });
 // A potted basil plant, 12 × 12 × 22 cm (supermarket living herbs in a 12 cm pot).
-like!(BASIL_POT: "potted_herb", "potted herb", ["pot of basil", "basil plant", "potted basil", "basil", "herb pot", "pot of herbs", "potted herbs", "living herbs"],
+thing!(BASIL_POT: "potted_herb", "potted herb", ["pot of basil", "basil plant", "potted basil", "basil", "herb pot", "pot of herbs", "potted herbs", "living herbs"],
     &["kitchen", "plant", "tabletop", "small", "graspable"], "a small pot of living basil on the windowsill",
-    ["plant", "herb"], Plant @ OnSurface, true, [0.12, 0.12, 0.22], super::super::agriculture::build_potted_plant);
+    ["plant", "herb"], Plant @ OnSurface, true, [0.12, 0.12, 0.22], 300.0,
+    Look::Turned { profile: POT, body: TERRACOTTA, top: 0.45, cap_r: 1.0, cap: [0.2, 0.5, 0.15, 1.0] });
 // A 300 ml carton of cream, 7 × 7 × 12 cm.
-thing!(CREAM_CARTON: "cream_carton", "carton of cream", ["cream", "single cream", "double cream", "heavy cream", "whipping cream", "pot of cream", "cream carton", "carton of single cream"], PACKED,
+thing!(CREAM_CARTON: "cream_carton", "carton of cream", ["cream", "single cream", "double cream", "heavy cream", "whipping cream", "pot of cream", "carton of single cream"], PACKED,
     "a small carton of pouring cream", ["dairy", "carton", "food"], Food @ OnSurface, true, [0.07, 0.07, 0.12], 900.0,
     pack(WHITE, [0.3, 0.45, 0.8, 1.0]));
 // A gooseberry, 2.5 × 2.5 × 2.5 cm.
@@ -119,7 +123,7 @@ thing!(PASTA_SAUCE: "pasta_sauce", "pasta sauce", ["spaghetti sauce", "jar of pa
     "a glass jar of red tomato pasta sauce", ["sauce", "jar", "food"], Food @ OnSurface, true, [0.085, 0.085, 0.15], 900.0,
     capped(JAR, SAUCE, 0.9, 0.85, [0.85, 0.7, 0.2, 1.0]));
 // A 200 g bag of spinach, 25 × 18 × 8 cm.
-thing!(SPINACH: "spinach", "bag of spinach", ["spinach", "baby spinach", "bag of salad", "salad bag", "bagged salad", "bag of lettuce", "salad leaves"], PACKED,
+thing!(SPINACH: "spinach", "bag of spinach", ["baby spinach", "bag of salad", "salad bag", "bagged salad", "bag of lettuce", "salad leaves"], PACKED,
     "a clear bag of green spinach leaves", ["vegetable", "food"], Food @ OnSurface, true, [0.25, 0.18, 0.08], 100.0,
     pack(HERB, [0.9, 0.9, 0.9, 1.0]));
 // A serving of salad in a bowl, 22 × 22 × 10 cm.
@@ -127,11 +131,11 @@ thing!(SALAD: "salad", "salad", ["bowl of salad", "green salad", "garden salad",
     "a bowl of green leaf salad", ["dish", "food"], Food @ OnSurface, true, [0.22, 0.22, 0.10], 500.0,
     capped(BOWL, WHITE, 0.8, 0.95, [0.3, 0.6, 0.2, 1.0]));
 // A bowl of soup, 16 × 16 × 7 cm.
-thing!(SOUP: "soup", "bowl of soup", ["soup", "soup in a bowl", "bowl of stew", "bowl of broth", "broth", "stew"], TABLEWARE,
+thing!(SOUP: "soup", "bowl of soup", ["soup in a bowl", "bowl of stew", "bowl of broth", "broth", "stew"], TABLEWARE,
     "a bowl filled with hot soup", ["dish", "food"], Food @ OnSurface, true, [0.16, 0.16, 0.07], 900.0,
     capped(BOWL, WHITE, 0.85, 0.95, [0.85, 0.45, 0.15, 1.0]));
 // A 500 g tray of beef mince or pork chops, 25 × 18 × 4 cm.
-thing!(MEAT_TRAY: "meat_tray", "pack of meat", ["meat", "beef", "pork", "pork chops", "minced beef", "ground beef", "mince", "meat tray", "pack of mince", "pack of pork chops", "lamb chops", "raw meat"], PACKED,
+thing!(MEAT_TRAY: "meat_tray", "pack of meat", ["meat", "beef", "pork", "pork chops", "minced beef", "ground beef", "mince", "pack of mince", "pack of pork chops", "lamb chops", "raw meat"], PACKED,
     "a plastic tray of raw meat under film", ["meat", "food"], Food @ OnSurface, true, [0.25, 0.18, 0.04], 700.0,
     Look::Flat { body: WHITE, panel: [0.82, 0.4, 0.4, 1.0] });
 // A rack of pork ribs, 30 × 15 × 5 cm.
@@ -159,7 +163,7 @@ thing!(GINGERBREAD: "gingerbread_man", "gingerbread man", ["gingerbread", "ginge
     "a gingerbread man biscuit with white icing", ["baked goods", "cookie", "food"], Food @ OnSurface, true, [0.12, 0.09, 0.01], 700.0,
     flat(&[[0.7, 0.42, 0.18, 1.0]], WHITE_C));
 // A punnet of cranberries, 12 × 12 × 6 cm.
-thing!(CRANBERRIES: "cranberries", "punnet of cranberries", ["cranberries", "cranberry", "dried cranberries", "container of cranberries", "tub of cranberries", "bag of cranberries", "punnet of berries"], PACKED,
+thing!(CRANBERRIES: "cranberries", "punnet of cranberries", ["cranberry", "dried cranberries", "container of cranberries", "tub of cranberries", "bag of cranberries", "punnet of berries"], PACKED,
     "a small clear punnet of red cranberries", ["fruit", "berry", "food"], Food @ OnSurface, true, [0.12, 0.12, 0.06], 500.0,
     capped(CAN, BERRY_RED, 0.9, 1.0, [0.85, 0.9, 0.92, 1.0]));
 // A 250 g box of Medjool dates, 18 × 10 × 4 cm.
@@ -197,7 +201,7 @@ thing!(HARD_DRIVE: "hard_drive", "hard drive", ["external hard drive", "hdd", "p
     "a small black portable hard drive", ["storage device", "electronics"], HandHeld @ OnSurface, true, [0.12, 0.08, 0.02], 900.0,
     pack(BLACKS, [0.3, 0.3, 0.32, 1.0]));
 // A spool of ribbon, 8 × 8 × 3 cm (25 mm × 20 m).
-thing!(RIBBON: "ribbon_spool", "spool of ribbon", ["ribbon", "roll of ribbon", "reel of ribbon", "ribbon spool", "gift ribbon", "satin ribbon"], HOME,
+thing!(RIBBON: "ribbon_spool", "spool of ribbon", ["ribbon", "roll of ribbon", "reel of ribbon", "gift ribbon", "satin ribbon"], HOME,
     "a spool of satin ribbon", ["craft supply"], HandHeld @ OnSurface, true, [0.08, 0.08, 0.03], 500.0,
     turned(SPOOL, BRIGHTS));
 // A coiled charging cable, 15 × 15 × 4 cm.
