@@ -354,3 +354,193 @@ fn two_legs_joined_by_and_are_both_legs() {
     }
     check(out);
 }
+
+/// A C x 45° chamfer on one circular outside edge of radius r (Pappus).
+fn chamfer_ring(r: f64, c: f64) -> f64 {
+    2.0 * PI * (r - c / 3.0) * c * c / 2.0
+}
+
+#[test]
+fn section_letters_written_apart_and_top_hat_bushes() {
+    let mut out = Vec::new();
+    for (a, b, t, w) in [(50.0, 30.0, 5.0, 40.0), (60.0, 60.0, 6.0, 25.0), (80.0, 40.0, 8.0, 50.0)] {
+        let v = (a * t + (b - t) * t) * w;
+        for p in [
+            format!("L bracket {a} x {b} x {t} thick, {w} wide"),
+            format!("L-bracket {a} x {b} x {t} thick, {w} wide"),
+            format!("l bracket {a} x {b} x {t} thk, {w} wide"),
+        ] {
+            out.push(made(&p, [a, b, w], v));
+        }
+    }
+    for (f, tf, s, ls, bore) in [(30.0, 4.0, 20.0, 12.0, 10.0), (40.0, 5.0, 25.0, 20.0, 16.0)] {
+        let v = PI / 4.0 * (f * f * tf + s * s * ls - bore * bore * (tf + ls));
+        for p in [
+            format!(
+                "Top-hat bush: flange Ø{f} x {tf} thick, spigot Ø{s} x {ls} long below the flange, Ø{bore} bore right through"
+            ),
+            format!(
+                "Top hat bush: flange Ø{f} x {tf} thick, spigot Ø{s} x {ls} long below the flange, Ø{bore} bore right through"
+            ),
+            format!(
+                "top hat bush, flange {f} dia x {tf} thk, body {s} dia x {ls} long below the flange, bored {bore} right through"
+            ),
+        ] {
+            out.push(made(&p, [f, f, tf + ls], v));
+        }
+    }
+    check(out);
+}
+
+#[test]
+fn a_centre_bore_in_inches_chamfers_by_letter_and_bored_to_a_size() {
+    let inch = 25.4;
+    let mut out = Vec::new();
+    for (d, t, b) in [(3.0, 0.375, 1.05), (4.0, 0.5, 1.5), (2.5, 0.25, 0.75)] {
+        let v = tube(d * inch, b * inch, t * inch);
+        for p in [
+            format!("Round plate {d:.3} in dia x {t:.3} in thick, {b:.3} in centre bore"),
+            format!("round plate {d} in diameter, {t} in thick, with a {b} in center bore"),
+        ] {
+            out.push(made(&p, [d * inch, d * inch, t * inch], v));
+        }
+    }
+    for (d, h, c) in [(50.0, 20.0, 1.0), (30.0, 60.0, 2.0), (80.0, 12.0, 0.5)] {
+        let v = PI * d * d / 4.0 * h - 2.0 * chamfer_ring(d / 2.0, c);
+        for p in [
+            format!("DISC Ø{d} x {h}, C{c} BOTH ENDS"),
+            format!("rd bar {d} dia x {h} lg, C{c} both ends"),
+            format!("Ø{d} x {h} pin, {c}x45° chamfer both ends"),
+        ] {
+            out.push(made(&p, [d, d, h], v));
+        }
+    }
+    for (a, h, b) in [(40.0, 20.0, 16.0), (60.0, 30.0, 25.0)] {
+        let v = a * a * h - PI * b * b / 4.0 * h;
+        for p in [
+            format!("Block {a} x {a} x {h}, bored {b} right through"),
+            format!("blk {a} x {a} x {h}, drilled {b} thru"),
+            format!("Block {a} x {a} x {h} with a {b} mm hole through it"),
+        ] {
+            out.push(made(&p, [a, a, h], v));
+        }
+    }
+    // A finish says nothing about the geometry.
+    for finish in ["black-oxide", "zinc-plated", "anodised", "galvanized"] {
+        let p = format!("Shaft collar 20 mm bore x 36 mm OD x 12 mm wide, {finish} steel");
+        out.push(made(&p, [36.0, 36.0, 12.0], tube(36.0, 20.0, 12.0)));
+    }
+    check(out);
+}
+
+#[test]
+fn bodies_nothing_places_and_treatments_nothing_sizes_are_refused() {
+    check(vec![
+        // A flange and a body on one axis that no word stacks: end to end or overlapping
+        // are different parts.
+        refused("bush, flange 40 dia x 5, body 25 dia x 20 long, bore 16 thru", &["body"]),
+        refused("Top hat bush, flange 40 dia x 5, body 25 dia x 20 long, bored 16 right through", &["body"]),
+        // Said overall, the long body runs the whole length and the flange is at one end.
+        made(
+            "Flanged bush, 12 mm bore, 18 mm OD, flange 24 mm dia x 3 mm, overall length 20 mm",
+            [24.0, 24.0, 20.0],
+            PI / 4.0 * (24.0 * 24.0 * 3.0 + 18.0 * 18.0 * 17.0 - 12.0 * 12.0 * 20.0),
+        ),
+        // A chamfer with no size is refused, never left off; one said not to be there is not made.
+        refused("Disc 50 dia x 20 thick, with a chamfer on both faces", &["chamfer"]),
+        refused("A block 40 x 30 x 20 with a fillet on the top edges", &["fillet"]),
+        made("Disc 50 dia x 20 thick, no chamfers", [50.0, 50.0, 20.0], PI * 625.0 * 20.0),
+    ]);
+}
+
+#[test]
+fn diameter_pairs_written_with_a_slash_under_a_title_noun() {
+    let mut out = Vec::new();
+    for (od, id, t) in [(140.0, 60.0, 12.0), (30.0, 17.0, 3.0), (80.0, 42.0, 10.0)] {
+        let v = tube(od, id, t);
+        for p in [
+            format!("FLANGE OD {od} / ID {id} x {t} THK"),
+            format!("WASHER OD {od} / ID {id} x {t} THK"),
+            format!("RING {od} OD / {id} ID x {t} THK"),
+            format!("Flange, OD {od}, ID {id}, {t} thick"),
+        ] {
+            out.push(made(&p, [od, od, t], v));
+        }
+        // Holes on a pitch circle between the two.
+        let pcd = (od + id) / 2.0;
+        let h = (od - id) / 5.0;
+        out.push(made(
+            &format!("FLANGE OD {od} / ID {id} x {t} THK, 4X Ø{h} THRU EQ SP ON {pcd} PCD"),
+            [od, od, t],
+            v - 4.0 * PI * h * h / 4.0 * t,
+        ));
+    }
+    out.push(refused("Disc OD 80 / ID 90 x 10 thick", &["90"]));
+    out.push(refused("WASHER OD 20 / ID 22 x 2 THK", &["22"]));
+    check(out);
+}
+
+#[test]
+fn a_square_bar_by_its_side_and_length_and_how_a_part_rests() {
+    let inch = 25.4;
+    let mut out = Vec::new();
+    for (a, l) in [(1.5, 6.0), (0.75, 4.0), (2.0, 12.0)] {
+        let (a, l) = (a * inch, l * inch);
+        for p in
+            [format!("Square bar {}\" x {}\" long", a / inch, l / inch), format!("square bar {a} mm x {l} mm long")]
+        {
+            out.push(made(&p, [l, a, a], a * a * l));
+        }
+    }
+    for (d, l) in [(30.0, 60.0), (20.0, 100.0)] {
+        let v = PI * d * d / 4.0 * l;
+        for p in [
+            format!("A {l} mm long cylinder of {d} mm diameter, standing upright on its end. Just the one cylinder."),
+            format!("A cylinder {d} mm diameter, {l} mm long, standing on end"),
+            format!("A cylinder {d} mm diameter, {l} mm long, lying on its side"),
+        ] {
+            out.push(made(&p, [d, d, l], v));
+        }
+    }
+    // A cube has one size, whatever role says another.
+    out.push(refused("how would I model a 40 mm cube that is 30 mm tall?", &["30 mm tall"]));
+    out.push(refused("A 40 mm cube, 30 mm tall", &["30 mm tall"]));
+    out.push(made("A 40 mm cube, 40 mm tall", [40.0, 40.0, 40.0], 64_000.0));
+    check(out);
+}
+
+#[test]
+fn holes_no_word_places_are_in_the_middle_of_a_part_that_runs_from_its_origin() {
+    // A channel is made from X=0 along its length: a hole or a row of holes in its web sits
+    // about the middle of the length, never half off its end.
+    let mut out = Vec::new();
+    for (web, fl, t, l, d, n, p) in [(50.0, 25.0, 3.0, 300.0, 6.5, 5, 50.0), (80.0, 40.0, 5.0, 400.0, 9.0, 3, 100.0)] {
+        let section = web * t + 2.0 * (fl - t) * t;
+        let hole = PI * d * d / 4.0 * t;
+        out.push(made(
+            &format!("U channel {web} x {fl} x {t}, {l} long, with a row of {n} holes {d} dia in the web at {p} ctrs"),
+            [l, web, fl],
+            section * l - f64::from(n) * hole,
+        ));
+        // Its volume is not known to the forge (a hole through a section's web), so where
+        // the holes are is checked on the code: centred on the length at the pitch.
+        let prompt = format!("U channel {web} x {fl} x {t}, {l} long, with {n} holes {d} dia in the web at {p} ctrs");
+        let code = synthesize(&prompt).map(|s| s.code).unwrap_or_default();
+        let mut xs: Vec<f64> = code
+            .split(".translate((")
+            .skip(1)
+            .filter_map(|c| c.split(',').next()?.trim().parse::<f64>().ok())
+            .collect();
+        xs.sort_by(f64::total_cmp);
+        let want: Vec<f64> = (0..n).map(|i| l / 2.0 + (f64::from(i) - f64::from(n - 1) / 2.0) * p).collect();
+        if xs != want {
+            out.push(Err(format!("{prompt}\n  holes at X {xs:?}, the words say {want:?}\n{code}")));
+        }
+        out.push(made(
+            &format!("flat bar {l} x {web} x {t}, with a row of {n} holes {d} dia at {p} ctrs"),
+            [l, web, t],
+            web * t * l - f64::from(n) * hole,
+        ));
+    }
+    check(out);
+}

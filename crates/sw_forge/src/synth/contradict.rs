@@ -292,6 +292,20 @@ impl Takeoff<'_> {
         }
         // Shape words the sizes deny.
         let said = |w: &str| (th.phrase.0..=th.phrase.1).any(|i| d.is(i, w));
+        // "a 40 mm cube that is 30 mm tall": a cube has one size, whatever role says it.
+        if single && th.noun == "cube" {
+            let extent =
+                [Role::Bare, Role::Side, Role::Length, Role::Width, Role::Height, Role::Thickness, Role::Depth];
+            let sizes: Vec<&Dim> =
+                dims.iter().copied().filter(|x| extent.contains(&x.role) && key(x, &th.noun).is_empty()).collect();
+            if let Some(w) = sizes.iter().skip(1).find(|w| differ(w.mm, sizes[0].mm)) {
+                let (a, b) = (sizes[0].tok.min(w.tok), sizes[0].phrase.1.max(w.phrase.1));
+                return Err(Disagreement {
+                    phrase: d.quote(a, b),
+                    reason: format!("a cube has equal sides, not {} and {} mm", n(sizes[0].mm), n(w.mm)),
+                });
+            }
+        }
         if single
             && (said("square") || said("sq"))
             && let Some(Solid::Box { x, y, z }) = self.solid(t)

@@ -623,7 +623,12 @@ impl Doc {
             // "extruded to a height of", "pitch circle diameter": the later, more specific word wins.
             let role = match role {
                 Role::Length if before.iter().any(|(_, w)| w == "height") => Role::Height,
-                Role::Spacing if after.iter().chain(before.iter()).any(|(_, w)| w == "circle" || w == "diameter") => {
+                // (Not a hole's "6.5 dia" before the spacing: "6.5 dia at 50 ctrs".)
+                Role::Spacing
+                    if after.iter().any(|(_, w)| w == "circle" || w == "diameter")
+                        || before.iter().any(|(_, w)| w == "circle")
+                        || before.last().is_some_and(|(_, w)| w == "diameter") =>
+                {
                     if after.iter().chain(before.iter()).any(|(_, w)| w == "radius") {
                         Role::Radius
                     } else {
@@ -712,8 +717,13 @@ impl Doc {
                 } else if matches!(role, Role::Bare | Role::Height)
                     && (height || from)
                     && matches!(self.word(q + 1), Some("base" | "bottom" | "underside" | "floor" | "top"))
+                    // (Not "28 above the base top", "30 above the top": heights from a face
+                    // that is not the part's bottom, nor up from the part's top.)
+                    && !(self.is(q + 1, "base") && self.is(q + 2, "top"))
+                    && !(self.is(q + 1, "top") && matches!(self.word(q), Some("above" | "over" | "up")))
                 {
-                    // "its centre 30 above the base": a height on the part, from its bottom (or top).
+                    // "its centre 30 above the base": a height on the part, from its bottom (or
+                    // "20 below the top", from its top).
                     quals.push(if self.is(q + 1, "top") { "from-top".into() } else { "from-bottom".into() });
                     Role::Inset
                 } else {

@@ -378,14 +378,20 @@ pub fn read(doc: &Doc) -> (Vec<Mention>, Vec<Element>) {
             continue;
         }
         // A noun qualifying a length ("base diameter", "wall thickness", "flange width",
-        // "head height") is not a mention of its own.
-        if doc.word(i + 1).is_some_and(|n| {
-            super::doc::role_of(n).is_some_and(|r| r != super::doc::Role::Spacing)
-                && n != "side"
-                && n != "rounded"
-                && n != "filleted"
-                && n != "chamfered"
-        }) && !matches!(kind, Noun::Fillet | Noun::Chamfer)
+        // "head height") is not a mention of its own; but a drawing's title noun that opens
+        // the prompt with its first size ("FLANGE OD 140 / ID 60", "SHAFT DIA 20 x 100 LG")
+        // is the part.
+        let title = (0..i).all(|k| doc.word(k).is_some_and(is_det))
+            && matches!(doc.toks.get(i + 2).map(|t| &t.kind), Some(Tk::Num { .. }));
+        if !title
+            && doc.word(i + 1).is_some_and(|n| {
+                super::doc::role_of(n).is_some_and(|r| r != super::doc::Role::Spacing)
+                    && n != "side"
+                    && n != "rounded"
+                    && n != "filleted"
+                    && n != "chamfered"
+            })
+            && !matches!(kind, Noun::Fillet | Noun::Chamfer)
         {
             continue;
         }

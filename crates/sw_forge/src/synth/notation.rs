@@ -113,6 +113,10 @@ pub const SPELLINGS: &[(&str, &[&str])] = &[
     ("angle-iron", &["angle"]),
     ("setscrew", &["radial", "hole"]),
     ("grub-screw", &["radial", "hole"]),
+    // Named part families written as other families' words ("top hat bush" is a flanged
+    // bush; "L bracket" and "U channel" are joined as hyphenated nouns by the tokenizer).
+    ("top-hat", &["flanged"]),
+    ("tophat", &["flanged"]),
 ];
 
 /// Names of standards and the number after them ("ISO 7089", "DIN 912", "NEMA 17"): a
@@ -219,7 +223,11 @@ pub fn role_symbol(c: char) -> Option<&'static str> {
 }
 
 /// Letters written fused to a number that give its role ("R5" a radius).
+/// "C2" a 2 x 45° chamfer (ISO 13715 / drawing practice).
 pub fn role_prefix(w: &str) -> Option<(&'static str, f64)> {
+    if let Some(v) = w.strip_prefix('c').and_then(|v| v.parse::<f64>().ok()) {
+        return Some(("chamfer", v));
+    }
     let v = w.strip_prefix('r')?.parse::<f64>().ok()?;
     Some(("radius", v))
 }
@@ -255,7 +263,10 @@ mod tests {
                     || super::super::doc::QUALS.contains(w)
                     || super::super::lexicon::is_filler(w)
                     || super::super::lexicon::shape_adjective(w).is_some()
-                    || matches!(*w, "counterbored" | "countersunk" | "through" | "typical" | "hex" | "centerline");
+                    || matches!(
+                        *w,
+                        "counterbored" | "countersunk" | "through" | "typical" | "hex" | "centerline" | "flanged"
+                    );
                 assert!(known, "{from} → {w}: not a word of the feature language");
             }
         }

@@ -414,7 +414,12 @@ pub fn tokenize(text: &str) -> Vec<Token> {
             while j < chars.len() {
                 let d = chars[j].1;
                 let joins = (d == '-' || d == '\'') && at(j + 1).is_some_and(|e| e.is_alphanumeric());
-                if d.is_alphanumeric() || joins {
+                // "C0.5", "R2.5", "M2.5": a letter and a decimal number, one word.
+                let point = d == '.'
+                    && j > i + 1
+                    && chars[i + 1..j].iter().all(|c| c.1.is_ascii_digit())
+                    && at(j + 1).is_some_and(|e| e.is_ascii_digit());
+                if d.is_alphanumeric() || joins || point {
                     j += 1;
                 } else {
                     break;
@@ -499,16 +504,67 @@ pub fn tokenize(text: &str) -> Vec<Token> {
         }
         toks.push(Token { kind: Tk::Word(role.into()), start: from, end: e });
     }
+    compounds(&mut toks);
+    slash_pairs(&mut toks);
     inherit_units(&mut toks);
     notes(&mut toks, text);
     toks
 }
 
+/// "OD 140 / ID 60", "30 OD / 17 ID", "Ø40 / Ø20": a slash between two sizes that each
+/// carry their role is a list of them, read as a comma.
+fn slash_pairs(toks: &mut [Token]) {
+    let role = |t: Option<&Token>| t.and_then(Token::word).is_some_and(|w| super::doc::role_of(w).is_some());
+    let num = |t: Option<&Token>| t.is_some_and(|t| matches!(t.kind, Tk::Num { .. }));
+    for i in 1..toks.len() {
+        if !toks[i].is_sym('/') {
+            continue;
+        }
+        // Before: "140" after its role word, or "30 OD"; after: "ID 60", "17 ID" or "Ø20".
+        let left = num(toks.get(i - 1)) && i >= 2 && role(toks.get(i - 2))
+            || role(toks.get(i - 1)) && i >= 2 && num(toks.get(i - 2));
+        let right = role(toks.get(i + 1)) && num(toks.get(i + 2)) || num(toks.get(i + 1)) && role(toks.get(i + 2));
+        if left && right {
+            toks[i].kind = Tk::Sym(',');
+        }
+    }
+}
+
+/// Two words written apart that name one thing when hyphenated: a section's letter and its
+/// noun ("L bracket" is an L-bracket, "U channel" a U-channel, "I beam" an I-beam), or a
+/// spelling of two words ("top hat bush" is a flanged bush, "angle iron" an angle): one
+/// token spanning both, read as the hyphenated word (or the words its spelling stands for).
+fn compounds(toks: &mut Vec<Token>) {
+    let mut i = 0;
+    while i + 1 < toks.len() {
+        let (Some(a), Some(b)) = (toks[i].word(), toks[i + 1].word()) else {
+            i += 1;
+            continue;
+        };
+        let joined = format!("{a}-{b}");
+        let words: Option<Vec<String>> = if let Some(to) = super::notation::spelling(&joined) {
+            Some(to.iter().map(|w| (*w).to_string()).collect())
+        } else if a.len() == 1 && super::lexicon::noun(&joined).is_some() {
+            Some(vec![joined])
+        } else {
+            None
+        };
+        if let Some(words) = words {
+            let (s, e) = (toks[i].start, toks[i + 1].end);
+            toks.drain(i..i + 2);
+            for (k, w) in words.into_iter().enumerate() {
+                toks.insert(i + k, Token { kind: Tk::Word(w), start: s, end: e });
+            }
+        }
+        i += 1;
+    }
+}
+
 /// Whether token `i` is a role written as a symbol with the number before it ("Ø20" read
-/// as 20 diameter, "R5" as 5 radius): a word spanning that number.
+/// as 20 diameter, "R5" as 5 radius, "C1" as a 1 chamfer): a word spanning that number.
 fn marker(toks: &[Token], i: usize) -> bool {
     i > 0
-        && toks.get(i).is_some_and(|t| matches!(t.word(), Some("diameter" | "radius")))
+        && toks.get(i).is_some_and(|t| matches!(t.word(), Some("diameter" | "radius" | "chamfer")))
         && toks[i].start == toks[i - 1].start
         && matches!(toks[i - 1].kind, Tk::Num { .. })
 }
@@ -575,6 +631,22 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             }
         }
     }
+    // "bored 16 right through", "drilled 8 thru": the participle names the cut its number
+    // sizes ("drilled 4 holes" counts them; "bored 20 deep" is a depth).
+    for i in 0..n.saturating_sub(1) {
+        let cut = match toks[i].word() {
+            Some("bored") => "bore",
+            Some("drilled") => "hole",
+            _ => continue,
+        };
+        let sized = matches!(toks[i + 1].kind, Tk::Num { .. })
+            && !word(toks, i + 2)
+                .as_deref()
+                .is_some_and(|w| super::lexicon::noun(w).is_some() || super::doc::role_of(w).is_some() || w == "from");
+        if sized {
+            toks[i].kind = Tk::Word(cut.into());
+        }
+    }
     let mut length = vec![false; n];
     for i in 0..n {
         if !unitless(&toks[i]) || (i > 0 && toks[i - 1].is_sym('=')) {
@@ -585,8 +657,11 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
             // "40 base diameter": a qualifier noun before the role.
             || (next.as_deref().is_some_and(|w| super::doc::QUALS.contains(&w))
                 && word(toks, i + 2).as_deref().is_some_and(is_role));
+        // "C1": a chamfer's size, written with its letter (not one chamfer).
+        let marked = marker(toks, i + 1) && toks[i + 1].is_word("chamfer");
         // A count: "6 holes", "4x Ø6.6", "16 teeth", "4 x M6".
         if !length_noun
+            && !marked
             && next
                 .as_deref()
                 .is_some_and(|w| super::lexicon::noun(w).is_some() || matches!(w, "tooth" | "vertex" | "point"))
@@ -662,7 +737,7 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
         // "1 x 45°": a chamfer's size.
         let chamfer = toks.get(i + 1).is_some_and(|t| t.is_sym('x'))
             && toks.get(i + 2).is_some_and(|t| matches!(t.kind, Tk::Deg(_)));
-        if after || before || chamfer || from_edge {
+        if after || before || chamfer || from_edge || marked {
             length[i] = true;
         }
     }
@@ -739,9 +814,16 @@ fn notes(toks: &mut Vec<Token>, text: &str) {
         }
         i += 1;
     }
-    // "on 50 centres": a spacing.
+    // "on 50 centres": a spacing; but "1.050 in centre bore", "a 10 mm center hole": where
+    // the cut is.
     for i in 1..toks.len() {
+        let placed_cut = toks[i].word().is_some_and(|w| matches!(w, "center" | "centre"))
+            && toks
+                .get(i + 1)
+                .and_then(Token::word)
+                .is_some_and(|w| matches!(super::lexicon::noun(w), Some(super::lexicon::Noun::Cut(_))));
         if matches!(toks[i - 1].kind, Tk::Num { unit: Some(_), .. })
+            && !placed_cut
             && toks[i].word().is_some_and(|w| super::notation::SPACING_AFTER.contains(&w) && w != "pitch")
         {
             toks[i].kind = Tk::Word("spacing".into());

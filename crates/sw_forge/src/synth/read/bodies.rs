@@ -212,7 +212,8 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
     }
     // Stacked on the body before it along the same axis, when one is there and the
     // words say on top (or nothing says otherwise); the first body from 0 (or centred).
-    let prev = (0..e).rev().find_map(|p| r.built[p].as_ref().filter(|b| b.axis == axis && !b.cut).map(|b| b.span));
+    let prev_el = (0..e).rev().find(|p| r.built[*p].as_ref().is_some_and(|b| b.axis == axis && !b.cut));
+    let prev = prev_el.and_then(|p| r.built[p].as_ref().map(|b| b.span));
     // "A plate with four posts": a body the part is said to have stands on the one before.
     let with = r.els[e].mentions.first().is_some_and(|m| r.mentions[*m].prep.as_deref() == Some("with"));
     let on_top = with || r.says(e, "top") || r.says(e, "topped") || r.says(e, "above") || r.says(e, "on");
@@ -225,7 +226,26 @@ fn span(r: &mut Reader<'_>, e: usize, axis: Axis, len: Option<f64>) -> Res<[f64;
             Ok([p[1], p[1] + l])
         }
         _ if r.centered && prev.is_none() => Ok([-l / 2.0, l / 2.0]),
-        _ => Ok([0.0, l]),
+        // The same noun again ("a block 80 x 40 x 20 … one block"), or a part whose length
+        // is said to be overall ("flange 24 dia x 3, overall length 20"): from the same end.
+        Some(_)
+            if prev_el.is_some_and(|p| r.els[p].noun == r.els[e].noun)
+                || (0..r.doc.len()).any(|i| matches!(r.doc.word(i), Some("overall" | "total"))) =>
+        {
+            Ok([0.0, l])
+        }
+        // A second body on the same axis that no word places ("flange 40 dia x 5, body 25
+        // dia x 20 long"): stacked end to end or overlapping are different parts, and the
+        // words do not say which.
+        Some(_) => Err(Refusal::new(
+            r.quote_element(e),
+            format!(
+                "nothing says where the {} sits along the {} axis of the body before it (on top of it, below it, at one end)",
+                r.els[e].noun,
+                axis.name()
+            ),
+        )),
+        None => Ok([0.0, l]),
     }
 }
 
@@ -318,7 +338,17 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
             && r.dim(*k).list.is_none()
             && matches!(r.dim(*k).role, Role::Length | Role::Width | Role::Height | Role::Thickness | Role::Depth)
     });
-    if list.len() >= 3 || (list.len() == 2 && !roles_named) {
+    // "square bar 1-1/2\" x 6\" long", "40 sq x 200 lg": a square section's side and its
+    // length, the length said by its role.
+    let lengths: Vec<usize> = list.iter().copied().filter(|k| r.dim(*k).role == Role::Length).collect();
+    if r.els[e].has_mod("square") && list.len() == 2 && lengths.len() == 1 && s.iter().all(Option::is_none) {
+        let side = list.iter().copied().find(|k| *k != lengths[0]).map(|k| r.dim(k).mm);
+        s = [Some(r.dim(lengths[0]).mm), side, side];
+        for k in &list {
+            r.used_dims[*k] = true;
+        }
+    }
+    if s.iter().all(Option::is_none) && (list.len() >= 3 || (list.len() == 2 && !roles_named)) {
         fill_list(r, &mut s);
     }
     let role = |roles: &[Role], axis: usize, r: &mut Reader<'_>, s: &mut [Option<f64>; 3]| {
@@ -374,6 +404,19 @@ fn box_sizes(r: &mut Reader<'_>, e: usize) -> [Option<f64>; 3] {
     {
         let v = r.dim(k).mm;
         r.used_dims[k] = true;
+        s = [Some(v); 3];
+    }
+    // "a 40 mm cube, 40 mm tall": a cube's one size, said again by a role.
+    if r.els[e].noun == "cube"
+        && let Some(v) = s.iter().flatten().copied().next()
+        && s.iter().flatten().all(|x| (x - v).abs() <= 1e-9 * v.max(1.0))
+    {
+        for k in r.free_dims(e) {
+            let x = r.dim(k);
+            if matches!(x.role, Role::Bare | Role::Side) && (x.mm - v).abs() <= 1e-9 * v.max(1.0) {
+                r.used_dims[k] = true;
+            }
+        }
         s = [Some(v); 3];
     }
     s
@@ -689,7 +732,20 @@ pub fn add(
     id: Option<f64>,
     size: Option<[f64; 2]>,
 ) -> Built {
-    let at = positions(r, e, axis).unwrap_or_else(|_| vec![[0.0, 0.0]]);
+    let mut at = positions(r, e, axis).unwrap_or_else(|_| vec![[0.0, 0.0]]);
+    // "a boss lying along Y, its axis 30 above the base underside": a body across the part
+    // stands with its axis that high above the part's bottom.
+    if axis != Axis::Z
+        && at.len() == 1
+        && let Some(k) = r.find(e, &[Role::Inset], &["from-bottom"], &[])
+    {
+        let bottom = if r.model.adds.is_empty() { 0.0 } else { r.model.bounds()[0][2] };
+        let z = if axis == Axis::X { 1 } else { 0 };
+        at[0][z] = bottom + r.dim(k).mm;
+        r.used_dims[k] = true;
+        let dm = r.doc.dims[k].clone();
+        r.doc.mark_range(dm.phrase.0, dm.phrase.1 + 3);
+    }
     let mut bodies = Vec::new();
     for p in &at {
         bodies.push(r.model.adds.len());

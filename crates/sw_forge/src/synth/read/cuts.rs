@@ -283,6 +283,18 @@ fn extent(r: &Reader<'_>, bodies: &[usize], axis: Axis) -> [f64; 2] {
     [lo, hi]
 }
 
+/// The middle, across a cut's axis, of a part of one body (the body the cut goes through):
+/// where a hole or a pattern no word places is centred. None for a part of several bodies,
+/// whose holes are placed from the part's origin.
+fn middle(r: &Reader<'_>, tg: &[usize], axis: Axis) -> Option<[f64; 2]> {
+    if r.model.adds.len() != 1 || tg.iter().any(|t| r.built[*t].as_ref().is_some_and(|b| b.bodies != [0])) {
+        return None;
+    }
+    let (u, v) = axis.uv();
+    let (a, b) = (extent(r, &[0], u), extent(r, &[0], v));
+    Some([(a[0] + a[1]) / 2.0, (b[0] + b[1]) / 2.0])
+}
+
 fn push_cut(r: &mut Reader<'_>, label: &str, shape: Shape) -> usize {
     r.model.cuts.push(Body::new(label, shape));
     r.model.cuts.len() - 1
@@ -382,6 +394,12 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
             .or_else(|| target_size.and_then(|s| place::corners(r, e, s)))
             .or_else(|| place::row(r, e, count, Axis::X, axis))
             .unwrap_or_default();
+        // A pattern about the middle of the body it goes through (a channel runs from X=0).
+        if let Some(c) = middle(r, &tg, axis) {
+            for p in &mut at {
+                *p = [p[0] + c[0], p[1] + c[1]];
+            }
+        }
     }
     if at.is_empty() && count == 1 && place::corners(r, e, target_size.unwrap_or([0.0, 0.0])).is_some() {
         return Err(Refusal::new(r.quote_element(e), "one hole inset from the corners: which corner is not said"));
@@ -389,15 +407,15 @@ fn hole(r: &mut Reader<'_>, e: usize) -> Res<Built> {
     if at.is_empty() {
         // Through the copies of what it passes through ("through each motor mount").
         let per = tg.iter().find_map(|t| r.built[*t].as_ref().filter(|b| b.at.len() > 1).map(|b| b.at.clone()));
-        // A bore "through its length" runs on the part's centre line, wherever the part
-        // stands (a bar lying along X sits on the floor, its centre line above it).
-        let centre = lengthwise.then(|| {
-            let bodies: Vec<usize> =
-                tg.iter().filter_map(|t| r.built[*t].as_ref()).flat_map(|b| b.bodies.clone()).collect();
+        // A hole no word places is in the middle of what it goes through: a bore "through
+        // its length" on the part's centre line, wherever the part stands (a bar lying
+        // along X sits on the floor, its centre line above it), a hole "through the web" of
+        // a channel that runs from X=0 at the middle of its length.
+        let centre = middle(r, &tg, axis).or(lengthwise.then(|| {
             let (u, v) = axis.uv();
-            let (a, b) = (extent(r, &bodies, u), extent(r, &bodies, v));
+            let (a, b) = (extent(r, &[], u), extent(r, &[], v));
             [(a[0] + a[1]) / 2.0, (b[0] + b[1]) / 2.0]
-        });
+        }));
         at = per.unwrap_or_else(|| vec![centre.unwrap_or([0.0, 0.0])]);
     }
     if count > 1 && at.len() != count as usize {

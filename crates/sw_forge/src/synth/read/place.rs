@@ -115,6 +115,33 @@ pub fn read_frame(r: &mut Reader<'_>) {
                 d.mark(j);
             }
         }
+        // "standing upright on its end", "stood on end", "lying on its side": how the part
+        // rests, which its extents do not depend on.
+        if matches!(
+            d.word(i),
+            Some(
+                "standing" | "stood" | "stands" | "stand" | "upright" | "lying" | "lies" | "laid" | "resting" | "rests"
+            )
+        ) {
+            let mut j = i + 1;
+            if matches!(d.word(j), Some("upright" | "up" | "vertically" | "flat")) {
+                j += 1;
+            }
+            if d.is(j, "on") {
+                let k = if matches!(d.word(j + 1), Some("its" | "one" | "an" | "the")) { j + 2 } else { j + 1 };
+                if matches!(d.word(k), Some("end" | "side" | "base" | "face" | "edge")) {
+                    d.mark_range(i, k + 1);
+                }
+            }
+        }
+        // "CHANNEL … U-SECTION": the section's letter said again of a section body.
+        if matches!(d.word(i), Some("u-section" | "c-section" | "l-section" | "t-section" | "i-section" | "h-section"))
+            && r.els.iter().any(|e| {
+                matches!(e.kind, super::super::lexicon::Noun::Body(super::super::lexicon::ShapeHint::Section(_)))
+            })
+        {
+            d.mark(i);
+        }
         // "centroid at the origin".
         if d.is(i, "centroid") && d.is(i + 1, "at") {
             let end = (i + 1..(i + 4).min(d.len())).find(|j| d.is(*j, "origin"));
@@ -400,6 +427,14 @@ pub fn row(r: &mut Reader<'_>, e: usize, count: u32, default_axis: Axis, plane: 
     let along = d.axis.unwrap_or(default_axis);
     let p = d.mm;
     r.used_dims[k] = true;
+    // "a row of 5 holes": the pattern's noun is read with it.
+    for (a, b) in r.sentences_of(e) {
+        for i in a..b {
+            if r.doc.is(i, "row") {
+                r.doc.mark(i);
+            }
+        }
+    }
     let (u, v) = plane.uv();
     Some(
         (0..count)

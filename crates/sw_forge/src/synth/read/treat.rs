@@ -23,17 +23,29 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
     // or a radius in a sentence that rounds edges ("filleted with a 5mm radius").
     let d = r.doc;
     let mut ops: Vec<(usize, EdgeKind, f64, usize)> = Vec::new(); // (dim, kind, size, sentence)
+    // Treatments said to be made but named without a size of their own: (element, kind,
+    // sentence).
+    let mut bare: Vec<(usize, EdgeKind, usize)> = Vec::new();
     for e in 0..r.els.len() {
         let kind = match r.els[e].kind {
             Noun::Fillet => EdgeKind::Fillet,
             Noun::Chamfer => EdgeKind::Chamfer,
             _ => continue,
         };
-        for k in r.free_dims(e) {
-            if !d.dims[k].paren {
-                ops.push((k, kind, d.dims[k].mm, d.sent[d.dims[k].tok]));
-                r.used_dims[k] = true;
-                break;
+        let sized = r.free_dims(e).into_iter().find(|k| !d.dims[*k].paren);
+        if let Some(k) = sized {
+            ops.push((k, kind, d.dims[k].mm, d.sent[d.dims[k].tok]));
+            r.used_dims[k] = true;
+        } else if let Some(m) = r.els[e].mentions.first() {
+            // Not "no chamfers", "without a fillet", nor "the chamfer" said of one sized
+            // elsewhere.
+            let said_made = r.els[e].mentions.iter().all(|mi| {
+                let x = &r.mentions[*mi];
+                let negated = x.start > 0 && matches!(d.word(x.start - 1), Some("no" | "without" | "not"));
+                !(x.definite || negated)
+            });
+            if said_made {
+                bare.push((e, kind, d.sent[r.mentions[*m].head]));
             }
         }
         r.mark_element(e);
@@ -68,6 +80,12 @@ pub fn read(r: &mut Reader<'_>) -> Res<()> {
             ops.push((k, kind, dm.mm, s));
             r.used_dims[k] = true;
         }
+    }
+    // "with a chamfer on both faces": a treatment of a kind no length in the prompt sizes
+    // is refused, never left off the part.
+    if let Some((e, kind, _)) = bare.iter().find(|(_, kind, _)| !ops.iter().any(|o| o.1 == *kind)) {
+        let what = if *kind == EdgeKind::Fillet { "fillet" } else { "chamfer" };
+        return Err(Refusal::new(r.quote_element(*e), format!("a {what} is named but no size is given for it")));
     }
     for (k, kind, size, s) in ops {
         let Some(bi) = main_body(r) else { break };
