@@ -27,7 +27,7 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-LISTS = ["coco", "objects365", "ycb", "lvis_frequent", "lvis_common", "lvis_rare", "robocasa", "shapenet"]
+LISTS = ["coco", "objects365", "ycb", "lvis_frequent", "lvis_common", "lvis_rare", "robocasa", "shapenet", "behavior"]
 
 
 def norm(s: str) -> str:

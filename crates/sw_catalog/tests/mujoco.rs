@@ -38,6 +38,12 @@ fn placed(name: &str, category: &str, pos: [f64; 3], support: Support, asset: &A
 /// The asset at the origin of a room that fits it, with a test box on each surface
 /// when `with_items`. Returns the scene and its assets.
 fn scene(cat: &Category, asset: &Asset, with_items: bool) -> (LaidOutScene, Vec<Asset>) {
+    scene_with(cat, asset, with_items.then_some(None))
+}
+
+/// [`scene`] with a test box on each surface when `items` is given: a cube of that side,
+/// else the largest box of at most 8 × 8 × 5 cm the surface takes.
+fn scene_with(cat: &Category, asset: &Asset, items: Option<Option<f64>>) -> (LaidOutScene, Vec<Asset>) {
     let s = asset.bounds();
     let size = s.size();
     let room = RoomLayout {
@@ -50,11 +56,11 @@ fn scene(cat: &Category, asset: &Asset, with_items: bool) -> (LaidOutScene, Vec<
     let name = format!("{}_1", cat.name);
     layout.objects.push(placed(&name, cat.name, [0.0; 3], Support::Floor, asset));
     let mut assets = vec![asset.clone()];
-    if with_items {
+    if let Some(cube) = items {
         for (k, surf) in asset.surfaces.iter().enumerate() {
             let ext = [surf.max[0] - surf.min[0], surf.max[1] - surf.min[1]];
-            let side = (0.08f64).min(0.5 * ext[0].min(ext[1]));
-            let h = (0.05f64).min(surf.clearance.map_or(1.0, |c| 0.5 * c));
+            let side = cube.unwrap_or((0.08f64).min(0.5 * ext[0].min(ext[1])));
+            let h = cube.unwrap_or((0.05f64).min(surf.clearance.map_or(1.0, |c| 0.5 * c)));
             let item = proxy_asset("test item", [side, side, h], true, None, k as u64);
             let pos = [0.5 * (surf.min[0] + surf.max[0]), 0.5 * (surf.min[1] + surf.max[1]), surf.z];
             let on = Support::Object { object: name.clone(), surface: surf.name.clone() };
@@ -68,7 +74,15 @@ fn scene(cat: &Category, asset: &Asset, with_items: bool) -> (LaidOutScene, Vec<
 /// Writes the scene of [`scene`] into `dir` as a package does (`scene.xml`, meshes in
 /// `assets/`); returns its path.
 fn write(cat: &Category, asset: &Asset, with_items: bool, dir: &std::path::Path) -> Result<std::path::PathBuf, String> {
-    let (layout, assets) = scene(cat, asset, with_items);
+    write_scene_of(scene(cat, asset, with_items), cat, asset, dir)
+}
+
+fn write_scene_of(
+    (layout, assets): (LaidOutScene, Vec<Asset>),
+    cat: &Category,
+    asset: &Asset,
+    dir: &std::path::Path,
+) -> Result<std::path::PathBuf, String> {
     let files =
         write_scene(&SceneInput { prompt: "", layout: &layout, assets: assets.iter().collect(), robots: vec![] })
             .map_err(|e| format!("{} seed {}: the writer failed: {e}", cat.name, asset.seed))?;
@@ -209,4 +223,30 @@ fn a_resting_movable_asset_makes_few_contacts_with_its_support() {
             .collect()
     });
     assert!(failures.is_empty(), "{} too many:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// A bowl holds a 5 cm cube inside it (issue 21: its support inside was the square
+/// inscribed in its foot, ~0.1 m in the widest bowl and too small for a cube in the
+/// smaller ones): at every seed the inside surface is wider than the cube, and the cube
+/// set on it settles there in MuJoCo, touching no wall.
+#[test]
+fn a_bowl_holds_a_5_cm_cube_inside() {
+    let cat = categories().iter().find(|c| c.name == "bowl").unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let mut failures = Vec::new();
+    for seed in 0..SEEDS {
+        let asset = sw_catalog::generate(&AssetRequest::new(cat.name, seed)).unwrap();
+        let inside = asset.surfaces.iter().find(|s| s.name == "inside").expect("a bowl has an inside");
+        let across = (inside.max[0] - inside.min[0]).min(inside.max[1] - inside.min[1]);
+        if across < 0.05 {
+            failures.push(format!("seed {seed}: the inside is {across:.3} m across"));
+            continue;
+        }
+        let path = write_scene_of(scene_with(cat, &asset, Some(Some(0.05))), cat, &asset, dir.path()).unwrap();
+        let v = sw_sim::verify_file(&path, &sw_sim::VerifyOptions::default());
+        if !v.failures.is_empty() {
+            failures.push(format!("seed {seed}: {}", v.failures.join("; ")));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -221,6 +221,35 @@ fn modifiers_agree(modifiers: &[String], cat: &Category) -> bool {
     modifiers.iter().all(|m| own.binary_search(m).is_ok())
 }
 
+/// Whether `cat`, named with `head` as its last word ("toy car" for "car"), is not a
+/// kind of what `head` names, by its hypernyms (`Category::is_a`): `head` is none of them
+/// while a modifier of that name is one. A toy car is a toy (its hypernyms: toy, model), so
+/// "a car" is not one; a baseball cap (hypernyms: cap, headwear) is a cap. A bare noun is
+/// more general than a sub-kind named with it and maps to it only when the sub-kind is a
+/// kind of it. Only compounds are read so: a phrase name ("bag of flour", "cabinet on
+/// wheels") names its head's thing in a container or with a feature, the pack a mass noun
+/// comes in.
+fn named_as_a_kind_of_its_modifier(cat: &Category, head: &[String]) -> bool {
+    const LINKS: [&str; 4] = ["of", "for", "with", "on"];
+    let hypernyms: Vec<Vec<String>> = cat.is_a.iter().map(|h| noun_words(h)).collect();
+    if hypernyms.iter().any(|h| h.as_slice() == head) {
+        return false;
+    }
+    let raw = [cat.display.to_string(), cat.name.replace('_', " ")];
+    let compounds = raw
+        .iter()
+        .map(String::as_str)
+        .chain(cat.synonyms.iter().copied())
+        .filter(|n| !n.split(|c: char| !c.is_alphanumeric()).any(|w| LINKS.contains(&w.to_lowercase().as_str())))
+        .map(noun_words)
+        .filter(|n| n.len() > head.len() && n.ends_with(head))
+        .collect::<Vec<_>>();
+    compounds.iter().any(|n| {
+        let modifiers = &n[..n.len() - head.len()];
+        hypernyms.iter().any(|h| !h.is_empty() && modifiers.windows(h.len()).any(|w| w == h.as_slice()))
+    })
+}
+
 /// The category whose sense is nearest to `noun`, and its score (`None` without the model).
 fn nearest_sense(noun: &str, meaning: &dyn Meaning) -> Option<(&'static Category, f32)> {
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
@@ -279,7 +308,10 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
                 // tissue box) are siblings, not the same thing: only a noun whose
                 // modifiers the category uses about itself is taken, and then only near.
                 Tie::HeadNamed | Tie::Sibling => {
-                    modifiers_agree(modifiers, cat)
+                    (tie == Tie::Sibling
+                        || !modifiers.is_empty()
+                        || !named_as_a_kind_of_its_modifier(cat, &words[words.len() - head_len..]))
+                        && modifiers_agree(modifiers, cat)
                         && name.is_some_and(|s| s >= SIBLING_MIN)
                         && sense.is_some_and(|s| s >= SENSE_MIN && best().is_none_or(|b| s >= b - SENSE_MARGIN))
                 }
@@ -315,8 +347,29 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
         // head names that kind of thing), else what the nearest categories say.
         let kinds: Vec<Kind> = cands.iter().map(|(c, _)| c.kind).collect();
         let agreed = kinds.iter().all(|k| *k == kinds[0]).then_some(kinds[0]);
-        return proxy_by_meaning(&text, meaning, agreed);
+        // A head that names a category is a thing of that kind; one only shared with a
+        // longer name ("blind date" and the "box of dates") says nothing about the noun:
+        // it is weighed as a thing or not like a noun with no candidate at all.
+        if cands.iter().any(|(_, tie)| *tie == Tie::Named) {
+            return proxy_by_meaning(&text, meaning, agreed);
+        }
+        return thing_or_not(&words, &text, meaning, agreed, &cats);
     }
+    thing_or_not(&words, &text, meaning, None, &[])
+}
+
+/// A noun no category is: left out as not a thing when it is nearer the abstract anchors
+/// than any category like it, else a labelled proxy (of kind `known` when its head said).
+/// The `refused` candidates were judged not to be what the noun names and are no evidence
+/// that it is a thing.
+fn thing_or_not(
+    words: &[String],
+    text: &str,
+    meaning: &dyn Meaning,
+    known: Option<Kind>,
+    refused: &[&'static Category],
+) -> Resolution {
+    let text = text.to_string();
     let all: Vec<&'static Category> = sw_catalog::categories().iter().collect();
     // The evidence that the noun is a thing is its nearness to a category by name *and*
     // by sense (its name with its description), the mean of the two: a name alone is near
@@ -331,14 +384,18 @@ pub fn resolve_noun(label: &str, meaning: &dyn Meaning) -> Resolution {
             .iter()
             .copied()
             .enumerate()
-            .filter(|&(i, _)| !related_not_alike(&words, all[i]) && !shares_only_a_modifier(&words, all[i]))
+            .filter(|&(i, _)| {
+                !related_not_alike(words, all[i])
+                    && !shares_only_a_modifier(words, all[i])
+                    && !refused.iter().any(|r| r.name == all[i].name)
+            })
             .max_by(|a, b| a.1.total_cmp(&b.1))
             .unwrap_or((0, 0.0));
         if meaning.abstractness(&text).is_some_and(|a| a >= score + ABSTRACT_MARGIN) {
             return Resolution::NotAThing { nearest: all.get(i).map(|c| (c.name, score)) };
         }
     }
-    proxy_by_meaning(&text, meaning, None)
+    proxy_by_meaning(&text, meaning, known)
 }
 
 /// Whether `cat` is named as a thing *for* or *of* the noun rather than a thing like it

@@ -189,6 +189,43 @@ fn build_dresser(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     chest(p, rng, b, n)
 }
 
+/// A cabinet with drawers (issue 21, session 8): "a cabinet with drawers" named a door
+/// cabinet, and the only drawer cabinet was the office's steel filing cabinet. A wooden
+/// storage unit of three to four drawers at worktop height, on the chest's carcass.
+pub(crate) const DRAWER_CABINET: Category = def(
+    "drawer_cabinet",
+    "drawer cabinet",
+    &[
+        "cabinet with drawers",
+        "drawer unit",
+        "cupboard with drawers",
+        "unit with drawers",
+        "storage drawers",
+        "drawer base unit",
+        "kitchen drawer unit",
+        "base cabinet with drawers",
+        "chest with drawers",
+    ],
+    &["furniture", "home", "kitchen", "surface", "storage"],
+    "a wooden storage cabinet with a stack of drawers that slide out, worktop high",
+    &["cabinet", "furniture", "storage"],
+    Kind::Furniture,
+    PlacementKind::AgainstWall,
+    false,
+    // IKEA METOD drawer base 60 × 60 × 88 cm (with plinth and top); ALEX drawer unit 36 × 58 × 70 cm.
+    &[
+        ParamDef::new("width", 0.6, 0.36, 0.9, 0.1, "along X"),
+        ParamDef::new("depth", 0.55, 0.45, 0.62, 0.05, "along Y"),
+        ParamDef::new("height", 0.86, 0.7, 0.92, 0.04, "floor to top"),
+        ParamDef::new("drawers", 3.0, 2.0, 4.0, 0.2, "drawers"),
+    ],
+    build_drawer_cabinet,
+);
+
+fn build_drawer_cabinet(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+    chest(p, rng, b, p.count("drawers").clamp(2, 4))
+}
+
 pub(crate) const WARDROBE: Category = def(
     "wardrobe",
     "wardrobe",

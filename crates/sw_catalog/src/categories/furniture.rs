@@ -316,6 +316,30 @@ pub(crate) const SOFA: Category = Category {
     build: build_sofa,
 };
 
+/// A chaise longue (BEHAVIOR-100's `chaise_longue`, issue 21 session 8): the sofa's build,
+/// long and narrow, with one low arm-width of frame at each end.
+pub(crate) const CHAISE_LONGUE: Category = Category {
+    name: "chaise_longue",
+    display: "chaise longue",
+    synonyms: &["chaise lounge", "chaise", "fainting couch", "lounger sofa"],
+    tags: &["furniture", "seating", "home"],
+    description: "an upholstered chaise longue: a long seat to lie on with a backrest",
+    is_a: &["sofa", "seat", "furniture"],
+    kind: Kind::Furniture,
+    placement: PlacementKind::Floor,
+    // Habitat / IKEA chaise longues 160–190 cm long, 65–80 cm deep, 75–90 cm tall.
+    params: &[
+        ParamDef::new("width", 1.7, 1.5, 1.95, 0.08, "along X, ends included"),
+        ParamDef::new("depth", 0.72, 0.62, 0.85, 0.06, "along Y"),
+        ParamDef::new("height", 0.8, 0.7, 0.92, 0.06, "floor to the top of the back"),
+        ParamDef::new("seat_height", 0.42, 0.36, 0.48, 0.04, "floor to the top of the cushions"),
+        ParamDef::new("arm_width", 0.1, 0.08, 0.14, 0.15, "width of each end"),
+    ],
+    movable: false,
+    vary_per_instance: false,
+    build: build_sofa,
+};
+
 /// A base on short feet, seat cushions, back cushions, a back frame and rounded arms;
 /// it faces +Y with its back at -Y.
 pub(crate) fn build_sofa(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {

@@ -157,6 +157,8 @@ pub(crate) const CONDIMENT_BOTTLE: Category = def(
     &[
         "ketchup",
         "ketchup bottle",
+        "catsup",
+        "catsup bottle",
         "mustard",
         "mustard bottle",
         "tomato sauce",

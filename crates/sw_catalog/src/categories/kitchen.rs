@@ -3,10 +3,11 @@
 
 use sw_geom::{AssetBuilder, PlacementKind, Pose, Rng};
 
+use super::forms::drop_door;
 use super::kit::{
     Axis, DARK, GLASS, INK, OFFICE_PAINT, STEEL, WOOD, collider_between, decal_between, fit, pick, rod, shade, slab,
 };
-use super::parts::{Hinge, MOVING_GAP, carcass, hinged_door};
+use super::parts::{Hinge, MOVING_GAP, carcass, decal_on, hinged_door};
 use super::shapes::{ROUND, revolve, rounded_ring_profile};
 use crate::{Category, Kind, ParamDef, Params};
 
@@ -276,8 +277,9 @@ pub(crate) const STOVE: Category = Category {
     build: build_stove,
 };
 
-/// A freestanding range: an oven with a window and handle, control knobs, a cooktop with
-/// four burners and a back guard.
+/// A freestanding range: an oven (an open box with a glass door hinged at the bottom that
+/// a robot pulls down by its bar), control knobs above it, a cooktop with four burners and
+/// a back guard.
 fn build_stove(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = (p.get("width"), p.get("depth"), p.get("height"));
     let finish = pick(rng, APPLIANCE);
@@ -286,12 +288,20 @@ fn build_stove(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let burners = b.material("burners", [0.05, 0.05, 0.05, 1.0], false);
     let glass = b.material("window", GLASS, false);
     let handles = b.material("handles", pick(rng, STEEL), false);
+    let inside = b.material("oven_inside", [0.12, 0.12, 0.13, 1.0], false);
     let (hw, hd) = (w / 2.0, d / 2.0);
     let top_h = 0.9f64.min(h - 0.06);
     let guard = 0.05;
-    // The oven's front is 3.5 cm behind the handle bar.
-    let yf = hd - 0.035;
-    slab(b, [-hw, -hd, 0.0], [hw, yf, top_h - 0.02], body);
+    // The door is 3.5 cm thick; the carcass and the control band stand behind it.
+    let dt = 0.035;
+    let yf = hd - dt;
+    let opening = yf - MOVING_GAP;
+    let (dz0, dz1) = (0.12, top_h - 0.14);
+    // The plinth under the oven, the oven's open box, the control band above it.
+    slab(b, [-hw, -hd, 0.0], [hw, yf, dz0], body);
+    carcass(b, -hw, hw, -hd, opening, dz0, dz1, 0.02, body);
+    decal_between(b, [-hw + 0.021, -hd + 0.021, dz0 + 0.021], [hw - 0.021, opening - 0.01, dz0 + 0.022], inside);
+    slab(b, [-hw, -hd, dz1], [hw, yf, top_h - 0.02], body);
     let top = slab(b, [-hw, -hd + guard, top_h - 0.02], [hw, yf, top_h], hob);
     slab(b, [-hw, -hd, top_h - 0.021], [hw, -hd + guard, h], body);
     // Four burners in a square.
@@ -302,17 +312,11 @@ fn build_stove(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
         let ring = revolve(&rounded_ring_profile(r * 0.5, r, top_h, top_h + 0.012, 0.004), ROUND);
         b.visual_mesh_on(0, &ring, Pose::from_pos([sx * bx, yc + sy * by, 0.0]), burners);
     }
-    // The oven door, its window, the handle bar and the knobs.
-    let (dz0, dz1) = (0.12, top_h - 0.14);
-    decal_between(b, [-hw + 0.02, yf - 0.001, dz0], [hw - 0.02, yf + 0.002, dz1], body);
-    decal_between(b, [-hw + 0.08, yf + 0.002, dz0 + 0.1], [hw - 0.08, yf + 0.003, dz1 - 0.08], glass);
-    // The handle bar on two brackets: a robot pulls the door open by it.
-    let hz = dz1 - 0.035;
-    rod(b, [0.0, hd - 0.01, hz], 0.01, w - 0.12, Axis::X, handles);
-    collider_between(b, [-hw + 0.06, hd - 0.02, hz - 0.01], [hw - 0.06, hd, hz + 0.01]);
-    for x in [-hw + 0.06, hw - 0.07] {
-        decal_between(b, [x, yf + 0.002, hz - 0.008], [x + 0.01, hd - 0.015, hz + 0.008], handles);
-    }
+    // The oven door with its window; `drop_door` puts the handle bar across its top.
+    let door =
+        drop_door(b, "oven_door", [-hw + 0.004, hw - 0.004], [dz0 + 0.002, dz1 - 0.002], yf, dt, [body, handles], 4.0);
+    let dh = dz1 - dz0 - 0.004;
+    decal_on(b, door, [-hw + 0.08, 0.0, 0.08], [hw - 0.08, 0.002, dh - 0.1], glass);
     for k in 0..4 {
         let x = -hw + w * (0.2 + 0.2 * k as f64);
         rod(b, [x, yf + 0.01, top_h - 0.07], 0.018, 0.02, Axis::Y, handles);

@@ -132,7 +132,7 @@ fn build_desk(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
 pub(crate) const FILING_CABINET: Category = Category {
     name: "filing_cabinet",
     display: "filing cabinet",
-    synonyms: &["file cabinet", "drawer cabinet", "filing drawers", "file drawers", "drawer unit"],
+    synonyms: &["file cabinet", "filing drawers", "file drawers", "office drawer cabinet", "steel drawer cabinet"],
     tags: &["furniture", "storage", "office", "tall"],
     description: "a steel office filing cabinet with pull-out drawers for documents",
     is_a: &["cabinet", "furniture", "storage"],

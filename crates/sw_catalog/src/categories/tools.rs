@@ -591,7 +591,7 @@ pub(crate) const BROOM: Category = def(
     build_broom,
 );
 
-fn build_broom(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
+pub(crate) fn build_broom(p: &Params, rng: &mut Rng, b: &mut AssetBuilder) -> f64 {
     let (w, d, h) = whd(p);
     let pole = b.material(
         "handle",

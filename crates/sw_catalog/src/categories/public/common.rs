@@ -273,7 +273,7 @@ thing!(COWBELL: "cowbell", "cowbell", ["cow bell", "alpine bell", "swiss cow bel
 
 // --- audio and larger things -------------------------------------------------------------
 // A hi-fi stereo system, 45 × 30 × 20 cm.
-thing!(STEREO: "stereo", "stereo", ["stereo system", "hi-fi", "hifi", "sound system", "boombox", "ghetto blaster", "music system", "mini hi-fi"], AUDIO,
+thing!(STEREO: "stereo", "stereo", ["stereo system", "hi-fi", "hifi", "sound system", "boombox", "ghetto blaster", "music system", "mini hi-fi", "speaker system", "hi-fi system"], AUDIO,
     "a stereo system with a display, knobs and a CD tray", ["audio device", "electronics"], SmallAppliance @ OnSurface, false, [0.45, 0.30, 0.20], 300.0,
     appliance(BLACKS, [0.2, 0.35, 0.45, 1.0], 3));
 // A CD player, 43 × 30 × 9 cm (a full-width hi-fi unit).

@@ -14,6 +14,7 @@
 //! it looks like is drawn inside that box. Furniture and appliances with flat tops carry a
 //! support surface there.
 
+mod behavior;
 mod common;
 mod food;
 mod home;
@@ -21,6 +22,7 @@ mod leisure;
 mod rare;
 mod work;
 
+pub(crate) use behavior::*;
 pub(crate) use common::*;
 pub(crate) use food::*;
 pub(crate) use home::*;

@@ -18,7 +18,7 @@ const RED: &[Rgba] = &[[0.75, 0.1, 0.15, 1.0], [0.85, 0.15, 0.25, 1.0]];
 
 // --- office and classroom -----------------------------------------------------------
 // 30 cm (12-inch) ruler.
-thing!(RULER: "ruler", "ruler", ["straightedge", "school ruler", "steel rule", "measuring ruler"], OFFICE, "a flat 30 cm ruler",
+thing!(RULER: "ruler", "ruler", ["straightedge", "school ruler", "steel rule", "measuring ruler", "foot rule", "foot ruler", "12-inch ruler"], OFFICE, "a flat 30 cm ruler",
     ["measuring instrument", "stationery"], HandHeld @ OnSurface, true, [0.30, 0.035, 0.003], 1200.0,
     Look::Flat { body: &[[0.85, 0.88, 0.9, 1.0], [0.7, 0.55, 0.35, 1.0]], panel: BLACK_C });
 // Whiteboard eraser: 15 × 5 × 3.5 cm.
