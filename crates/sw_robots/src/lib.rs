@@ -117,7 +117,10 @@ pub struct Gripper {
     pub tcp_site: &'static str,
     /// The position actuator that moves the fingers (its control is the finger travel).
     pub actuator: &'static str,
-    /// Controls that open and close the fingers.
+    /// Controls that open and close the fingers. The control is the finger travel, 0 with
+    /// the pads touching; `closed` lies past that (negative), so that a closed hand
+    /// squeezes whatever is between the pads at the servo's force limit, whatever its
+    /// width, rather than with a force that falls with the gap.
     pub open: f64,
     pub closed: f64,
     /// Widest opening between the pads, m.
