@@ -371,14 +371,8 @@ fn overview_camera(d: f64, h: f64) -> Element {
     look_at("overview", eye, [0.0, 0.1 * d, 0.3 * h.min(3.0)], 75.0)
 }
 
-/// How far to the side of the robot's forward direction the front camera stands, rad.
-const FRONT_SIDE: f64 = 0.87;
-/// The front camera's height over what it frames, per metre of distance (about 45°).
-const FRONT_RISE: f64 = 1.0;
-
-/// The camera a policy sees the work with: in front of the first robot and to one side,
-/// across its work (its base and the movable things within its reach), above — inside the
-/// room.
+/// The camera a policy sees the work with: in front of the first robot, across its work
+/// (its base and the movable things within its reach), slightly above — inside the room.
 fn front_camera(layout: &LaidOutScene) -> Element {
     let s = layout.room.size;
     let (hw, hd) = (0.5 * s.width, 0.5 * s.depth);
@@ -407,25 +401,14 @@ fn front_camera(layout: &LaidOutScene) -> Element {
             (c, [0.0, 1.0], rad)
         }
     };
-    // From in front and to one side of the robot (a three-quarter view, [`FRONT_SIDE`] off
-    // its forward direction), looking down at about 45 degrees: the hand and what it
-    // handles are seen side by side rather than the work standing between the camera and
-    // the arm. Of the two sides, the one whose eye the room's walls move least.
+    // Across the work from in front, looking down at about 40 degrees.
     let dist = (1.5 * radius).clamp(0.8, 3.0);
     let margin = 0.12;
-    let eye_on = |side: f64| {
-        let (c, sn) = (FRONT_SIDE.cos(), side * FRONT_SIDE.sin());
-        let d = [c * forward[0] - sn * forward[1], sn * forward[0] + c * forward[1]];
-        let want = [center[0] + d[0] * dist, center[1] + d[1] * dist];
-        let eye = [
-            want[0].clamp(-hw + margin, hw - margin),
-            want[1].clamp(-hd + margin, hd - margin),
-            (center[2] + FRONT_RISE * dist).min(s.height - margin),
-        ];
-        ((eye[0] - want[0]).hypot(eye[1] - want[1]), eye)
-    };
-    let (left, right) = (eye_on(1.0), eye_on(-1.0));
-    let eye = if right.0 < left.0 - 1e-6 { right.1 } else { left.1 };
+    let eye = [
+        (center[0] + forward[0] * dist).clamp(-hw + margin, hw - margin),
+        (center[1] + forward[1] * dist).clamp(-hd + margin, hd - margin),
+        (center[2] + 0.85 * dist).min(s.height - margin),
+    ];
     look_at("front", eye, center, 58.0)
 }
 
