@@ -403,7 +403,10 @@ pub(crate) fn open(ex: &mut Expert<'_, '_>, joint: &str) -> Result<(), ExpertErr
         ex.run.ctrl[ex.rig.grip_act] = grip;
         ex.run.follow(ex.rig, &approach, 0.8)?;
         ex.run.follow(ex.rig, &into, 0.3)?;
-        ex.run.grip(ex.rig, ex.rig.grip_closed, 0.5)?;
+        // Pinch: the control at the bottom of the actuator's range (past the pads touching),
+        // harder than a grasp's close.
+        let pinch = ex.model.actuator_ctrlrange()[ex.rig.grip_act][0].min(ex.rig.grip_closed);
+        ex.run.grip(ex.rig, pinch, 0.5)?;
         ex.run.follow(ex.rig, &pull, PULL_SPEED)?;
         ex.run.grip(ex.rig, grip, 0.4)?;
         // Back off along the face's normal where the pull ended.

@@ -118,9 +118,8 @@ pub struct Gripper {
     /// The position actuator that moves the fingers (its control is the finger travel).
     pub actuator: &'static str,
     /// Controls that open and close the fingers. The control is the finger travel, 0 with
-    /// the pads touching; `closed` lies past that (negative), so that a closed hand
-    /// squeezes whatever is between the pads at the servo's force limit, whatever its
-    /// width, rather than with a force that falls with the gap.
+    /// the pads touching; the actuator's control range reaches past that (negative), for a
+    /// pinch harder than the servo's gain times the gap (a handle pulled open).
     pub open: f64,
     pub closed: f64,
     /// Widest opening between the pads, m.
