@@ -4,8 +4,10 @@
 //! the leaf) — each point of the path solved by IK on MuJoCo's Jacobian from the one
 //! before. Whether it is closed is the predicate's call on the joint's state afterwards.
 //!
-//! Opening is not done here: the catalog's handles are visual only (a bar 3 mm proud with
-//! no collision geometry), so there is nothing a finger can pull on; see [`open`].
+//! Opening: the hand pinches the part's handle (the collider standing proudest of the
+//! moving face, narrow enough for the pads), squeezes, and pulls it along the same path the
+//! other way — straight out along a slide's axis, an arc about a hinge (the hand turning
+//! with the leaf) — to most of the joint's range, lets go and backs off; see [`open`].
 
 use mujoco_rs::prelude::*;
 use mujoco_rs::wrappers::mj_model::traits::ModelType;
@@ -30,6 +32,9 @@ const PUSH_SPEED: f64 = 0.25;
 /// Tilts of the hand (its approach pitched about its finger axis) tried, rad: up to 72°,
 /// the fingertips meeting a low face from above.
 const TILTS: [f64; 9] = [0.0, 0.35, -0.35, 0.7, -0.7, 1.0, -1.0, 1.25, -1.25];
+/// How far behind the frontmost collider a drawer's front panel may lie (a handle on it
+/// stands proud), m.
+const FRONT_DEPTH: f64 = 0.02;
 /// Where along the leaf, from the hinge to the free edge, a door is pushed.
 const LEVER: f64 = 0.75;
 
@@ -39,6 +44,7 @@ struct Part {
     /// Joint id, its qpos address, its range.
     qadr: usize,
     lo: f64,
+    hi: f64,
     hinge: bool,
     /// World axis and anchor of the joint.
     axis: V3,
@@ -62,18 +68,10 @@ fn part<M: ModelType>(model: &MjModel, data: &MjData<M>, joint: &str) -> Result<
     };
     let body = model.jnt_bodyid()[j] as usize;
     let qadr = model.jnt_qposadr()[j] as usize;
-    let [lo, _hi] = model.jnt_range()[j];
+    let [lo, hi] = model.jnt_range()[j];
     let axis = data.xaxis()[j];
     let anchor = data.xanchor()[j];
-    // The part's collision boxes (centre, rotation, half sizes).
-    let boxes: Vec<(V3, M3, V3)> = (0..model.ffi().ngeom as usize)
-        .filter(|&g| model.geom_bodyid()[g] as usize == body && model.geom_group()[g] == rig::COLLISION_GROUP)
-        .map(|g| {
-            let a = model.geom_aabb()[g];
-            let m: M3 = data.geom_xmat()[g];
-            (add(data.geom_xpos()[g], mat_vec(&m, [a[0], a[1], a[2]])), m, [a[3], a[4], a[5]])
-        })
-        .collect();
+    let boxes: Vec<(V3, M3, V3)> = boxes(model, data, body).into_iter().map(|(c, m, h, _)| (c, m, h)).collect();
     let no_geometry = || ExpertError::Grasp(format!("the part {joint} moves has no collision geometry to push"));
     let extent = |(_, m, h): &(V3, M3, V3), u: V3| (0..3).map(|k| dot(u, col(m, k)).abs() * h[k]).sum::<f64>();
     let along = |p: V3| dot(sub(p, anchor), axis);
@@ -99,11 +97,19 @@ fn part<M: ModelType>(model: &MjModel, data: &MjData<M>, joint: &str) -> Result<
         let depth = dot(sub(b.0, mid), push) - extent(b, push);
         (add(mid, scale(push, depth)), push, b)
     } else {
-        // The front: the box standing out farthest along the axis (the drawer's front
-        // panel); the middle of its outer face.
+        // The front: of the boxes whose outer face is within [`FRONT_DEPTH`] of the
+        // frontmost along the axis (the drawer's front panel and the handle on it), the
+        // one with the largest face across the axis (the panel); the middle of its face.
+        let front = |x: &(V3, M3, V3)| dot(x.0, axis) + extent(x, axis);
+        let first = boxes.iter().map(front).fold(f64::NEG_INFINITY, f64::max);
+        let area = |x: &(V3, M3, V3)| {
+            let e: Vec<f64> = (0..3).map(|k| (1.0 - dot(col(&x.1, k), axis).abs()) * x.2[k]).collect();
+            e[0] * e[1] + e[1] * e[2] + e[0] * e[2]
+        };
         let b = boxes
             .iter()
-            .max_by(|x, y| (dot(x.0, axis) + extent(x, axis)).total_cmp(&(dot(y.0, axis) + extent(y, axis))))
+            .filter(|x| front(x) >= first - FRONT_DEPTH)
+            .max_by(|x, y| area(x).total_cmp(&area(y)))
             .ok_or_else(no_geometry)?;
         let push = scale(axis, -1.0);
         (add(b.0, scale(axis, extent(b, axis))), push, b)
@@ -116,7 +122,7 @@ fn part<M: ModelType>(model: &MjModel, data: &MjData<M>, joint: &str) -> Result<
         let u = unit(along_face);
         (u, (extent(leaf, u) - dot(sub(point, leaf.0), u)).max(0.0))
     };
-    Ok(Part { qadr, lo, hinge, axis, anchor, point, push, rise })
+    Ok(Part { qadr, lo, hi, hinge, axis, anchor, point, push, rise })
 }
 
 /// Where the pushed point is, and how the part has turned, at `s` (0 → 1) of the push
@@ -128,6 +134,23 @@ fn at(part: &Part, travel: f64, s: f64) -> (V3, M3) {
     } else {
         (add(part.point, scale(part.push, s * (travel + OVERSHOOT_SLIDE))), rot_axis([0.0, 0.0, 1.0], 0.0))
     }
+}
+
+/// The collision boxes of `body` as they are now: centre, rotation, half sizes, geom id.
+fn boxes<M: ModelType>(model: &MjModel, data: &MjData<M>, body: usize) -> Vec<(V3, M3, V3, usize)> {
+    (0..model.ffi().ngeom as usize)
+        .filter(|&g| model.geom_bodyid()[g] as usize == body && model.geom_group()[g] == rig::COLLISION_GROUP)
+        .map(|g| {
+            let a = model.geom_aabb()[g];
+            let m: M3 = data.geom_xmat()[g];
+            (add(data.geom_xpos()[g], mat_vec(&m, [a[0], a[1], a[2]])), m, [a[3], a[4], a[5]], g)
+        })
+        .collect()
+}
+
+/// How far the box `b` reaches from its centre along the unit vector `u`.
+fn extent_along(b: &(V3, M3, V3, usize), u: V3) -> f64 {
+    (0..3).map(|k| dot(u, col(&b.1, k)).abs() * b.2[k]).sum::<f64>()
 }
 
 fn unit(v: V3) -> V3 {
@@ -225,11 +248,176 @@ pub(crate) fn close(ex: &mut Expert<'_, '_>, joint: &str) -> Result<(), ExpertEr
     Err(why)
 }
 
-/// Opening needs something to pull on: a handle with collision geometry standing off the
-/// face. The catalog's are visual bars 3 mm proud, so the task is refused with the reason.
-pub(crate) fn open(model: &MjModel, joint: &str) -> Result<(), ExpertError> {
-    let what = model.name_to_id(MjtObjBase::mjOBJ_JOINT, joint).map_or("it", |_| joint);
-    Err(ExpertError::Unsupported(format!(
-        "the expert cannot open {what}: its handle is drawn only (no collision geometry standing off the face), so there is nothing to pull"
-    )))
+/// Where the fingertips are aimed relative to the face behind the handle, m: 4 mm into it
+/// (the part rests on its closed stop, and the hand stops where the tips touch), so that
+/// the pads cover the bar's whole depth even with the hand a few millimetres short of its
+/// target; a shallower pinch squeezes the bar out of the pads as they close.
+const TIP_GAP: f64 = -0.004;
+/// How far a handle must stand proud of the rest of its part to be pinched, m.
+const MIN_PROUD: f64 = 0.004;
+/// The fraction of the joint's range an opening pull aims at (the predicate wants 0.8),
+/// and the least a pull cut short by the arm's reach must make to be kept.
+const OPEN_TO: f64 = 0.92;
+const OPEN_ENOUGH: f64 = 0.86;
+/// Tilts of the hand about its closing axis tried at a handle, rad (the pads stay astride
+/// the bar, which runs across that tilt).
+const HANDLE_TILTS: [f64; 5] = [0.0, 0.3, -0.3, 0.55, -0.55];
+/// Fraction of the joint speed limit the pull is made at.
+const PULL_SPEED: f64 = 0.2;
+
+/// A handle to pull: where the tool centre point pinches it, the hand's rotation there, the
+/// width across the pads, and the way back out along the hand's approach (the face's outward normal, tilted).
+#[derive(Debug, Clone, Copy)]
+struct Handle {
+    at: V3,
+    rot: M3,
+    width: f64,
+    normal: V3,
+}
+
+/// The handle of the part `joint` moves: the collider standing proudest along the face's
+/// outward normal (the way the part moves as it opens), proud of the rest by at least
+/// [`MIN_PROUD`] and narrow enough across one side for the pads. The hand comes in along
+/// -normal, fingers closing across that narrow side, its tips at the face ([`TIP_GAP`]).
+fn handle<M: ModelType>(
+    model: &MjModel,
+    data: &MjData<M>,
+    rig: &rig::Rig,
+    joint: &str,
+    part: &Part,
+) -> Result<Vec<Handle>, ExpertError> {
+    let j = model
+        .name_to_id(MjtObjBase::mjOBJ_JOINT, joint)
+        .ok_or_else(|| ExpertError::Scene(format!("no joint '{joint}'")))?;
+    let body = model.jnt_bodyid()[j] as usize;
+    let all = boxes(model, data, body);
+    // The face's outward normal: opposite the closing push.
+    let n = scale(part.push, -1.0);
+    let front = |b: &(V3, M3, V3, usize)| dot(b.0, n) + extent_along(b, n);
+    let none = || {
+        ExpertError::Grasp(format!(
+            "{joint}: its part has no handle to pull (no collider standing {:.0} mm proud of its face that fits the gripper)",
+            MIN_PROUD * 1000.0
+        ))
+    };
+    let h = all.iter().max_by(|a, b| front(a).total_cmp(&front(b))).ok_or_else(none)?;
+    let rest = all.iter().filter(|b| b.3 != h.3).map(front).fold(f64::NEG_INFINITY, f64::max);
+    if front(h) - rest < MIN_PROUD {
+        return Err(none());
+    }
+    // The narrowest side across the normal that fits between the pads.
+    let (u, width) = (0..3)
+        .filter_map(|k| {
+            let c = col(&h.1, k);
+            (dot(c, n).abs() < 0.5).then(|| (unit(sub(c, scale(n, dot(c, n)))), 2.0 * h.2[k]))
+        })
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .ok_or_else(none)?;
+    if width + 2.0 * crate::grasp::OPENING_SLACK > rig.max_opening {
+        return Err(none());
+    }
+    let back = sub(h.0, scale(n, extent_along(h, n)));
+    let depth = 2.0 * extent_along(h, n);
+    let at = add(back, scale(n, (TIP_GAP + rig.finger_depth).min(depth + rig.finger_depth)));
+    let z = scale(n, -1.0);
+    // Both ways round (the wrist may reach one and not the other), each tilted about the
+    // closing axis.
+    let mut out = Vec::new();
+    for t in HANDLE_TILTS {
+        for y in [u, scale(u, -1.0)] {
+            let zt = mat_vec(&rot_axis(y, t), z);
+            out.push(Handle { at, rot: from_cols(cross(y, zt), y, zt), width, normal: scale(zt, -1.0) });
+        }
+    }
+    Ok(out)
+}
+
+/// Where a point `p` of the part goes, and how the part has turned, when the joint moves by
+/// `dq` (m or rad) from where it is.
+fn moved(part: &Part, p: V3, dq: f64) -> (V3, M3) {
+    if part.hinge {
+        let turn = rot_axis(part.axis, dq);
+        (add(part.anchor, mat_vec(&turn, sub(p, part.anchor))), turn)
+    } else {
+        (add(p, scale(part.axis, dq)), rot_axis([0.0, 0.0, 1.0], 0.0))
+    }
+}
+
+/// Pulls the part that `joint` moves open by its handle: in front of the handle, straight
+/// in, squeeze, the joint's own path out to [`OPEN_TO`] of its range, let go, back off.
+pub(crate) fn open(ex: &mut Expert<'_, '_>, joint: &str) -> Result<(), ExpertError> {
+    let part = part(ex.model, &ex.run.data, joint)?;
+    let handles = handle(ex.model, &ex.run.data, ex.rig, joint, &part)?;
+    let q0 = ex.run.data.qpos()[part.qadr];
+    let dq = part.lo + OPEN_TO * (part.hi - part.lo) - q0;
+    if dq <= 0.0 {
+        return Ok(());
+    }
+    let span = if part.hinge { dq * norm(sub(handles[0].at, part.anchor)) } else { dq };
+    let steps = ((span / STEP).ceil() as usize).clamp(2, 80);
+    ex.sync_scratch();
+    let now = ex.run.arm_target(ex.rig);
+    let mut why = ExpertError::Ik(format!("no hand pose reaches the handle of {joint}"));
+    for h in handles {
+        let before = Target { pos: add(h.at, scale(h.normal, STANDOFF)), rot: h.rot };
+        let (grip, travel) = ex.rig.opening_for(h.width);
+        ex.rig.set_fingers(&mut ex.scratch, travel);
+        let Some(q_before) = ex.free_posture(&now, &before, Allow::default()) else { continue };
+        // In to the handle, then the pull, each point solved from the one before.
+        let into = match ex.line(&q_before, before.pos, &Target { pos: h.at, rot: h.rot }, 3) {
+            Ok(p) => p,
+            Err(e) => {
+                why = e;
+                continue;
+            }
+        };
+        let mut q = into.last().cloned().unwrap_or_else(|| q_before.clone());
+        let mut pull = vec![q.clone()];
+        // The pull, as far as the arm reaches; kept when that opens it far enough.
+        let mut made = 0.0;
+        for k in 1..=steps {
+            let d = dq * k as f64 / steps as f64;
+            let (p, turn) = moved(&part, h.at, d);
+            let t = Target { pos: p, rot: mat_mul(&turn, &h.rot) };
+            ex.stats.ik_solves += 1;
+            match solve_ik(ex.rig, &mut ex.scratch, &q, &t, 2, &mut ex.rng) {
+                Some(n) if crate::motion::dist(&n, &q) < 0.8 => {
+                    q = n;
+                    pull.push(q.clone());
+                    made = d;
+                }
+                _ => break,
+            }
+        }
+        if q0 + made < part.lo + OPEN_ENOUGH * (part.hi - part.lo) {
+            why = ExpertError::Ik(format!("the pull that opens {joint} leaves the arm's reach"));
+            continue;
+        }
+        let approach = match ex.plan_to(Allow::default(), &q_before) {
+            Ok(p) => p,
+            Err(e) => {
+                why = e;
+                continue;
+            }
+        };
+        ex.run.ctrl[ex.rig.grip_act] = grip;
+        ex.run.follow(ex.rig, &approach, 0.8)?;
+        ex.run.follow(ex.rig, &into, 0.3)?;
+        // Pinch: the control at the bottom of the actuator's range (past the pads touching),
+        // harder than a grasp's close.
+        let pinch = ex.model.actuator_ctrlrange()[ex.rig.grip_act][0].min(ex.rig.grip_closed);
+        ex.run.grip(ex.rig, pinch, 0.5)?;
+        ex.run.follow(ex.rig, &pull, PULL_SPEED)?;
+        ex.run.grip(ex.rig, grip, 0.4)?;
+        // Back off along the face's normal where the pull ended.
+        ex.sync_scratch();
+        let (end, turn) = moved(&part, h.at, made);
+        let back = Target { pos: add(end, scale(mat_vec(&turn, h.normal), STANDOFF)), rot: mat_mul(&turn, &h.rot) };
+        let from = ex.run.arm_target(ex.rig);
+        if let Some(qb) = solve_ik(ex.rig, &mut ex.scratch, &from, &back, 2, &mut ex.rng) {
+            ex.run.follow(ex.rig, &[from, qb], 0.5)?;
+        }
+        return ex.run.hold(ex.rig, 0.3);
+    }
+    Err(why)
 }

@@ -102,7 +102,13 @@ impl<'a, 'm> Expert<'a, 'm> {
 
     /// A straight line of the tool from where it is to `to` (same rotation), as joint
     /// waypoints each solved from the one before.
-    fn line(&mut self, from_q: &[f64], from: V3, to: &Target, pieces: usize) -> Result<Vec<Vec<f64>>, ExpertError> {
+    pub(crate) fn line(
+        &mut self,
+        from_q: &[f64],
+        from: V3,
+        to: &Target,
+        pieces: usize,
+    ) -> Result<Vec<Vec<f64>>, ExpertError> {
         let mut path = vec![from_q.to_vec()];
         let mut q = from_q.to_vec();
         for k in 1..=pieces {
@@ -175,7 +181,7 @@ impl<'a, 'm> Expert<'a, 'm> {
         }
         match g {
             Predicate::Closed { joint, .. } => return crate::articulate::close(self, joint),
-            Predicate::Open { joint, .. } => return crate::articulate::open(self.model, joint),
+            Predicate::Open { joint, .. } => return crate::articulate::open(self, joint),
             _ => {}
         }
         let Some(object) = g.subject() else {

@@ -132,22 +132,14 @@ pub struct Episode {
 
 /// Whether the expert can do every goal of `task`: it picks and places things (on, inside,
 /// stacked on, near, in a region, lifted to a pose) with an arm, or drives a wheeled base
-/// to a place, or pushes a drawer or door closed; it does not yet open things (nothing to
-/// pull on: the catalog's handles have no collision geometry), nor drive and handle things
-/// in one task.
+/// to a place, or pushes a drawer or door closed, or pulls one open by its handle; it does
+/// not yet drive and handle things in one task.
 pub fn supports(task: &Task) -> Result<(), ExpertError> {
     let drives = task.goals.iter().filter(|g| matches!(g, sw_task::Predicate::NavigateTo { .. })).count();
     if drives > 0 && drives < task.goals.len() {
         return Err(ExpertError::Unsupported(
             "the expert drives a base to a place or handles things with an arm, not both in one task yet".into(),
         ));
-    }
-    for g in &task.goals {
-        if let sw_task::Predicate::Open { object, .. } = g {
-            return Err(ExpertError::Unsupported(format!(
-                "the expert does not open things yet ({object}): the catalog's handles are drawn only, with no collision geometry to pull on"
-            )));
-        }
     }
     Ok(())
 }

@@ -278,7 +278,9 @@ impl Rig {
     pub fn opening_for(&self, width: f64) -> (f64, f64) {
         let w = (width + 2.0 * crate::grasp::OPENING_SLACK).min(self.max_opening);
         let f = w / self.max_opening;
-        (self.grip_closed + f * (self.grip_open - self.grip_closed), 0.5 * w)
+        // The control is the finger travel, 0 with the pads touching (`Gripper::open`);
+        // `grip_closed` lies past that, to squeeze.
+        (f * self.grip_open, 0.5 * w)
     }
 
     /// Sets the fingers' joints to `travel` each (for collision checks of a grasp).

@@ -117,7 +117,9 @@ pub struct Gripper {
     pub tcp_site: &'static str,
     /// The position actuator that moves the fingers (its control is the finger travel).
     pub actuator: &'static str,
-    /// Controls that open and close the fingers.
+    /// Controls that open and close the fingers. The control is the finger travel, 0 with
+    /// the pads touching; the actuator's control range reaches past that (negative), for a
+    /// pinch harder than the servo's gain times the gap (a handle pulled open).
     pub open: f64,
     pub closed: f64,
     /// Widest opening between the pads, m.

@@ -22,6 +22,10 @@ use sw_geom::{AssetBuilder, Collision, JointKind, JointSpec, Pose, Shape, cylind
 use super::kit::{center_half, ordered};
 use super::shapes::ROUND;
 
+/// How far a drawer's or a door's handle bar stands off its face, m: a collider a
+/// gripper's pads pinch (within the asset's stated depth, as the envelope allows).
+pub(crate) const HANDLE_PROUD: f64 = 0.008;
+
 /// Clearance around moving parts at joint value zero, m.
 pub(crate) const MOVING_GAP: f64 = 0.003;
 
@@ -238,15 +242,16 @@ pub(crate) fn hinged_door(
     let link = b.link(name, 0, pose, joint, mass);
     let (xa, xb) = ordered(0.0, s * width);
     solid_box(b, link, [xa, -thickness / 2.0, 0.0], [xb, thickness / 2.0, z1 - z0], panel);
-    // The handle: a vertical bar 3 mm proud, 4 cm in from the free edge.
+    // The handle: a vertical bar [`HANDLE_PROUD`] proud, 4 cm in from the free edge, a
+    // collider that a gripper can pinch across its width and pull.
     let hx = s * (width - 0.04);
     let hl = (0.16f64).min((z1 - z0) * 0.3);
     let hz = (handle_z - z0).min((z1 - z0) - hl / 2.0 - 0.01).max(hl / 2.0 + 0.01);
-    decal_on(
+    solid_box(
         b,
         link,
         [hx - 0.008, thickness / 2.0, hz - hl / 2.0],
-        [hx + 0.008, thickness / 2.0 + 0.003, hz + hl / 2.0],
+        [hx + 0.008, thickness / 2.0 + HANDLE_PROUD, hz + hl / 2.0],
         handle,
     );
     link
@@ -294,11 +299,12 @@ pub(crate) fn drawer(
         solid_box(b, link, [xa, ty0 + t / 2.0, tz0 + t / 2.0], [xb, ty1, tz1], tray);
     }
     solid_box(b, link, [tx0 + t / 2.0, ty0 + t / 4.0, tz0 + t / 3.0], [tx1 - t / 2.0, ty0 + t, tz1 - t / 3.0], tray);
-    // A bar handle across the upper part of the front, 3 mm proud.
+    // A bar handle across the upper part of the front, [`HANDLE_PROUD`] proud: a collider
+    // that a gripper can pinch across its height and pull.
     let (fx0, fx1) = (front_x[0], front_x[1]);
     let hw = ((fx1 - fx0) * 0.35).min(0.2);
     let hz = front_z[1] - ((front_z[1] - front_z[0]) * 0.3).min(0.05);
     let xc = (fx0 + fx1) / 2.0;
-    decal_on(b, link, [xc - hw, front_t, hz - 0.006], [xc + hw, front_t + 0.003, hz + 0.006], handle);
+    solid_box(b, link, [xc - hw, front_t, hz - 0.006], [xc + hw, front_t + HANDLE_PROUD, hz + 0.006], handle);
     link
 }
