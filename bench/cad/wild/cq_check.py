@@ -17,6 +17,7 @@ from math import cos, pi, radians, sin, sqrt, tan
 from typing import Any
 
 import cadquery as cq
+
 from refs import CLEAR, INCH, SWG16, TAP, dev, heldout, heldout2
 
 Shape = Any  # a CadQuery solid; cadquery ships no type information

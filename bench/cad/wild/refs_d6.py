@@ -18,8 +18,9 @@ import sys
 from collections.abc import Callable
 from math import cos, pi
 
-from refs import INCH, TAP, cyl, hexagon, tube
 from refs_h3 import Ref, Shape, run
+
+from refs import INCH, TAP, cyl, hexagon, tube
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SUITE = os.path.join(HERE, "dev6.tsv")

@@ -20,6 +20,8 @@ import sys
 from collections.abc import Callable
 from math import cos, pi, radians, tan
 
+from refs_h3 import Ref, Shape, run
+
 from refs import (
     INCH,
     TAP,
@@ -37,7 +39,6 @@ from refs import (
     square_frustum,
     tube,
 )
-from refs_h3 import Ref, Shape, run
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SUITE = os.path.join(HERE, "dev7.tsv")

@@ -44,7 +44,7 @@ def read_refs() -> dict[str, tuple[list[float], float]]:
     """Every reference table: refs.tsv (rebuilt by refs.py) and refs_<set>.tsv beside it
     (sets frozen with builders of their own, e.g. refs_h3.tsv by refs_h3.py)."""
     refs: dict[str, tuple[list[float], float]] = {}
-    tables = ["refs.tsv"] + sorted(f for f in os.listdir(HERE) if f.startswith("refs_") and f.endswith(".tsv"))
+    tables = ["refs.tsv", *sorted(f for f in os.listdir(HERE) if f.startswith("refs_") and f.endswith(".tsv"))]
     rows = [row for t in tables for row in read_rows(os.path.join(HERE, t))]
     for row in rows:
         if row["bbox_mm"] != "refuse":
