@@ -626,8 +626,12 @@ impl Lexicon {
         let Some(first) = words.first().cloned() else {
             return;
         };
+        // The same words may name a thing and a colour ("orange", "lime", a carton's "cream"):
+        // both are kept, the thing first, so a head lookup finds the thing and a modifier
+        // lookup the colour ("an orange mug"). Any other repeat keeps the first meaning.
+        let colour = matches!(meaning, Meaning::Color(..));
         let list = self.by_first.entry(first).or_default();
-        if !list.iter().any(|e| e.words == words) {
+        if !list.iter().any(|e| e.words == words && matches!(e.meaning, Meaning::Color(..)) == colour) {
             list.push(Entry { words, meaning });
         }
     }

@@ -1075,8 +1075,20 @@ impl Parser<'_> {
         if let Some(g) = self.draft.groups.iter().rev().find(|g| g.category == Some(cat)) {
             return Some(g.id.clone());
         }
+        let text = self.span(k, place);
+        let id = self.new_bare_group(cat, place, text);
+        if let Some(g) = self.draft.groups.last_mut() {
+            g.accommodated = true;
+        }
+        Some(id)
+    }
+
+    /// A group of one `cat` for a noun the reader met inside another phrase (a place's
+    /// modifier, a support named by its load): no count, size or colour of its own; `end` is
+    /// where its words stop and `text` what they said.
+    fn new_bare_group(&mut self, cat: &'static str, end: usize, text: String) -> String {
         let p = Phrase {
-            end: place,
+            end,
             count: None,
             quantity: None,
             color: None,
@@ -1086,14 +1098,10 @@ impl Parser<'_> {
             room_modifier: None,
             head: Head::Known(Meaning::Category(cat)),
             plural: false,
-            text: self.span(k, place),
+            text,
             fuzzy_from: None,
         };
-        let id = self.new_group(Some(cat), cat.replace('_', " "), &p, p.explicit);
-        if let Some(g) = self.draft.groups.last_mut() {
-            g.accommodated = true;
-        }
-        Some(id)
+        self.new_group(Some(cat), cat.replace('_', " "), &p, p.explicit)
     }
 
     /// "a stand", "a low unit", "a base" after `g`'s "on": a word that names only a
@@ -1152,21 +1160,7 @@ impl Parser<'_> {
             self.mark(j, k + 1);
             return Some((id, k + 1));
         }
-        let p = Phrase {
-            end: k + 1,
-            count: None,
-            quantity: None,
-            color: None,
-            sizes: Vec::new(),
-            explicit: sw_plan::ExplicitSize::default(),
-            descriptors: Vec::new(),
-            room_modifier: None,
-            head: Head::Known(Meaning::Category(cat)),
-            plural: false,
-            text: text.clone(),
-            fuzzy_from: None,
-        };
-        let id = self.new_group(Some(cat), cat.replace('_', " "), &p, p.explicit);
+        let id = self.new_bare_group(cat, k + 1, text.clone());
         self.draft.approximated.push(sw_plan::Approximation {
             text,
             became: cat.to_string(),
@@ -1185,7 +1179,29 @@ impl Parser<'_> {
     /// (a shelf, a drawer, a compartment) or its top (a lid, a seat).
     fn owner_of_part(&self, p: &Phrase) -> Option<(String, PlaceKind)> {
         let head = singular(&p.text.split_whitespace().last()?.to_lowercase());
-        let owner = self.parts.iter().rev().find(|(h, _)| *h == head).map(|(_, owner)| owner.clone())?;
+        // Named with the part ("a cabinet with three drawers"), or a thing whose own name holds
+        // the part's noun as a modifier or complement ("a chest of drawers", "a drawer unit",
+        // a catalog name read whole such as "cabinet with drawers").
+        let named_with = || self.parts.iter().rev().find(|(h, _)| *h == head).map(|(_, owner)| owner.clone());
+        // The phrase's own noun is the last word before a complement ("cabinet" of "cabinet
+        // with drawers", "chest" of "chest of drawers"); a thing whose noun is the part's
+        // ("the mill" after "a mill", "the sink" after "a sink") is what the words refer to, so
+        // then no thing is the part's owner by its name.
+        let words_and_noun = |g: &super::GroupDraft| {
+            let words: Vec<String> = g.phrase.split_whitespace().map(|w| singular(&w.to_lowercase())).collect();
+            let noun_end =
+                words.iter().position(|w| matches!(w.as_str(), "with" | "of" | "for")).unwrap_or(words.len());
+            let noun = words[..noun_end].last().cloned().unwrap_or_default();
+            (words, noun)
+        };
+        let named_by = || {
+            let named: Vec<_> = self.draft.groups.iter().map(|g| (g, words_and_noun(g))).collect();
+            if named.iter().any(|(_, (_, noun))| *noun == head) {
+                return None;
+            }
+            named.iter().rev().find(|(_, (words, _))| words.contains(&head)).map(|(g, _)| g.id.clone())
+        };
+        let owner = named_with().or_else(named_by)?;
         let top = matches!(head.as_str(), "lid" | "seat" | "top" | "tabletop" | "worktop");
         Some((owner, if top { PlaceKind::Top } else { PlaceKind::Part }))
     }
