@@ -86,6 +86,12 @@ fn places() -> &'static HashMap<&'static str, PlaceKind> {
     })
 }
 
+/// A noun that names a part of a thing: always (a drawer) or where the words around it say
+/// so (a lid, a shelf).
+pub(crate) fn is_part_noun(word: &str) -> bool {
+    places().get(word) == Some(&PlaceKind::Part) || context_parts().contains(&word)
+}
+
 fn function_nouns() -> &'static [&'static str] {
     static F: OnceLock<Vec<&'static str>> = OnceLock::new();
     F.get_or_init(|| rows(FUNCTION_NOUNS).map(|r| r[0]).collect())

@@ -2211,3 +2211,24 @@ fn a_list_of_colours_before_a_plural_is_one_of_each() {
     let p = ok("a table with three red cubes");
     assert_eq!(group(&p, "cube").count, 3);
 }
+
+/// A part noun in a thing's own name makes the thing the part's owner ("the top drawer" of a
+/// chest of drawers); a compound's modifier that is no part ("the sink" of a sink unit) is
+/// the thing itself, and the thing of a part's own noun is what "the …" names.
+#[test]
+fn a_part_noun_in_a_things_name_is_a_place_of_it_and_other_modifiers_are_not() {
+    let p = ok("a chest of drawers by the bed, a book in the top drawer");
+    let chest = p.objects.iter().find(|o| o.category != "book" && o.category != "bed").unwrap().id.clone();
+    assert_rel(&p, &group(&p, "book").id, RelationKind::Inside { target: chest });
+    for prompt in [
+        "a sink unit and a sponge on the sink",
+        "a tool cabinet with a vice on the tool cabinet and a lamp on the cabinet",
+    ] {
+        let p = ok(prompt);
+        assert!(
+            !p.relations.iter().any(|r| matches!(r.kind, RelationKind::Inside { .. })),
+            "{prompt:?}: the thing a compound's modifier names is the thing, not a part to put things inside\n{}",
+            dump(&p)
+        );
+    }
+}

@@ -1180,7 +1180,7 @@ impl Parser<'_> {
     fn owner_of_part(&self, p: &Phrase) -> Option<(String, PlaceKind)> {
         let head = singular(&p.text.split_whitespace().last()?.to_lowercase());
         // Named with the part ("a cabinet with three drawers"), or a thing whose own name holds
-        // the part's noun as a modifier or complement ("a chest of drawers", "a drawer unit",
+        // a part noun (the planner's part tables) as a modifier or complement ("a chest of drawers", "a drawer unit",
         // a catalog name read whole such as "cabinet with drawers").
         let named_with = || self.parts.iter().rev().find(|(h, _)| *h == head).map(|(_, owner)| owner.clone());
         // The phrase's own noun is the last word before a complement ("cabinet" of "cabinet
@@ -1195,6 +1195,9 @@ impl Parser<'_> {
             (words, noun)
         };
         let named_by = || {
+            if !crate::phrase::is_part_noun(&head) {
+                return None;
+            }
             let named: Vec<_> = self.draft.groups.iter().map(|g| (g, words_and_noun(g))).collect();
             if named.iter().any(|(_, (_, noun))| *noun == head) {
                 return None;
