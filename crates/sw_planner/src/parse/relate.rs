@@ -218,7 +218,10 @@ impl Parser<'_> {
                 // Only where the relation follows the phrases directly ("…, clear them up into
                 // the box" says nothing of the candles listed before).
                 let follows = self.last_phrase.as_ref().is_some_and(|(e, g)| *e == i && s == Subject::Group(g.clone()));
-                if follows && cue != Cue::On && !matches!(cue, Cue::Between) {
+                // Not to a place of the room ("… and an air compressor in the corner"): a
+                // corner or a wall spot holds the thing named last, as the pieces of "on".
+                let room_place = targets.is_empty() || targets.iter().any(|t| t.starts_with('@'));
+                if follows && cue != Cue::On && !matches!(cue, Cue::Between) && !room_place {
                     for c in self.conjuncts_of(&s) {
                         if !targets.contains(&c) && !coordinated.contains(&c) {
                             self.apply(&Subject::Group(c.clone()), cue.clone(), targets.clone());
